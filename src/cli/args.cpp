@@ -1,0 +1,37 @@
+#include "cli/args.h"
+
+#include <charconv>
+
+#include "base/error.h"
+
+namespace sg {
+namespace {
+
+bool parse_int(const std::string& s, int& out) {
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return !s.empty() && ec == std::errc() && p == s.data() + s.size();
+}
+
+}  // namespace
+
+FrameRange parse_frame_range(const std::string& text, const std::string& flag) {
+  FrameRange r;
+  size_t dash = text.find('-', 1);
+  bool ok = dash == std::string::npos
+                ? parse_int(text, r.first) && (r.last = r.first, true)
+                : parse_int(text.substr(0, dash), r.first) && parse_int(text.substr(dash + 1), r.last);
+  if (!ok || r.first < 0 || r.last < r.first) {
+    throw Error(flag + ": expected a frame range A-B with 0 <= A <= B (got '" + text + "')");
+  }
+  return r;
+}
+
+void check_frame(int frame, const Scene& scene, const std::string& flag) {
+  if (frame < 0 || frame >= scene.animation.frames) {
+    throw Error(flag + ": frame " + std::to_string(frame) + " is outside the animation [0, " +
+                std::to_string(scene.animation.frames - 1) + "] (animation.frames is " +
+                std::to_string(scene.animation.frames) + ")");
+  }
+}
+
+}  // namespace sg

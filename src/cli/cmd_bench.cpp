@@ -1,0 +1,103 @@
+// `sunglint bench [SCENES...] --methods LIST`: time per frame of each method on each scene,
+// with the reference's throughput (samples and wave evaluations per second) and each
+// method's cost as a ratio to `point` measured in the same run (docs/benchmarks.md).
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include "base/error.h"
+#include "cli/commands.h"
+#include "engine/render.h"
+#include "methods/method.h"
+#include "methods/stratified.h"
+
+namespace sg {
+namespace {
+
+struct BenchArgs {
+  std::vector<std::string> scenes;
+  std::string methods = "point,reference", samples = "8x8x8";
+  int width = 640, height = 360, frame = 0, threads = 0, repeat = 1;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (!item.empty()) out.push_back(item);
+  }
+  return out;
+}
+
+void run_bench(const BenchArgs& a) {
+  if (a.scenes.empty()) throw Error("bench: give at least one scene file");
+  MethodOptions opt;
+  opt.samples = parse_sample_counts(a.samples, "--samples");
+  std::vector<std::string> names = split(a.methods);
+  if (names.empty()) throw Error("--methods: give at least one method");
+  for (const auto& n : names) make_method(n, opt);  // validate names first
+  RenderSettings rs;
+  rs.threads = a.threads;
+  std::printf("| scene | method | ms/frame | x point | samples/s | wave evals/s |\n");
+  std::printf("|---|---|---:|---:|---:|---:|\n");
+  for (const auto& path : a.scenes) {
+    Scene s = load_scene(path);
+    set_image_size(s, a.width, a.height);
+    SceneModel model(s);
+    double point_ms = 0;
+    for (const auto& n : names) {
+      auto m = make_method(n, opt);
+      double best = 1e300;
+      for (int r = 0; r < std::max(1, a.repeat); ++r) {
+        auto t0 = std::chrono::steady_clock::now();
+        render_frame(model, *m, a.frame, rs);
+        best = std::min(best, std::chrono::duration<double, std::milli>(
+                                  std::chrono::steady_clock::now() - t0)
+                                  .count());
+      }
+      if (n == "point") point_ms = best;
+      std::string sps = "", wps = "";
+      if (n == "reference" || n == "supersample") {
+        StratifiedSettings st{opt.samples, n == "supersample" && opt.samples.st == 1};
+        FrameContext ctx{model, frame_time(s, a.frame), 0};
+        long evals = 0;
+        for (int j = 0; j < s.height; ++j) {
+          for (int i = 0; i < s.width; ++i) evals += stratified_pixel_wave_evaluations(ctx, i, j, st);
+        }
+        const double samples = double(s.width) * s.height * opt.samples.sx * opt.samples.sy *
+                               (st.time_at_frame ? 1 : opt.samples.st);
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.3g", samples / (best / 1000));
+        sps = buf;
+        std::snprintf(buf, sizeof buf, "%.3g", evals / (best / 1000));
+        wps = buf;
+      }
+      char ratio[32] = "";
+      if (point_ms > 0) std::snprintf(ratio, sizeof ratio, "%.2f", best / point_ms);
+      std::printf("| %s | %s | %.1f | %s | %s | %s |\n", s.name.c_str(), n.c_str(), best, ratio,
+                  sps.c_str(), wps.c_str());
+      std::fflush(stdout);
+    }
+  }
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app) {
+  auto a = std::make_shared<BenchArgs>();
+  CLI::App* c = app.add_subcommand("bench", "Time methods on scenes (Markdown table)");
+  c->add_option("scenes", a->scenes, "Scene files")->required();
+  c->add_option("--methods", a->methods, "Comma-separated methods (put point first for ratios)")
+      ->capture_default_str();
+  c->add_option("--samples", a->samples, "Samples SxSxT")->capture_default_str();
+  c->add_option("--width", a->width, "Image width")->capture_default_str()->check(CLI::Range(1, 16384));
+  c->add_option("--height", a->height, "Image height")->capture_default_str()->check(CLI::Range(1, 16384));
+  c->add_option("--frame", a->frame, "Frame")->capture_default_str();
+  c->add_option("--threads,-j", a->threads, "Threads (0: all)")->capture_default_str();
+  c->add_option("--repeat", a->repeat, "Runs per method; the fastest counts")->capture_default_str();
+  c->callback([a] { run_bench(*a); });
+}
+
+}  // namespace sg

@@ -1,0 +1,130 @@
+// `sunglint diff A B [--frames A-B] [--out diff.png] [--json]`: the metrics of A against
+// B (the reference), on linear values; for sequences also the temporal error and the
+// flicker energy of each.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "base/error.h"
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "image/display.h"
+#include "image/image_io.h"
+#include "image/sequence.h"
+#include "metrics/metrics.h"
+
+namespace sg {
+namespace {
+
+struct DiffArgs {
+  std::string a, b, frames, out;
+  double peak = 1.0, range = 0.0;
+  bool json = false;
+};
+
+nlohmann::json to_json(const ImageMetrics& m) {
+  return {{"rmse", m.rmse},
+          {"psnr", std::isfinite(m.psnr) ? nlohmann::json(m.psnr) : nlohmann::json("inf")},
+          {"mean_a", m.mean_a},
+          {"mean_b", m.mean_b},
+          {"max_abs", m.max_abs},
+          {"pixels", m.pixels}};
+}
+
+void print_metrics(const ImageMetrics& m) {
+  std::printf("rmse     %.6g\n", m.rmse);
+  std::printf("psnr     %.2f dB\n", m.psnr);
+  std::printf("mean     %.6g (A)  %.6g (B)\n", m.mean_a, m.mean_b);
+  std::printf("max_abs  %.6g\n", m.max_abs);
+  std::printf("pixels   %ld\n", m.pixels);
+}
+
+void write_diff_picture(const std::string& path, const Image& a, const Image& b, double range,
+                        double max_abs) {
+  double r = range > 0 ? range : (max_abs > 0 ? max_abs : 1.0);
+  write_png_rgb8(path, a.width, a.height, difference_rgb8(a, b, r));
+}
+
+void run_diff(const DiffArgs& d) {
+  if (!(d.peak > 0)) throw Error("--peak: must be > 0");
+  if (d.range < 0) throw Error("--range: must be >= 0");
+  if (!d.out.empty() && image_format_of(d.out) != ImageFormat::png) {
+    throw Error("--out: the difference picture is a .png file");
+  }
+  const bool seq = !d.frames.empty();
+  if (!seq && (is_frame_pattern(d.a) || is_frame_pattern(d.b))) {
+    throw Error("--frames: required when A or B is a sequence pattern such as frame_%04d.exr");
+  }
+  if (!seq) {
+    Image a = read_image(d.a), b = read_image(d.b);
+    ImageMetrics m = compare_images(a, b, d.peak);
+    if (!d.out.empty()) write_diff_picture(d.out, a, b, d.range, m.max_abs);
+    if (d.json) {
+      std::printf("%s\n", to_json(m).dump(2).c_str());
+    } else {
+      print_metrics(m);
+    }
+    return;
+  }
+  FrameRange r = parse_frame_range(d.frames, "--frames");
+  format_frame_path(d.a, r.first, "A");
+  format_frame_path(d.b, r.first, "B");
+  std::vector<Image> a = read_sequence(d.a, r.first, r.last);
+  std::vector<Image> b = read_sequence(d.b, r.first, r.last);
+  SequenceMetrics s = compare_sequences(a, b, d.peak);
+  if (!d.out.empty()) {
+    // One picture per frame when --out is a pattern, else the last frame.
+    for (int f = r.first; f <= r.last; ++f) {
+      if (!is_frame_pattern(d.out) && f != r.last) continue;
+      const auto& m = s.frames[f - r.first];
+      std::string path = is_frame_pattern(d.out) ? format_frame_path(d.out, f, "--out") : d.out;
+      write_diff_picture(path, a[f - r.first], b[f - r.first], d.range, m.max_abs);
+    }
+  }
+  if (d.json) {
+    nlohmann::json j = {{"frames", nlohmann::json::array()},
+                        {"rmse", s.rmse},
+                        {"psnr", psnr_from_rmse(s.rmse, d.peak)},
+                        {"temporal_error", s.temporal_error},
+                        {"flicker_a", s.flicker_a},
+                        {"flicker_b", s.flicker_b}};
+    for (size_t k = 0; k < s.frames.size(); ++k) {
+      auto fj = to_json(s.frames[k]);
+      fj["frame"] = r.first + static_cast<int>(k);
+      j["frames"].push_back(fj);
+    }
+    std::printf("%s\n", j.dump(2).c_str());
+    return;
+  }
+  std::printf("frame  rmse        psnr(dB)  max_abs\n");
+  for (size_t k = 0; k < s.frames.size(); ++k) {
+    std::printf("%5d  %.6f  %8.2f  %.6f\n", r.first + static_cast<int>(k), s.frames[k].rmse,
+                s.frames[k].psnr, s.frames[k].max_abs);
+  }
+  std::printf("rmse            %.6g (all frames)\n", s.rmse);
+  std::printf("temporal_error  %.6g\n", s.temporal_error);
+  std::printf("flicker         %.6g (A)  %.6g (B)\n", s.flicker_a, s.flicker_b);
+}
+
+}  // namespace
+
+void add_diff_command(CLI::App& app) {
+  auto d = std::make_shared<DiffArgs>();
+  CLI::App* c = app.add_subcommand(
+      "diff", "Compare image A with reference B (RMSE, PSNR, means, max |A-B|; for sequences "
+              "also temporal error and flicker)");
+  c->add_option("A", d->a, "Image (.exr, .pfm) or sequence pattern (frame_%04d.exr)")->required();
+  c->add_option("B", d->b, "Reference image or sequence pattern")->required();
+  c->add_option("--frames", d->frames, "Frame range A-B when A and B are sequence patterns");
+  c->add_option("--out,-o", d->out, "Write a false-colour difference picture A-B (.png; blue: "
+                                    "A darker, red: A brighter)");
+  c->add_option("--range", d->range, "Difference mapped to the ends of the colour map (default: "
+                                     "max |A-B|)");
+  c->add_option("--peak", d->peak, "Peak value for PSNR")->capture_default_str();
+  c->add_flag("--json", d->json, "Print JSON");
+  c->callback([d] { run_diff(*d); });
+}
+
+}  // namespace sg

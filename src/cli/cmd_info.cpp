@@ -1,0 +1,118 @@
+// `sunglint info SCENE [--json] [--waves]`: what a scene holds.
+//
+// The slope statistics are those of the sum of sines averaged over space and time
+// (Podee et al. 2021, Eq. 3, summed over waves): covariance
+//     Sigma = sum_i (A_i^2 / 2) [a_i^2  a_i b_i; a_i b_i  b_i^2],
+// slope variance = trace(Sigma).
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+
+#include "cli/commands.h"
+#include "scene/light.h"
+#include "scene/scene.h"
+#include "scene/waves.h"
+
+namespace sg {
+namespace {
+
+struct InfoArgs {
+  std::string scene;
+  bool json = false, waves = false;
+};
+
+void run_info(const InfoArgs& a) {
+  Scene s = load_scene(a.scene);
+  WaveField w(s.surface.waves);
+  LightModel light(s.light);
+  double lmin = std::numeric_limits<double>::infinity(), lmax = 0;
+  double sxx = 0, sxz = 0, szz = 0;
+  for (const Wave& wv : s.surface.waves) {
+    double k = length(wv.wave_vector);
+    if (k > 0) {
+      lmin = std::min(lmin, kTwoPi / k);
+      lmax = std::max(lmax, kTwoPi / k);
+    }
+    double e = wv.amplitude * wv.amplitude / 2;
+    sxx += e * wv.wave_vector.x * wv.wave_vector.x;
+    sxz += e * wv.wave_vector.x * wv.wave_vector.y;
+    szz += e * wv.wave_vector.y * wv.wave_vector.y;
+  }
+  const double elevation = degrees(std::asin(clamp(light.L.y, -1.0, 1.0)));
+  const double azimuth = degrees(std::atan2(light.L.x, -light.L.z));
+  nlohmann::json j = {
+      {"name", s.name},
+      {"image", {s.width, s.height}},
+      {"geometry", s.surface.geometry == Geometry::flat ? "flat" : "displaced"},
+      {"fresnel", s.surface.fresnel == FresnelMode::none ? "none" : "schlick"},
+      {"waves", s.surface.waves.size()},
+      {"wavelength_min_m", std::isfinite(lmin) ? lmin : 0.0},
+      {"wavelength_max_m", lmax},
+      {"amplitude_sum_m", w.amplitude_bound()},
+      {"slope_bound", w.slope_bound()},
+      {"slope_covariance", {sxx, sxz, szz}},
+      {"slope_variance", sxx + szz},
+      {"light",
+       {{"direction", {light.L.x, light.L.y, light.L.z}},
+        {"elevation_deg", elevation},
+        {"azimuth_deg", azimuth},
+        {"angular_radius_deg", s.light.angular_radius_deg},
+        {"radiance", s.light.radiance},
+        {"visible", s.light.visible}}},
+      {"sky_radiance", s.sky_radiance},
+      {"sea_radiance", s.surface.sea_radiance},
+      {"animation",
+       {{"t0", s.animation.t0},
+        {"fps", s.animation.fps},
+        {"frames", s.animation.frames},
+        {"shutter", s.animation.shutter}}},
+  };
+  if (a.json) {
+    std::printf("%s\n", j.dump(2).c_str());
+    return;
+  }
+  std::printf("scene        %s (%s)\n", s.name.c_str(), a.scene.c_str());
+  std::printf("image        %d x %d\n", s.width, s.height);
+  std::printf("surface      %s geometry, fresnel %s, sea radiance %g\n",
+              j["geometry"].get<std::string>().c_str(), j["fresnel"].get<std::string>().c_str(),
+              s.surface.sea_radiance);
+  std::printf("waves        %zu, wavelengths %.4g to %.4g m, amplitude sum %.4g m\n",
+              s.surface.waves.size(), std::isfinite(lmin) ? lmin : 0.0, lmax, w.amplitude_bound());
+  std::printf("slopes       variance %.5g (xx %.5g, xz %.5g, zz %.5g), rms %.4g, bound %.4g\n",
+              sxx + szz, sxx, sxz, szz, std::sqrt(sxx + szz), w.slope_bound());
+  std::printf("light        elevation %.3f deg, azimuth %.3f deg, radius %.4g deg, radiance %g%s\n",
+              elevation, azimuth, s.light.angular_radius_deg, s.light.radiance,
+              s.light.visible ? ", visible" : "");
+  std::printf("sky          radiance %g\n", s.sky_radiance);
+  std::printf("animation    %d frames at %g fps from t0 = %g s, shutter %g\n", s.animation.frames,
+              s.animation.fps, s.animation.t0, s.animation.shutter);
+  if (a.waves) {
+    std::printf("\n   #  amplitude  wavelength  direction(deg)  period(s)  phase\n");
+    for (size_t k = 0; k < s.surface.waves.size(); ++k) {
+      const Wave& wv = s.surface.waves[k];
+      double kk = length(wv.wave_vector);
+      std::printf("%4zu  %9.5f  %10.4f  %14.2f  %9.4f  %6.3f\n", k, wv.amplitude,
+                  kk > 0 ? kTwoPi / kk : 0.0,
+                  degrees(std::atan2(wv.wave_vector.x, -wv.wave_vector.y)),
+                  wv.angular_frequency != 0 ? kTwoPi / std::fabs(wv.angular_frequency) : 0.0,
+                  wv.phase);
+    }
+  }
+}
+
+}  // namespace
+
+void add_info_command(CLI::App& app) {
+  auto a = std::make_shared<InfoArgs>();
+  CLI::App* c = app.add_subcommand("info", "Describe a scene: waves, wavelengths, slopes, light");
+  c->add_option("scene", a->scene, "Scene file")->required();
+  c->add_flag("--json", a->json, "Print JSON");
+  c->add_flag("--waves", a->waves, "List every wave");
+  c->callback([a] { run_info(*a); });
+}
+
+}  // namespace sg

@@ -1,0 +1,13 @@
+// The subcommands of `sunglint`; each file cmd_*.cpp adds one to the app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace sg {
+
+void add_render_command(CLI::App& app);
+void add_diff_command(CLI::App& app);
+void add_info_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
+
+}  // namespace sg

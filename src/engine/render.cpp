@@ -1,0 +1,55 @@
+#include "engine/render.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+
+namespace sg {
+
+Image render_frame(const SceneModel& model, Method& method, int frame,
+                   const RenderSettings& settings) {
+  std::unique_ptr<tbb::global_control> limit;
+  if (settings.threads > 0) {
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                  settings.threads);
+  }
+  const int w = model.width(), h = model.height(), t = std::max(1, settings.tile);
+  Image img(w, h);
+  FrameContext ctx{model, frame_time(model.scene, frame), settings.seed};
+  method.begin_frame(ctx);
+
+  const int tiles_x = (w + t - 1) / t, tiles_y = (h + t - 1) / t;
+  const long total = static_cast<long>(tiles_x) * tiles_y;
+  std::atomic<long> done{0};
+  std::mutex progress_mutex;
+  tbb::parallel_for(
+      tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
+      [&](const tbb::blocked_range2d<int>& r) {
+        for (int ty = r.rows().begin(); ty < r.rows().end(); ++ty) {
+          for (int tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
+            method.shade_tile(ctx, tx * t, ty * t, std::min(w, tx * t + t), std::min(h, ty * t + t),
+                              img);
+            long d = ++done;
+            if (settings.progress) {
+              std::lock_guard<std::mutex> lock(progress_mutex);
+              settings.progress(d, total);
+            }
+          }
+        }
+      },
+      tbb::simple_partitioner());
+  method.end_frame(ctx, img);
+  return img;
+}
+
+void render_frames(const SceneModel& model, Method& method, int first, int last,
+                   const RenderSettings& settings,
+                   const std::function<void(int frame, const Image&)>& on_frame) {
+  for (int f = first; f <= last; ++f) on_frame(f, render_frame(model, method, f, settings));
+}
+
+}  // namespace sg

@@ -1,0 +1,39 @@
+// The list of methods and the factory behind `--method`.
+#include "base/error.h"
+#include "methods/method.h"
+#include "methods/point.h"
+#include "methods/supersample.h"
+
+namespace sg {
+
+void Method::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
+                        Image& out) const {
+  for (int j = y0; j < y1; ++j) {
+    for (int i = x0; i < x1; ++i) out.at(i, j) = static_cast<float>(shade(ctx, i, j));
+  }
+}
+
+const std::vector<MethodInfo>& method_catalog() {
+  static const std::vector<MethodInfo> catalog = {
+      {"reference", "ground truth: stratified samples over pixel and shutter (--samples, 8x8x8)"},
+      {"supersample", "stratified supersampling at a chosen budget (--samples; T=1 samples t_f)"},
+      {"point", "one sample at the pixel centre at t_f (no anti-aliasing)"},
+  };
+  return catalog;
+}
+
+std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
+  if (name == "reference") {
+    return std::make_unique<StratifiedMethod>(name, StratifiedSettings{o.samples, false});
+  }
+  if (name == "supersample") {
+    return std::make_unique<StratifiedMethod>(name,
+                                              StratifiedSettings{o.samples, o.samples.st == 1});
+  }
+  if (name == "point") return std::make_unique<PointMethod>();
+  std::string list;
+  for (const auto& m : method_catalog()) list += (list.empty() ? "" : ", ") + m.name;
+  throw Error("--method: unknown method '" + name + "' (choose one of: " + list + ")");
+}
+
+}  // namespace sg

@@ -1,0 +1,57 @@
+// A rendering method computes each pixel's value: the box-filtered mean over the pixel
+// square and the frame's shutter interval of the radiance of the scene spec, or an
+// approximation of it. Every method of `sunglint render --method` implements this.
+//
+// The engine calls begin_frame once (single-threaded: per-frame tables, maps), then
+// shade_tile from many threads (each tile once), then end_frame once with the whole
+// image (stateful methods such as TAA resolve there). Frames of a sequence arrive in
+// order; a method that needs its previous frame says so with `stateful()`.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+#include "methods/options.h"
+#include "scene/model.h"
+
+namespace sg {
+
+struct FrameContext {
+  const SceneModel& model;
+  FrameTime time;
+  uint64_t seed = 0;
+};
+
+class Method {
+ public:
+  virtual ~Method() = default;
+  virtual std::string name() const = 0;
+
+  virtual void begin_frame(const FrameContext&) {}
+  // Value of pixel (i, j). Must be thread-safe and depend on nothing but its arguments
+  // and the state set by begin_frame.
+  virtual double shade(const FrameContext& ctx, int i, int j) const = 0;
+  // Pixels [x0, x1) x [y0, y1) into `out`. The default calls shade() for each.
+  virtual void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
+                          Image& out) const;
+  virtual void end_frame(const FrameContext&, Image&) {}
+  // True when frame f depends on frames before it (history); sequences then render in
+  // order and a single frame is rendered after its predecessors (see engine/render.h).
+  virtual bool stateful() const { return false; }
+};
+
+struct MethodInfo {
+  std::string name;
+  std::string summary;
+};
+
+// Every method `--method` accepts, in the order `--help` lists them.
+const std::vector<MethodInfo>& method_catalog();
+
+// Builds a method by name; throws sg::Error ("--method: unknown method 'x' (choose ...)").
+std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& options);
+
+}  // namespace sg

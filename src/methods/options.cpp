@@ -1,0 +1,39 @@
+#include "methods/options.h"
+
+#include <charconv>
+#include <vector>
+
+#include "base/error.h"
+
+namespace sg {
+
+SampleCounts parse_sample_counts(const std::string& text, const std::string& flag) {
+  std::vector<int> v;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t x = text.find('x', start);
+    std::string part = text.substr(start, x == std::string::npos ? std::string::npos : x - start);
+    int n = 0;
+    auto [ptr, ec] = std::from_chars(part.data(), part.data() + part.size(), n);
+    if (part.empty() || ec != std::errc() || ptr != part.data() + part.size() || n < 1 ||
+        n > 4096) {
+      throw Error(flag + ": expected SxSxT with positive integers, e.g. 8x8x8 (got '" + text +
+                  "')");
+    }
+    v.push_back(n);
+    if (x == std::string::npos) break;
+    start = x + 1;
+  }
+  if (v.size() != 3) {
+    throw Error(flag + ": expected SxSxT with positive integers, e.g. 8x8x8 (got '" + text + "')");
+  }
+  SampleCounts s{v[0], v[1], v[2]};
+  if (s.total() > (1L << 22)) throw Error(flag + ": at most 4194304 samples per pixel");
+  return s;
+}
+
+std::string to_string(const SampleCounts& s) {
+  return std::to_string(s.sx) + "x" + std::to_string(s.sy) + "x" + std::to_string(s.st);
+}
+
+}  // namespace sg

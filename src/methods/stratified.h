@@ -1,0 +1,37 @@
+// The estimator of the scene spec's pixel value: the mean over the pixel square and the
+// shutter interval, by stratified jittered sampling (the ground truth of every
+// comparison, `--method reference`, and the `supersample` baseline).
+//
+// Samples form a product grid: S_x x S_y jittered positions, one per cell of the pixel
+// square, times T jittered times, one per stratum of the shutter [t_f - shutter/fps, t_f];
+// every position is paired with every time (S_x S_y T samples). Each stratum is sampled
+// uniformly, so the estimate is unbiased; its error falls as the samples grow (tested).
+// The product design lets flat water evaluate each wave's sine once per position and once
+// per time instead of once per sample, using
+//     cos(theta + c t) = cos(theta) cos(c t) - sin(theta) sin(c t).
+//
+// Random numbers come from the stream of (seed, frame, pixel) (math/rng.h), drawn in a
+// fixed order: the T time jitters, then for each cell in row-major order its x and y
+// jitter. Same inputs, same bytes, whatever the threads.
+//
+// `time_at_frame` replaces the T times by the single display time t_f (used by
+// `supersample` with T = 1: spatial-only supersampling, as MSAA would).
+#pragma once
+
+#include "methods/method.h"
+
+namespace sg {
+
+struct StratifiedSettings {
+  SampleCounts samples;
+  bool time_at_frame = false;
+};
+
+double stratified_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s);
+
+// Wave evaluations (one wave's sine/cosine pair or its update) that stratified_pixel
+// performs for one pixel, for the throughput figures of `sunglint bench`.
+long stratified_pixel_wave_evaluations(const FrameContext& ctx, int i, int j,
+                                       const StratifiedSettings& s);
+
+}  // namespace sg

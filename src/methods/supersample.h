@@ -1,0 +1,30 @@
+// The two stratified-sampling methods (estimator in stratified.h):
+//   reference    the ground truth: S x S positions x T times over the shutter (8x8x8 by
+//                default; at least 12x12x8 for published figures).
+//   supersample  the same estimator at a budget the user picks. With T = 1 its one time
+//                is the display time t_f, so `--samples 6x6x1` is spatial-only
+//                supersampling with 36 samples, the paper's "32x MSAA"-like baseline;
+//                with T > 1 it samples the shutter like the reference.
+#pragma once
+
+#include "methods/method.h"
+#include "methods/stratified.h"
+
+namespace sg {
+
+class StratifiedMethod final : public Method {
+ public:
+  StratifiedMethod(std::string name, StratifiedSettings settings)
+      : name_(std::move(name)), settings_(settings) {}
+  std::string name() const override { return name_; }
+  double shade(const FrameContext& ctx, int i, int j) const override {
+    return stratified_pixel(ctx, i, j, settings_);
+  }
+  const StratifiedSettings& settings() const { return settings_; }
+
+ private:
+  std::string name_;
+  StratifiedSettings settings_;
+};
+
+}  // namespace sg

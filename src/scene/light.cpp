@@ -1,0 +1,20 @@
+#include "scene/light.h"
+
+#include <cmath>
+
+namespace sg {
+
+LightModel::LightModel(const LightDesc& d) {
+  L = normalize(d.direction);
+  // e1: horizontal and perpendicular to L; for a light at the zenith, world x.
+  vec3 h = cross(vec3(0, 1, 0), L);
+  e1 = length(h) > 1e-9 ? normalize(h) : vec3(1, 0, 0);
+  e2 = cross(L, e1);
+  radius = radians(d.angular_radius_deg);
+  cos_radius = std::cos(radius);
+  tan_radius = std::tan(radius);
+  radiance = d.radiance;
+  visible = d.visible;
+}
+
+}  // namespace sg

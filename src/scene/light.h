@@ -1,0 +1,41 @@
+// The light: a sphere at infinity, seen as a disk of directions of angular radius rho
+// around the unit vector L (scene spec). Directions are compared with it exactly:
+// angle(r, L) <= rho  <=>  r . L >= cos(rho) for unit r.
+//
+// The light plane (Podee et al. 2021, Fig. 6 and Eq. 8) is the plane perpendicular to L at
+// unit distance along it, with an orthonormal frame (e1, e2). A direction r with r . L > 0
+// maps to Phi(r) = r / (r . L), whose coordinates are (r . e1, r . e2) / (r . L). This is
+// the gnomonic projection: great circles map to straight lines, and the light's cone maps
+// exactly to the disk of radius tan(rho) about the origin.
+#pragma once
+
+#include "math/vec.h"
+#include "scene/scene.h"
+
+namespace sg {
+
+struct LightModel {
+  vec3 L{0, 0, -1};       // unit, towards the light
+  vec3 e1{1, 0, 0};       // light-plane frame: e1 horizontal (e1.y = 0 unless L is vertical)
+  vec3 e2{0, 1, 0};       // e2 = L x e1, so that e1 x e2 = L
+  double radius = 0;      // angular radius, radians
+  double cos_radius = 1;
+  double tan_radius = 0;  // radius of the disk on the light plane
+  double radiance = 1;
+  bool visible = false;
+
+  LightModel() = default;
+  explicit LightModel(const LightDesc& d);
+
+  bool contains(const vec3& unit_dir) const { return dot(unit_dir, L) >= cos_radius; }
+
+  // Light-plane coordinates of direction r (any length, r . L > 0).
+  vec2 to_plane(const vec3& r) const {
+    double inv = 1.0 / dot(r, L);
+    return vec2(dot(r, e1) * inv, dot(r, e2) * inv);
+  }
+  // The unit direction through light-plane point p.
+  vec3 from_plane(const vec2& p) const { return normalize(L + p.x * e1 + p.y * e2); }
+};
+
+}  // namespace sg

@@ -1,0 +1,81 @@
+// A scene as the file format `sunglint-scene/1` defines it (shared spec
+// scene-format.md): the water waves, the camera, the light, sky and sea radiances, and
+// the animation's timing. Values are stored as given (directions not yet normalised);
+// the models built from a scene (waves.h, camera.h, light.h) derive what rendering needs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "math/vec.h"
+
+namespace sg {
+
+struct Wave {
+  double amplitude = 0;     // A_i, metres
+  vec2 wave_vector{0, 0};   // (a_i, b_i), rad/m
+  double angular_frequency = 0;  // c_i, rad/s
+  double phase = 0;         // phi_i, rad
+};
+
+enum class Geometry { flat, displaced };
+enum class FresnelMode { none, schlick };
+
+struct CameraDesc {
+  vec3 position{0, 3, 0};
+  vec3 look_at{0, 0, -100};
+  vec3 up{0, 1, 0};
+  double vfov_deg = 40;
+};
+
+struct LightDesc {
+  vec3 direction{0, 0.17, -1};  // towards the light, any length > 0
+  double angular_radius_deg = 0.27;
+  double radiance = 1.0;
+  bool visible = false;
+};
+
+struct SurfaceDesc {
+  Geometry geometry = Geometry::flat;
+  FresnelMode fresnel = FresnelMode::none;
+  double sea_radiance = 0.0;
+  std::vector<Wave> waves;
+};
+
+struct AnimationDesc {
+  double t0 = 0;
+  double fps = 30;
+  int frames = 60;
+  double shutter = 1.0;
+};
+
+struct Scene {
+  std::string name;
+  int width = 640;
+  int height = 360;
+  CameraDesc camera;
+  LightDesc light;
+  double sky_radiance = 0.0;
+  SurfaceDesc surface;
+  AnimationDesc animation;
+
+  // Frame f is displayed at t_f = t0 + f / fps and integrates [t_f - shutter/fps, t_f].
+  double frame_time(int frame) const { return animation.t0 + frame / animation.fps; }
+  double shutter_start(int frame) const {
+    return frame_time(frame) - animation.shutter / animation.fps;
+  }
+};
+
+// Loading and checking. Every error names the key path and the rule, for example
+// "surface.waves[3].amplitude: must be >= 0"; file errors are prefixed by the file name.
+Scene load_scene(const std::string& path);
+Scene parse_scene(const std::string& json_text, const std::string& name_for_errors);
+
+// The scene as canonical JSON (every key written, defaults included): what `info`
+// prints and what cache keys hash.
+std::string scene_to_json(const Scene& scene);
+
+// Command-line overrides, checked by the same rules as the file ("--width: must be >= 1").
+void set_image_size(Scene& scene, int width, int height);
+
+}  // namespace sg

@@ -1,0 +1,176 @@
+// Scene loading: every validation rule rejects its example file with a message that names
+// the key and the rule; good scenes load with their values and defaults.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "scene/scene.h"
+#include "testing/testing.h"
+
+namespace sg {
+namespace {
+
+struct BadCase {
+  const char* file;
+  const char* message;  // the whole message after "<path>: "
+};
+
+const BadCase kBad[] = {
+    {"missing_camera", "camera: missing (required)"},
+    {"missing_t0", "animation.t0: missing (required)"},
+    {"bad_format", "format: must be \"sunglint-scene/1\" (got \"sunglint-scene/2\")"},
+    {"unknown_top_key", "foo: unknown key"},
+    {"unknown_camera_key", "camera.fov: unknown key"},
+    {"width_string", "image.width: must be a number"},
+    {"width_fraction", "image.width: must be an integer"},
+    {"width_zero", "image.width: must be an integer in [1, 16384]"},
+    {"height_zero", "image.height: must be an integer in [1, 16384]"},
+    {"image_not_object", "image: must be an object"},
+    {"name_number", "name: must be a string"},
+    {"vfov_zero", "camera.vfov_deg: must be in (0, 180)"},
+    {"vfov_180", "camera.vfov_deg: must be in (0, 180)"},
+    {"look_at_position", "camera.look_at: must differ from camera.position"},
+    {"up_zero", "camera.up: must not be zero-length"},
+    {"up_parallel", "camera.up: must not be parallel to the viewing direction"},
+    {"camera_below_water", "camera.position: must be above the water at rest (y > 0)"},
+    {"position_two", "camera.position: must be an array of 3 numbers"},
+    {"position_string", "camera.position[1]: must be a number"},
+    {"light_zero", "light.direction: must not be zero-length"},
+    {"light_radius_zero", "light.angular_radius_deg: must be in (0, 90)"},
+    {"light_radius_90", "light.angular_radius_deg: must be in (0, 90)"},
+    {"light_radiance_negative", "light.radiance: must be >= 0"},
+    {"light_visible_string", "light.visible: must be true or false"},
+    {"sky_negative", "sky.radiance: must be >= 0"},
+    {"geometry_unknown",
+     "surface.geometry: must be one of \"flat\", \"displaced\" (got \"bumpy\")"},
+    {"fresnel_unknown", "surface.fresnel: must be one of \"none\", \"schlick\" (got \"fancy\")"},
+    {"sea_negative", "surface.sea_radiance: must be >= 0"},
+    {"waves_not_array", "surface.waves: must be an array of wave objects"},
+    {"amplitude_negative", "surface.waves[3].amplitude: must be >= 0"},
+    {"wave_vector_three", "surface.waves[0].wave_vector: must be an array of 2 numbers"},
+    {"wave_missing_frequency", "surface.waves[1].angular_frequency: missing (required)"},
+    {"wave_unknown_key", "surface.waves[2].speed: unknown key"},
+    {"wave_not_object", "surface.waves[4]: must be an object"},
+    {"fps_zero", "animation.fps: must be > 0"},
+    {"frames_zero", "animation.frames: must be >= 1"},
+    {"shutter_negative", "animation.shutter: must be >= 0"},
+    {"amplitude_infinite", "surface.waves[0].amplitude: number out of range at line 45, column 22"},
+    {"syntax_error", "animation.fps: invalid JSON at line 94, column 10"},
+    {"top_level_array", "(top level): must be an object"},
+};
+
+class BadScene : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadScene, RejectedWithKeyAndRule) {
+  const std::string path = std::string(SG_SOURCE_DIR) + "/tests/scenes/bad/" + GetParam().file +
+                           ".json";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path;
+  try {
+    load_scene(path);
+    FAIL() << "accepted " << path;
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": " + GetParam().message);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Rules, BadScene, ::testing::ValuesIn(kBad),
+                         [](const auto& info) { return std::string(info.param.file); });
+
+TEST(SceneLoad, EveryBadFixtureHasAnExpectedMessage) {
+  int files = 0;
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(SG_SOURCE_DIR) + "/tests/scenes/bad")) {
+    ++files;
+    bool listed = false;
+    for (const auto& c : kBad) listed |= e.path().stem() == c.file;
+    EXPECT_TRUE(listed) << e.path();
+  }
+  EXPECT_EQ(files, static_cast<int>(std::size(kBad)));
+}
+
+TEST(SceneLoad, ProjectScenesLoadWithTheirValues) {
+  for (const char* name : {"simple", "smooth", "medium", "high"}) {
+    Scene s = testing::project_scene(name);
+    EXPECT_EQ(s.name, name);
+    EXPECT_EQ(s.width, 640);
+    EXPECT_EQ(s.height, 360);
+    EXPECT_EQ(s.surface.geometry, Geometry::flat);
+    EXPECT_EQ(s.surface.fresnel, FresnelMode::none);
+    EXPECT_DOUBLE_EQ(s.light.angular_radius_deg, 0.27);
+    EXPECT_DOUBLE_EQ(s.animation.shutter, 1.0);
+  }
+  Scene simple = testing::project_scene("simple");
+  ASSERT_EQ(simple.surface.waves.size(), 5u);
+  EXPECT_DOUBLE_EQ(simple.surface.waves[3].amplitude, 0.101859);
+  EXPECT_DOUBLE_EQ(simple.surface.waves[3].wave_vector.y, -0.768235);
+  EXPECT_EQ(testing::project_scene("smooth").surface.waves.size(), 64u);
+  EXPECT_EQ(testing::project_scene("medium").surface.waves.size(), 48u);
+  EXPECT_EQ(testing::project_scene("high").surface.waves.size(), 32u);
+}
+
+TEST(SceneLoad, ProjectCopiesMatchSharedFixtures) {
+  if (!testing::shared_scenes_present()) GTEST_SKIP() << "../shared not present";
+  for (const char* name : {"simple", "smooth", "medium", "high"}) {
+    EXPECT_EQ(scene_to_json(testing::project_scene(name)),
+              scene_to_json(load_scene(testing::shared_scene_path(name))))
+        << name;
+  }
+}
+
+TEST(SceneLoad, DefaultsOfOptionalKeys) {
+  const std::string text = R"({
+    "format": "sunglint-scene/1",
+    "image": {"width": 4, "height": 2},
+    "camera": {"position": [0, 1, 0], "look_at": [0, 0, -5], "up": [0, 1, 0], "vfov_deg": 30},
+    "light": {"direction": [0, 1, -4], "angular_radius_deg": 0.5},
+    "surface": {"waves": [{"amplitude": 0.1, "wave_vector": [1, 0], "angular_frequency": 2}]},
+    "animation": {"t0": 0, "fps": 24, "frames": 2, "shutter": 0.5}
+  })";
+  Scene s = parse_scene(text, "dir/calm.json");
+  EXPECT_EQ(s.name, "calm");
+  EXPECT_DOUBLE_EQ(s.light.radiance, 1.0);
+  EXPECT_FALSE(s.light.visible);
+  EXPECT_DOUBLE_EQ(s.sky_radiance, 0.0);
+  EXPECT_EQ(s.surface.geometry, Geometry::flat);
+  EXPECT_EQ(s.surface.fresnel, FresnelMode::none);
+  EXPECT_DOUBLE_EQ(s.surface.sea_radiance, 0.0);
+  EXPECT_DOUBLE_EQ(s.surface.waves[0].phase, 0.0);
+  EXPECT_DOUBLE_EQ(s.frame_time(1), 1.0 / 24);
+  EXPECT_DOUBLE_EQ(s.shutter_start(1), 1.0 / 24 - 0.5 / 24);
+}
+
+TEST(SceneLoad, CanonicalJsonRoundTrips) {
+  Scene a = testing::project_scene("medium");
+  Scene b = parse_scene(scene_to_json(a), "x.json");
+  EXPECT_EQ(scene_to_json(a), scene_to_json(b));
+}
+
+TEST(SceneLoad, MissingFileNamesThePath) {
+  try {
+    load_scene("/nonexistent/dir/scene.json");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/scene.json: cannot read"),
+              std::string::npos);
+  }
+}
+
+TEST(SceneLoad, ImageSizeOverridesAreChecked) {
+  Scene s = testing::project_scene("simple");
+  set_image_size(s, 160, 90);
+  EXPECT_EQ(s.width, 160);
+  EXPECT_EQ(s.height, 90);
+  EXPECT_THROW(set_image_size(s, 0, 90), Error);
+  try {
+    set_image_size(s, 160, 20000);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "--height: must be in [1, 16384]");
+  }
+}
+
+}  // namespace
+}  // namespace sg

@@ -1,0 +1,53 @@
+// The water surface: a sum of sine waves (Podee et al. 2021, Eq. 1, with the phase of
+// the scene spec):
+//     h(x, z, t) = sum_i A_i sin(a_i x + b_i z + c_i t + phi_i)
+// and its analytic derivatives. The surface normal is normalize(-dh/dx, 1, -dh/dz)
+// (scene spec). Waves are stored as structure-of-arrays so that sums over waves
+// vectorise.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "math/vec.h"
+#include "scene/scene.h"
+
+namespace sg {
+
+// Second derivatives of h: (h_xx, h_xz, h_zz).
+struct Hessian {
+  double xx = 0, xz = 0, zz = 0;
+};
+
+class WaveField {
+ public:
+  WaveField() = default;
+  explicit WaveField(const std::vector<Wave>& waves);
+
+  size_t size() const { return A.size(); }
+
+  double height(double x, double z, double t) const;
+  // (dh/dx, dh/dz)
+  vec2 gradient(double x, double z, double t) const;
+  Hessian hessian(double x, double z, double t) const;
+  // Per-wave weights w_i scale the amplitudes (used to split waves into resolved and
+  // aliasing sets, Podee et al. 2021 Sec. 3.7). weights.size() == size().
+  vec2 gradient_weighted(double x, double z, double t, std::span<const double> weights) const;
+  Hessian hessian_weighted(double x, double z, double t, std::span<const double> weights) const;
+
+  // Upper bounds over all x, z, t: |h| <= amplitude_bound, |grad h| <= slope_bound.
+  double amplitude_bound() const { return amplitude_bound_; }
+  double slope_bound() const { return slope_bound_; }
+
+  // Per-wave parameters (structure of arrays): amplitude, wave vector (a, b), angular
+  // frequency, phase.
+  std::vector<double> A, a, b, c, phi;
+
+ private:
+  double amplitude_bound_ = 0, slope_bound_ = 0;
+};
+
+// The unit normal of the spec for a height gradient g = (dh/dx, dh/dz).
+inline vec3 normal_from_gradient(vec2 g) { return normalize(vec3(-g.x, 1.0, -g.y)); }
+
+}  // namespace sg

@@ -1,0 +1,71 @@
+// The radiance of the scene spec ("Radiance along a camera ray"), written once and used
+// by every method, the reference renderer and the tests.
+//
+// At a water point with unit view direction v (towards the camera) and unit normal n:
+//   r = 2 (n . v) n - v                                   (mirror reflection)
+//   r.y <= 0:  L = sea_radiance
+//   otherwise: L = F (radiance if angle(r, L) <= rho else sky) + (1 - F) sea_radiance
+//   F = 1 (fresnel "none") or Schlick's R0 + (1 - R0)(1 - n . v)^5 with R0 = 0.02.
+// A camera ray that hits no water sees the sky (or the light, when light.visible).
+//
+// Analytic methods do not shade one direction; they find the fractions of a pixel's
+// footprint and shutter whose reflection lands in the light disk, in the sky, or below
+// the horizon. `combine_radiance` turns such fractions into the same value.
+#pragma once
+
+#include <cmath>
+
+#include "math/vec.h"
+#include "scene/model.h"
+
+namespace sg {
+
+inline constexpr double kSchlickR0 = 0.02;
+
+// r = 2 (n . v) n - v
+inline vec3 reflect_view(const vec3& n, const vec3& v) { return 2.0 * dot(n, v) * n - v; }
+
+// Schlick's approximation (scene spec 4). n_dot_v is clamped to [0, 1].
+inline double fresnel_schlick(double n_dot_v) {
+  double m = 1.0 - clamp(n_dot_v, 0.0, 1.0);
+  double m2 = m * m;
+  return kSchlickR0 + (1.0 - kSchlickR0) * m2 * m2 * m;
+}
+
+inline double fresnel(FresnelMode mode, double n_dot_v) {
+  return mode == FresnelMode::none ? 1.0 : fresnel_schlick(n_dot_v);
+}
+
+// Radiance along a camera ray with unit direction `dir` that hits no water.
+inline double miss_radiance(const SceneModel& m, const vec3& dir) {
+  if (m.light.visible && m.light.contains(dir)) return m.light.radiance;
+  return m.scene.sky_radiance;
+}
+
+// Radiance reflected at a water point with unit normal n seen from unit direction v.
+inline double water_radiance(const SceneModel& m, const vec3& n, const vec3& v) {
+  const vec3 r = reflect_view(n, v);
+  const double sea = m.scene.surface.sea_radiance;
+  if (r.y <= 0) return sea;
+  const double F = fresnel(m.scene.surface.fresnel, dot(n, v));
+  // r is unit when n and v are; normalising guards the cone test against rounding.
+  const double above = m.light.contains(normalize(r)) ? m.light.radiance : m.scene.sky_radiance;
+  return F * above + (1.0 - F) * sea;
+}
+
+// The expected radiance when a fraction `in_light` of the footprint and shutter reflects
+// into the light disk, `below` reflects below the horizon and the rest sees the sky;
+// F is the Fresnel factor of the part above the horizon.
+inline double combine_radiance(const SceneModel& m, double F, double in_light, double below) {
+  const double sea = m.scene.surface.sea_radiance;
+  const double above = 1.0 - below;
+  const double sky = std::max(0.0, above - in_light);
+  return below * sea + F * (in_light * m.light.radiance + sky * m.scene.sky_radiance) +
+         (1.0 - F) * above * sea;
+}
+
+// The radiance along the camera ray from `origin` with direction `dir` (any length) at
+// time t: intersection (flat or displaced), normal, reflection, shading.
+double radiance_along_ray(const SceneModel& m, const vec3& origin, const vec3& dir, double t);
+
+}  // namespace sg

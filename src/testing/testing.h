@@ -1,0 +1,38 @@
+// Helpers shared by the unit tests: the project's scenes, and small scenes built in code.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace sg::testing {
+
+// A scene shipped with the project (scenes/NAME.json).
+inline Scene project_scene(const std::string& name) {
+  return load_scene(std::string(SG_SOURCE_DIR) + "/scenes/" + name + ".json");
+}
+
+// The shared fixtures beside the project (../shared/scenes), when present.
+inline std::string shared_scene_path(const std::string& name) {
+  return std::string(SG_SOURCE_DIR) + "/../shared/scenes/" + name + ".json";
+}
+inline bool shared_scenes_present() {
+  return std::filesystem::exists(shared_scene_path("simple"));
+}
+
+// The camera and light of the shared scenes, with the given waves, at a small size.
+inline Scene small_scene(std::vector<Wave> waves, int width = 64, int height = 36) {
+  Scene s;
+  s.name = "test";
+  s.width = width;
+  s.height = height;
+  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -60}, {0, 1, 0}, 40};
+  s.light = LightDesc{{0, 0.207912, -0.978148}, 0.27, 1.0, false};
+  s.sky_radiance = 0;
+  s.surface.waves = std::move(waves);
+  s.animation = AnimationDesc{0, 30, 60, 1.0};
+  return s;
+}
+
+}  // namespace sg::testing

@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""Writes bad/*.json: one scene per validation rule of sunglint-scene/1, each derived from
+scenes/simple.json by one change. The expected messages live in
+src/scene/scene_load_test.cpp. Run from this folder: python3 make_bad_scenes.py"""
+import copy, json, os
+
+base = json.load(open("../../scenes/simple.json"))
+cases = {}
+
+def case(name, edit):
+    s = copy.deepcopy(base)
+    edit(s)
+    cases[name] = s
+
+case("missing_camera", lambda s: s.pop("camera"))
+case("missing_t0", lambda s: s["animation"].pop("t0"))
+case("bad_format", lambda s: s.update(format="sunglint-scene/2"))
+case("unknown_top_key", lambda s: s.update(foo=1))
+case("unknown_camera_key", lambda s: s["camera"].update(fov=40))
+case("width_string", lambda s: s["image"].update(width="640"))
+case("width_fraction", lambda s: s["image"].update(width=640.5))
+case("width_zero", lambda s: s["image"].update(width=0))
+case("height_zero", lambda s: s["image"].update(height=0))
+case("image_not_object", lambda s: s.update(image=[640, 360]))
+case("name_number", lambda s: s.update(name=3))
+case("vfov_zero", lambda s: s["camera"].update(vfov_deg=0))
+case("vfov_180", lambda s: s["camera"].update(vfov_deg=180))
+case("look_at_position", lambda s: s["camera"].update(look_at=s["camera"]["position"]))
+case("up_zero", lambda s: s["camera"].update(up=[0, 0, 0]))
+case("up_parallel", lambda s: s["camera"].update(up=[0, -2.5, -60]))
+case("camera_below_water", lambda s: s["camera"].update(position=[0, -1, 0]))
+case("position_two", lambda s: s["camera"].update(position=[0, 2.5]))
+case("position_string", lambda s: s["camera"].update(position=[0, "2.5", 0]))
+case("light_zero", lambda s: s["light"].update(direction=[0, 0, 0]))
+case("light_radius_zero", lambda s: s["light"].update(angular_radius_deg=0))
+case("light_radius_90", lambda s: s["light"].update(angular_radius_deg=90))
+case("light_radiance_negative", lambda s: s["light"].update(radiance=-1))
+case("light_visible_string", lambda s: s["light"].update(visible="yes"))
+case("sky_negative", lambda s: s["sky"].update(radiance=-1))
+case("geometry_unknown", lambda s: s["surface"].update(geometry="bumpy"))
+case("fresnel_unknown", lambda s: s["surface"].update(fresnel="fancy"))
+case("sea_negative", lambda s: s["surface"].update(sea_radiance=-0.1))
+case("waves_not_array", lambda s: s["surface"].update(waves={"amplitude": 1}))
+case("amplitude_negative", lambda s: s["surface"]["waves"][3].update(amplitude=-0.1))
+case("wave_vector_three", lambda s: s["surface"]["waves"][0].update(wave_vector=[1, 2, 3]))
+case("wave_missing_frequency", lambda s: s["surface"]["waves"][1].pop("angular_frequency"))
+case("wave_unknown_key", lambda s: s["surface"]["waves"][2].update(speed=3))
+case("wave_not_object", lambda s: s["surface"]["waves"].__setitem__(4, 0.5))
+case("fps_zero", lambda s: s["animation"].update(fps=0))
+case("frames_zero", lambda s: s["animation"].update(frames=0))
+case("shutter_negative", lambda s: s["animation"].update(shutter=-1))
+
+os.makedirs("bad", exist_ok=True)
+for name, s in cases.items():
+    with open(f"bad/{name}.json", "w") as f:
+        json.dump(s, f, indent=1)
+# Cases that JSON values cannot express.
+text = json.dumps(base, indent=1)
+with open("bad/amplitude_infinite.json", "w") as f:
+    f.write(text.replace('"amplitude": 0.038197', '"amplitude": 1e999', 1))
+with open("bad/syntax_error.json", "w") as f:
+    f.write(text.replace('"fps": 30,', '"fps": 30', 1))
+with open("bad/top_level_array.json", "w") as f:
+    f.write("[" + text + "]")
