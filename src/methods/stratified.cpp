@@ -21,16 +21,6 @@ Scratch& scratch() {
   return s;
 }
 
-void draw_times(Pcg32& rng, const FrameTime& ft, const StratifiedSettings& s,
-                std::vector<double>& times) {
-  const int nt = s.time_at_frame ? 1 : s.samples.st;
-  times.resize(nt);
-  for (int m = 0; m < nt; ++m) {
-    double u = rng.uniform();
-    times[m] = s.time_at_frame ? ft.end : ft.start + (m + u) / nt * ft.duration();
-  }
-}
-
 // Flat water: per position, the wave phases are evaluated once and combined with each
 // time's cos/sin(c t).
 double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s, Pcg32& rng) {
@@ -38,7 +28,7 @@ double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetting
   const WaveField& w = m.waves;
   const size_t nw = w.size();
   Scratch& sc = scratch();
-  draw_times(rng, ctx.time, s, sc.times);
+  draw_sample_times(rng, ctx.time, s, sc.times);
   const int nt = static_cast<int>(sc.times.size());
   sc.cos_ct.resize(nw * nt);
   sc.sin_ct.resize(nw * nt);
@@ -102,7 +92,7 @@ double displaced_pixel(const FrameContext& ctx, int i, int j, const StratifiedSe
                        Pcg32& rng) {
   const SceneModel& m = ctx.model;
   Scratch& sc = scratch();
-  draw_times(rng, ctx.time, s, sc.times);
+  draw_sample_times(rng, ctx.time, s, sc.times);
   const int nt = static_cast<int>(sc.times.size());
   double sum = 0;
   for (int cy = 0; cy < s.samples.sy; ++cy) {
@@ -117,6 +107,16 @@ double displaced_pixel(const FrameContext& ctx, int i, int j, const StratifiedSe
 }
 
 }  // namespace
+
+void draw_sample_times(Pcg32& rng, const FrameTime& ft, const StratifiedSettings& s,
+                       std::vector<double>& times) {
+  const int nt = s.time_at_frame ? 1 : s.samples.st;
+  times.resize(nt);
+  for (int m = 0; m < nt; ++m) {
+    double u = rng.uniform();
+    times[m] = s.time_at_frame ? ft.end : ft.start + (m + u) / nt * ft.duration();
+  }
+}
 
 double stratified_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s) {
   Pcg32 rng = pixel_rng(ctx.seed, ctx.time.frame, i, j);

@@ -18,6 +18,9 @@
 // `supersample` with T = 1: spatial-only supersampling, as MSAA would).
 #pragma once
 
+#include <vector>
+
+#include "math/rng.h"
 #include "methods/method.h"
 
 namespace sg {
@@ -28,6 +31,11 @@ struct StratifiedSettings {
 };
 
 double stratified_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s);
+
+// The sample times: the first T numbers of the pixel's stream, one uniform time in each
+// of the T equal strata of [start, end] (or the single time t_f with time_at_frame).
+void draw_sample_times(Pcg32& rng, const FrameTime& ft, const StratifiedSettings& s,
+                       std::vector<double>& times);
 
 // Wave evaluations (one wave's sine/cosine pair or its update) that stratified_pixel
 // performs for one pixel, for the throughput figures of `sunglint bench`.

@@ -1,0 +1,277 @@
+// The reference estimator (stratified.h) and point sampling.
+//  - Calm water: the reference equals the analytic coverage of the mirrored light disk,
+//    within its Monte-Carlo error.
+//  - The product-grid fast path for flat water equals direct per-sample shading with the
+//    same random numbers (the angle-addition rewrite is exact up to rounding).
+//  - Convergence: the error against a high-sample render falls as 1/sqrt(N) or faster.
+//  - Determinism: same seed, same values, whatever the threads; another seed differs.
+#include "methods/stratified.h"
+
+#include <gtest/gtest.h>
+
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <algorithm>
+#include <cmath>
+
+#include "engine/render.h"
+#include "math/rng.h"
+#include "methods/point.h"
+#include "methods/supersample.h"
+#include "shading/radiance.h"
+#include "testing/testing.h"
+
+namespace sg {
+namespace {
+
+// The fraction of pixel (i, j) whose camera rays, mirrored by calm water, fall in the
+// light's cone. With d = d(px, py) linear in (px, py) and L' = L mirrored, a ray is inside
+// when g = (d . L')^2 - cos^2(rho) |d|^2 >= 0 (on the nappe d . L' > 0). For each column
+// px the rows inside form the interval between the two roots of g in py; its length,
+// clipped to [j, j+1], is integrated over px. The integrand has square-root kinks where
+// the roots merge (discriminant zero) or cross j or j + 1; those points are roots of
+// quadratics in px, so [i, i+1] is split there and each piece integrated by tanh-sinh.
+double analytic_calm_coverage(const SceneModel& m, int i, int j) {
+  const vec3 Lm(m.light.L.x, -m.light.L.y, m.light.L.z);
+  const double c2 = m.light.cos_radius * m.light.cos_radius;
+  const vec3 Dx = m.camera.ddir_dpx(), Dy = m.camera.ddir_dpy();
+  auto g_coeffs = [&](const vec3& P, const vec3& D, double& a, double& b, double& c) {
+    a = sqr(dot(D, Lm)) - c2 * dot(D, D);
+    b = 2 * (dot(P, Lm) * dot(D, Lm) - c2 * dot(P, D));
+    c = sqr(dot(P, Lm)) - c2 * dot(P, P);
+  };
+  auto chord = [&](double px) {
+    double a, b, c;
+    g_coeffs(m.camera.direction(px, 0.0), Dy, a, b, c);
+    const double disc = b * b - 4 * a * c;
+    if (!(a < 0) || disc <= 0) return 0.0;
+    const double r1 = (-b + std::sqrt(disc)) / (2 * a), r2 = (-b - std::sqrt(disc)) / (2 * a);
+    const double lo = std::max<double>(j, std::min(r1, r2));
+    const double hi = std::min<double>(j + 1, std::max(r1, r2));
+    return std::max(0.0, hi - lo);
+  };
+  // Breakpoints: roots in px of g(px, j) and g(px, j + 1), and of the discriminant of g in
+  // py (a quadratic in px, recovered exactly from three values).
+  std::vector<double> cuts = {double(i), double(i + 1)};
+  auto add_roots = [&](double a, double b, double c) {
+    double disc = b * b - 4 * a * c;
+    if (a == 0 || disc < 0) return;
+    for (double r : {(-b + std::sqrt(disc)) / (2 * a), (-b - std::sqrt(disc)) / (2 * a)}) {
+      if (r > i && r < i + 1) cuts.push_back(r);
+    }
+  };
+  for (double py : {double(j), double(j + 1)}) {
+    double a, b, c;
+    g_coeffs(m.camera.direction(0.0, py), Dx, a, b, c);
+    add_roots(a, b, c);
+  }
+  auto disc_at = [&](double px) {
+    double a, b, c;
+    g_coeffs(m.camera.direction(px, 0.0), Dy, a, b, c);
+    return b * b - 4 * a * c;
+  };
+  const double d0 = disc_at(i), dh = disc_at(i + 0.5), d1 = disc_at(i + 1.0);
+  // q(s) = d0 + s (4 dh - 3 d0 - d1) + s^2 (2 d0 + 2 d1 - 4 dh), s = px - i.
+  {
+    double qa = 2 * d0 + 2 * d1 - 4 * dh, qb = 4 * dh - 3 * d0 - d1, qc = d0;
+    double disc = qb * qb - 4 * qa * qc;
+    if (qa != 0 && disc >= 0) {
+      for (double r : {(-qb + std::sqrt(disc)) / (2 * qa), (-qb - std::sqrt(disc)) / (2 * qa)}) {
+        if (r > 0 && r < 1) cuts.push_back(i + r);
+      }
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  boost::math::quadrature::tanh_sinh<double> integrator;
+  double total = 0;
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+    if (cuts[k + 1] - cuts[k] > 1e-15) total += integrator.integrate(chord, cuts[k], cuts[k + 1], 1e-11);
+  }
+  return total;
+}
+
+TEST(Reference, CalmWaterEqualsAnalyticCoverageOfTheMirroredDisk) {
+  Scene s = testing::small_scene({Wave{0.0, {0.3, -1.2}, 3.4, 0.0}}, 640, 360);
+  s.light.angular_radius_deg = 0.6;  // a disk about 5 pixels across
+  SceneModel m(s);
+  double cx, cy;
+  ASSERT_TRUE(m.camera.project(vec3(m.light.L.x, -m.light.L.y, m.light.L.z), cx, cy));
+  const int i0 = static_cast<int>(cx) - 5, j0 = static_cast<int>(cy) - 5, n = 11;
+  const int seeds = 8;
+  double sum_mean = 0, sum_analytic = 0, var_sum = 0;
+  int partial = 0;
+  for (int j = j0; j < j0 + n; ++j) {
+    for (int i = i0; i < i0 + n; ++i) {
+      double mean = 0, mean2 = 0;
+      for (int k = 0; k < seeds; ++k) {
+        FrameContext ctx{m, frame_time(s, 3), static_cast<uint64_t>(k)};
+        double v = stratified_pixel(ctx, i, j, StratifiedSettings{{12, 12, 2}, false});
+        mean += v / seeds;
+        mean2 += v * v / seeds;
+      }
+      const double var = std::max(0.0, mean2 - mean * mean) * seeds / (seeds - 1);
+      const double exact = analytic_calm_coverage(m, i, j);
+      // Within 5 standard errors of the mean of 8 seeds (pixels fully inside or outside
+      // have no variance and must match to the quadrature's accuracy).
+      EXPECT_NEAR(mean, exact, 5 * std::sqrt(var / seeds) + 1e-9) << i << "," << j;
+      sum_mean += mean;
+      sum_analytic += exact;
+      var_sum += var / seeds;
+      partial += exact > 0 && exact < 1;
+    }
+  }
+  EXPECT_GT(partial, 8);                // the disk's edge crosses many pixels
+  EXPECT_GT(sum_analytic, 10);          // and it covers ~20 pixels in all
+  EXPECT_NEAR(sum_mean, sum_analytic, 5 * std::sqrt(var_sum));
+}
+
+// The generic path: every sample traced and shaded on its own, with the random numbers
+// drawn in the estimator's documented order.
+double direct_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s) {
+  const SceneModel& m = ctx.model;
+  Pcg32 rng = pixel_rng(ctx.seed, ctx.time.frame, i, j);
+  std::vector<double> times(s.samples.st);
+  for (int q = 0; q < s.samples.st; ++q) {
+    times[q] = ctx.time.start + (q + rng.uniform()) / s.samples.st * ctx.time.duration();
+  }
+  double sum = 0;
+  for (int cy = 0; cy < s.samples.sy; ++cy) {
+    for (int cx = 0; cx < s.samples.sx; ++cx) {
+      double px = i + (cx + rng.uniform()) / s.samples.sx;
+      double py = j + (cy + rng.uniform()) / s.samples.sy;
+      for (double t : times) sum += radiance_along_ray(m, m.camera.position(), m.camera.direction(px, py), t);
+    }
+  }
+  return sum / (double(s.samples.st) * s.samples.sx * s.samples.sy);
+}
+
+TEST(Reference, FlatFastPathEqualsDirectShading) {
+  Scene s = testing::project_scene("simple");  // window (300..340, 270..300) holds glints
+  s.light.radiance = 50;
+  s.sky_radiance = 0.1;
+  s.surface.sea_radiance = 0.05;
+  s.surface.fresnel = FresnelMode::schlick;
+  SceneModel m(s);
+  FrameContext ctx{m, frame_time(s, 5), 11};
+  StratifiedSettings st{{3, 2, 4}, false};
+  double worst = 0;
+  int lit = 0;
+  for (int j = 270; j < 300; ++j) {
+    for (int i = 300; i < 340; ++i) {
+      double a = stratified_pixel(ctx, i, j, st), b = direct_pixel(ctx, i, j, st);
+      worst = std::max(worst, std::fabs(a - b));
+      lit += a > 0.5;
+    }
+  }
+  // Values agree to rounding; a sample whose reflection lies within ~1e-12 rad of the
+  // disk's edge could flip, which none of these 29k samples do.
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(lit, 0);
+}
+
+TEST(Reference, SampleTimesAreStratifiedAndUniform) {
+  const FrameTime ft{4, 0.1, 0.1 + 1.0 / 30};
+  const int T = 8, bins = 10, streams = 20000;
+  std::vector<int> hist(bins, 0);
+  std::vector<double> times;
+  for (int k = 0; k < streams; ++k) {
+    Pcg32 rng = pixel_rng(3, 4, k, 0);
+    draw_sample_times(rng, ft, StratifiedSettings{{1, 1, T}, false}, times);
+    ASSERT_EQ(times.size(), size_t(T));
+    for (int q = 0; q < T; ++q) {
+      const double x = (times[q] - ft.start) / ft.duration() * T - q;  // position in stratum q
+      ASSERT_GE(x, 0.0);
+      ASSERT_LT(x, 1.0);
+      hist[static_cast<int>(x * bins)]++;
+    }
+  }
+  double chi2 = 0, expect = double(streams) * T / bins;
+  for (int h : hist) chi2 += sqr(h - expect) / expect;
+  EXPECT_LT(chi2, 27.9);  // 0.999 quantile of chi-square with 9 degrees of freedom
+  Pcg32 rng = pixel_rng(0, 0, 0, 0);
+  draw_sample_times(rng, ft, StratifiedSettings{{1, 1, 1}, true}, times);
+  EXPECT_EQ(times, std::vector<double>{ft.end});
+}
+
+TEST(Reference, ErrorFallsAsSamplesGrow) {
+  // A 12x8 window of the simple scene where glints are, against a 32x32x32 render.
+  Scene s = testing::project_scene("simple");
+  SceneModel m(s);
+  const int i0 = 316, j0 = 286, w = 12, h = 8;
+  auto render = [&](SampleCounts n, uint64_t seed) {
+    std::vector<double> v;
+    FrameContext ctx{m, frame_time(s, 0), seed};
+    for (int j = j0; j < j0 + h; ++j) {
+      for (int i = i0; i < i0 + w; ++i) v.push_back(stratified_pixel(ctx, i, j, {n, false}));
+    }
+    return v;
+  };
+  const auto truth = render({32, 32, 32}, 1000);
+  double truth_mean = 0;
+  for (double v : truth) truth_mean += v / truth.size();
+  ASSERT_GT(truth_mean, 0.005) << "the window must contain glints";
+  std::vector<double> err;
+  for (int n : {2, 4, 8}) {
+    double se = 0;
+    int count = 0;
+    for (uint64_t seed = 0; seed < 4; ++seed) {
+      auto v = render({n, n, n}, seed);
+      for (size_t k = 0; k < v.size(); ++k, ++count) se += sqr(v[k] - truth[k]);
+    }
+    err.push_back(std::sqrt(se / count));
+  }
+  // N grows 8x per step: 1/sqrt(N) would divide the error by 2.83. Require at least 2.2
+  // (the truth's own error, ~err(8x8x8)/sqrt(64), is negligible).
+  EXPECT_GT(err[0] / err[1], 2.2) << err[0] << " " << err[1];
+  EXPECT_GT(err[1] / err[2], 2.2) << err[1] << " " << err[2];
+}
+
+TEST(Reference, DeterministicAcrossThreadsAndSeeds) {
+  Scene s = testing::project_scene("high");
+  s.width = 80;
+  s.height = 45;
+  SceneModel m(s);
+  MethodOptions o;
+  o.samples = {3, 3, 3};
+  StratifiedMethod ref("reference", {o.samples, false});
+  RenderSettings one, two, other;
+  one.threads = 1;
+  two.threads = 2;
+  two.tile = 7;
+  other.seed = 1;
+  Image a = render_frame(m, ref, 4, one), b = render_frame(m, ref, 4, two);
+  Image c = render_frame(m, ref, 4, other);
+  EXPECT_EQ(a.data, b.data);
+  EXPECT_NE(a.data, c.data);
+}
+
+TEST(Point, CentreRayAtTheDisplayTime) {
+  Scene s = testing::project_scene("smooth");
+  SceneModel m(s);
+  FrameContext ctx{m, frame_time(s, 7), 0};
+  PointMethod p;
+  for (int j : {200, 260, 300}) {
+    for (int i : {100, 320}) {
+      EXPECT_EQ(p.shade(ctx, i, j),
+                radiance_along_ray(m, m.camera.position(), m.camera.direction(i + 0.5, j + 0.5),
+                                   s.frame_time(7)));
+    }
+  }
+}
+
+TEST(Supersample, OneTimeSampleIsTheDisplayTime) {
+  // With T = 1 supersample samples t_f: a 1x1x1 supersample equals a point sample moved to
+  // its jittered position; its value does not change with the shutter length.
+  Scene s = testing::project_scene("simple");
+  SceneModel m(s);
+  Scene s2 = s;
+  s2.animation.shutter = 0.25;
+  SceneModel m2(s2);
+  StratifiedSettings st{{4, 4, 1}, true};
+  for (int i = 300; i < 340; ++i) {
+    FrameContext a{m, frame_time(s, 2), 0}, b{m2, frame_time(s2, 2), 0};
+    EXPECT_EQ(stratified_pixel(a, i, 270, st), stratified_pixel(b, i, 270, st));
+  }
+}
+
+}  // namespace
+}  // namespace sg

@@ -1,0 +1,60 @@
+// The light disk and the light plane (Podee et al. 2021, Eq. 8).
+#include "scene/light.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "math/rng.h"
+
+namespace sg {
+namespace {
+
+TEST(Light, FrameIsOrthonormalAndRightHanded) {
+  for (vec3 dir : {vec3(0, 0.207912, -0.978148), vec3(0.3, 0.5, 0.1), vec3(0, 1, 0)}) {
+    LightModel l(LightDesc{dir, 0.27, 1, false});
+    EXPECT_NEAR(length(l.L), 1, 1e-15);
+    EXPECT_NEAR(length(l.e1), 1, 1e-15);
+    EXPECT_NEAR(length(l.e2), 1, 1e-15);
+    EXPECT_NEAR(dot(l.e1, l.L), 0, 1e-15);
+    EXPECT_NEAR(dot(l.e2, l.L), 0, 1e-15);
+    EXPECT_LT(length(cross(l.e1, l.e2) - l.L), 1e-15);
+  }
+}
+
+TEST(Light, ConeTestEqualsDiskTestOnThePlane) {
+  LightModel l(LightDesc{{0.1, 0.3, -1}, 2.0, 1, false});
+  Pcg32 rng(5, 5);
+  int inside = 0;
+  for (int k = 0; k < 20000; ++k) {
+    // Directions within 4 degrees of L.
+    vec2 p(rng.uniform() * 0.14 - 0.07, rng.uniform() * 0.14 - 0.07);
+    vec3 r = l.from_plane(p);
+    EXPECT_NEAR(length(l.to_plane(r) - p), 0, 1e-13);
+    const bool by_angle = std::acos(std::min(1.0, dot(r, l.L))) <= l.radius;
+    const bool by_plane = length(p) <= l.tan_radius;
+    if (std::fabs(length(p) - l.tan_radius) > 1e-12) {
+      EXPECT_EQ(by_angle, by_plane);
+    }
+    EXPECT_EQ(l.contains(r), by_plane);
+    inside += by_plane;
+  }
+  EXPECT_GT(inside, 1000);
+}
+
+TEST(Light, GreatCirclesMapToLines) {
+  // Gnomonic projection: three directions on one great circle project to collinear points.
+  LightModel l(LightDesc{{0, 0.2, -1}, 0.27, 1, false});
+  vec3 a = normalize(l.L + vec3(0.05, 0.02, 0)), b = normalize(l.L + vec3(-0.03, 0.04, 0.01));
+  double theta = std::acos(dot(a, b));
+  vec2 pa = l.to_plane(a), pb = l.to_plane(b);
+  for (double s : {0.25, 0.5, 0.8}) {
+    vec3 r = (std::sin((1 - s) * theta) * a + std::sin(s * theta) * b) / std::sin(theta);
+    vec2 p = l.to_plane(r);
+    double cr = (pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x);
+    EXPECT_NEAR(cr, 0, 1e-15);
+  }
+}
+
+}  // namespace
+}  // namespace sg

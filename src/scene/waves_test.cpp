@@ -1,0 +1,94 @@
+// The wave field: analytic derivatives against finite differences, unit normals, and the
+// bounds that the displaced intersection relies on.
+#include "scene/waves.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "math/rng.h"
+#include "testing/testing.h"
+
+namespace sg {
+namespace {
+
+WaveField medium_field() { return WaveField(testing::project_scene("medium").surface.waves); }
+
+TEST(Waves, GradientMatchesCentralDifferences) {
+  WaveField w = medium_field();
+  Pcg32 rng(1, 1);
+  for (int k = 0; k < 500; ++k) {
+    double x = 200 * rng.uniform() - 100, z = -200 * rng.uniform(), t = 10 * rng.uniform();
+    const double h = 1e-5;
+    vec2 fd((w.height(x + h, z, t) - w.height(x - h, z, t)) / (2 * h),
+            (w.height(x, z + h, t) - w.height(x, z - h, t)) / (2 * h));
+    vec2 g = w.gradient(x, z, t);
+    // Central differences: truncation h^2/6 |h'''| ~ 1e-10 * sum A k^3 (< 1e-9); rounding
+    // 1e-16 * |h| / h ~ 1e-11. 1e-8 leaves margin.
+    EXPECT_NEAR(g.x, fd.x, 1e-8);
+    EXPECT_NEAR(g.y, fd.y, 1e-8);
+  }
+}
+
+TEST(Waves, HessianMatchesDifferencesOfTheGradient) {
+  WaveField w = medium_field();
+  Pcg32 rng(2, 1);
+  for (int k = 0; k < 500; ++k) {
+    double x = 200 * rng.uniform() - 100, z = -200 * rng.uniform(), t = 10 * rng.uniform();
+    const double h = 1e-5;
+    vec2 gx = (w.gradient(x + h, z, t) - w.gradient(x - h, z, t)) / (2 * h);
+    vec2 gz = (w.gradient(x, z + h, t) - w.gradient(x, z - h, t)) / (2 * h);
+    Hessian H = w.hessian(x, z, t);
+    EXPECT_NEAR(H.xx, gx.x, 1e-7);
+    EXPECT_NEAR(H.xz, gx.y, 1e-7);
+    EXPECT_NEAR(H.xz, gz.x, 1e-7);
+    EXPECT_NEAR(H.zz, gz.y, 1e-7);
+  }
+}
+
+TEST(Waves, WeightsScaleEachWave) {
+  auto waves = testing::project_scene("simple").surface.waves;
+  WaveField all(waves);
+  std::vector<double> weights = {1.0, 0.0, 0.25, 1.0, 0.5};
+  for (size_t i = 0; i < waves.size(); ++i) waves[i].amplitude *= weights[i];
+  WaveField scaled(waves);
+  for (double x : {-3.0, 0.5, 17.0}) {
+    vec2 a = all.gradient_weighted(x, -20, 1.3, weights), b = scaled.gradient(x, -20, 1.3);
+    EXPECT_NEAR(a.x, b.x, 1e-15);
+    EXPECT_NEAR(a.y, b.y, 1e-15);
+    Hessian ha = all.hessian_weighted(x, -20, 1.3, weights), hb = scaled.hessian(x, -20, 1.3);
+    EXPECT_NEAR(ha.xx, hb.xx, 1e-15);
+    EXPECT_NEAR(ha.xz, hb.xz, 1e-15);
+    EXPECT_NEAR(ha.zz, hb.zz, 1e-15);
+  }
+}
+
+TEST(Waves, NormalsAreUnitAndAlongMinusGradient) {
+  WaveField w = medium_field();
+  Pcg32 rng(3, 1);
+  for (int k = 0; k < 200; ++k) {
+    double x = 50 * rng.uniform(), z = -50 * rng.uniform(), t = rng.uniform();
+    vec2 g = w.gradient(x, z, t);
+    vec3 n = normal_from_gradient(g);
+    EXPECT_NEAR(length(n), 1.0, 1e-15);
+    EXPECT_NEAR(-n.x / n.y, g.x, 1e-12);
+    EXPECT_NEAR(-n.z / n.y, g.y, 1e-12);
+  }
+}
+
+TEST(Waves, BoundsHold) {
+  WaveField w = medium_field();
+  Pcg32 rng(4, 1);
+  double hmax = 0, smax = 0;
+  for (int k = 0; k < 20000; ++k) {
+    double x = 500 * rng.uniform(), z = -500 * rng.uniform(), t = 30 * rng.uniform();
+    hmax = std::max(hmax, std::fabs(w.height(x, z, t)));
+    smax = std::max(smax, length(w.gradient(x, z, t)));
+  }
+  EXPECT_LE(hmax, w.amplitude_bound());
+  EXPECT_LE(smax, w.slope_bound());
+  EXPECT_GT(hmax, 0.3 * w.amplitude_bound());  // the bounds are not absurdly loose here
+}
+
+}  // namespace
+}  // namespace sg
