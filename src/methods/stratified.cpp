@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "math/rng.h"
+#include "math/simd_trig.h"
 #include "scene/intersect.h"
 #include "shading/radiance.h"
 
@@ -11,9 +12,12 @@ namespace sg {
 namespace {
 
 struct Scratch {
-  std::vector<double> times, cos_ct, sin_ct;  // [wave][time]
-  std::vector<double> ac, as, bc, bs;         // per wave, per position
-  std::vector<double> gx, gz;                 // per time
+  std::vector<double> times;
+  std::vector<double> ct_arg, cos_ct, sin_ct;  // [wave][time]: c t, cos(c t), sin(c t)
+  std::vector<vec3> dirs;                      // unit directions of the positions that hit
+  std::vector<double> theta, sin_th, cos_th;   // [hit][wave]: a x + b z + phi
+  std::vector<double> ac, as, bc, bs;          // per wave: A a cos(theta), ...
+  std::vector<double> gx, gz;                  // per time
 };
 
 Scratch& scratch() {
@@ -21,8 +25,8 @@ Scratch& scratch() {
   return s;
 }
 
-// Flat water: per position, the wave phases are evaluated once and combined with each
-// time's cos/sin(c t).
+// Flat water: the wave phases of each position and the c t of each time are evaluated
+// once (vectorised, math/simd_trig.h) and combined per sample by angle addition.
 double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s, Pcg32& rng) {
   const SceneModel& m = ctx.model;
   const WaveField& w = m.waves;
@@ -30,24 +34,19 @@ double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetting
   Scratch& sc = scratch();
   draw_sample_times(rng, ctx.time, s, sc.times);
   const int nt = static_cast<int>(sc.times.size());
+  sc.ct_arg.resize(nw * nt);
   sc.cos_ct.resize(nw * nt);
   sc.sin_ct.resize(nw * nt);
   for (size_t k = 0; k < nw; ++k) {
-    for (int q = 0; q < nt; ++q) {
-      double arg = w.c[k] * sc.times[q];
-      sc.cos_ct[k * nt + q] = std::cos(arg);
-      sc.sin_ct[k * nt + q] = std::sin(arg);
-    }
+    for (int q = 0; q < nt; ++q) sc.ct_arg[k * nt + q] = w.c[k] * sc.times[q];
   }
-  sc.ac.resize(nw);
-  sc.as.resize(nw);
-  sc.bc.resize(nw);
-  sc.bs.resize(nw);
-  sc.gx.resize(nt);
-  sc.gz.resize(nt);
+  sincos_array(sc.ct_arg.data(), sc.sin_ct.data(), sc.cos_ct.data(), nw * nt);
 
+  // Positions, in the stream's order; those that miss the water see the sky at all times.
   const vec3 origin = m.camera.position();
   double sum = 0;
+  sc.dirs.clear();
+  sc.theta.clear();
   for (int cy = 0; cy < s.samples.sy; ++cy) {
     for (int cx = 0; cx < s.samples.sx; ++cx) {
       const double px = i + (cx + rng.uniform()) / s.samples.sx;
@@ -58,30 +57,34 @@ double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetting
         sum += nt * miss_radiance(m, d);
         continue;
       }
-      const double x = hit.point.x, z = hit.point.z;
+      sc.dirs.push_back(d);
       for (size_t k = 0; k < nw; ++k) {
-        const double theta = w.a[k] * x + w.b[k] * z + w.phi[k];
-        const double ct = std::cos(theta), st = std::sin(theta);
-        sc.ac[k] = w.A[k] * w.a[k] * ct;
-        sc.as[k] = w.A[k] * w.a[k] * st;
-        sc.bc[k] = w.A[k] * w.b[k] * ct;
-        sc.bs[k] = w.A[k] * w.b[k] * st;
+        sc.theta.push_back(w.a[k] * hit.point.x + w.b[k] * hit.point.z + w.phi[k]);
       }
-      std::fill(sc.gx.begin(), sc.gx.end(), 0.0);
-      std::fill(sc.gz.begin(), sc.gz.end(), 0.0);
-      for (size_t k = 0; k < nw; ++k) {
-        const double* cc = &sc.cos_ct[k * nt];
-        const double* ss = &sc.sin_ct[k * nt];
-        const double ac = sc.ac[k], as = sc.as[k], bc = sc.bc[k], bs = sc.bs[k];
-        for (int q = 0; q < nt; ++q) {  // dh/dx = sum A a cos(theta + c t)
-          sc.gx[q] += ac * cc[q] - as * ss[q];
-          sc.gz[q] += bc * cc[q] - bs * ss[q];
-        }
-      }
-      const vec3 v = -d;
-      for (int q = 0; q < nt; ++q) {
-        sum += water_radiance(m, normal_from_gradient(vec2(sc.gx[q], sc.gz[q])), v);
-      }
+    }
+  }
+  sc.sin_th.resize(sc.theta.size());
+  sc.cos_th.resize(sc.theta.size());
+  sincos_array(sc.theta.data(), sc.sin_th.data(), sc.cos_th.data(), sc.theta.size());
+
+  sc.gx.resize(nt);
+  sc.gz.resize(nt);
+  for (auto* v : {&sc.ac, &sc.as, &sc.bc, &sc.bs}) v->resize(nw);
+  for (size_t h = 0; h < sc.dirs.size(); ++h) {
+    const double* st_h = &sc.sin_th[h * nw];
+    const double* ct_h = &sc.cos_th[h * nw];
+    for (size_t k = 0; k < nw; ++k) {
+      sc.ac[k] = w.A[k] * w.a[k] * ct_h[k];
+      sc.as[k] = w.A[k] * w.a[k] * st_h[k];
+      sc.bc[k] = w.A[k] * w.b[k] * ct_h[k];
+      sc.bs[k] = w.A[k] * w.b[k] * st_h[k];
+    }
+    // dh/dx = sum A a cos(theta + c t) = sum A a (cos theta cos ct - sin theta sin ct)
+    shifted_cosine_sums(sc.ac.data(), sc.as.data(), sc.bc.data(), sc.bs.data(), sc.cos_ct.data(),
+                        sc.sin_ct.data(), nw, nt, sc.gx.data(), sc.gz.data());
+    const vec3 v = -sc.dirs[h];
+    for (int q = 0; q < nt; ++q) {
+      sum += water_radiance(m, normal_direction(vec2(sc.gx[q], sc.gz[q])), v);
     }
   }
   return sum / (static_cast<double>(nt) * s.samples.sx * s.samples.sy);

@@ -42,16 +42,23 @@ inline double miss_radiance(const SceneModel& m, const vec3& dir) {
   return m.scene.sky_radiance;
 }
 
-// Radiance reflected at a water point with unit normal n seen from unit direction v.
-inline double water_radiance(const SceneModel& m, const vec3& n, const vec3& v) {
-  const vec3 r = reflect_view(n, v);
+// Radiance reflected at a water point seen from unit direction v, for a normal along
+// `nm` of any length (the unit normal is nm / |nm|). With n = nm / |nm| the reflection
+// 2 (n . v) n - v equals 2 (nm . v) / (nm . nm) nm - v, which needs no square root; r is
+// then unit to rounding, so the cone test r . L >= cos(rho) is exact to 1e-16.
+inline double water_radiance(const SceneModel& m, const vec3& nm, const vec3& v) {
+  const double nv = dot(nm, v), nn = dot(nm, nm);
+  const vec3 r = (2.0 * nv / nn) * nm - v;
   const double sea = m.scene.surface.sea_radiance;
   if (r.y <= 0) return sea;
-  const double F = fresnel(m.scene.surface.fresnel, dot(n, v));
-  // r is unit when n and v are; normalising guards the cone test against rounding.
-  const double above = m.light.contains(normalize(r)) ? m.light.radiance : m.scene.sky_radiance;
+  const double above = m.light.contains(r) ? m.light.radiance : m.scene.sky_radiance;
+  if (m.scene.surface.fresnel == FresnelMode::none) return above;
+  const double F = fresnel_schlick(nv / std::sqrt(nn));
   return F * above + (1.0 - F) * sea;
 }
+
+// The (unnormalised) normal (-dh/dx, 1, -dh/dz) of the scene spec for gradient g.
+inline vec3 normal_direction(vec2 g) { return vec3(-g.x, 1.0, -g.y); }
 
 // The expected radiance when a fraction `in_light` of the footprint and shutter reflects
 // into the light disk, `below` reflects below the horizon and the rest sees the sky;

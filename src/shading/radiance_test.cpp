@@ -61,6 +61,20 @@ TEST(Radiance, WaterRadianceCases) {
   EXPECT_DOUBLE_EQ(miss_radiance(mv, mv.light.L), 5.0);
 }
 
+TEST(Radiance, NormalLengthDoesNotMatter) {
+  Scene s = testing::small_scene({});
+  s.sky_radiance = 0.25;
+  s.surface.sea_radiance = 0.125;
+  s.surface.fresnel = FresnelMode::schlick;
+  SceneModel m(s);
+  const vec3 n(0, 1, 0), v_light = vec3(-m.light.L.x, m.light.L.y, -m.light.L.z);
+  for (double scale : {1e-3, 0.7, 1.0, 40.0}) {
+    EXPECT_NEAR(water_radiance(m, scale * n, v_light), water_radiance(m, n, v_light), 1e-15);
+  }
+  const double F = fresnel_schlick(dot(n, v_light));
+  EXPECT_NEAR(water_radiance(m, n, v_light), F + (1 - F) * 0.125, 1e-15);
+}
+
 TEST(Radiance, CombineEqualsTheMeanOfSampledValues) {
   // A set of samples, a fraction in the light, below the horizon, in the sky, all with
   // the same normal-view angle: their mean radiance equals combine_radiance.
