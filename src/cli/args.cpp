@@ -17,9 +17,9 @@ bool parse_int(const std::string& s, int& out) {
 FrameRange parse_frame_range(const std::string& text, const std::string& flag) {
   FrameRange r;
   size_t dash = text.find('-', 1);
-  bool ok = dash == std::string::npos
-                ? parse_int(text, r.first) && (r.last = r.first, true)
-                : parse_int(text.substr(0, dash), r.first) && parse_int(text.substr(dash + 1), r.last);
+  bool ok = dash == std::string::npos ? parse_int(text, r.first) && (r.last = r.first, true)
+                                      : parse_int(text.substr(0, dash), r.first) &&
+                                            parse_int(text.substr(dash + 1), r.last);
   if (!ok || r.first < 0 || r.last < r.first) {
     throw Error(flag + ": expected a frame range A-B with 0 <= A <= B (got '" + text + "')");
   }

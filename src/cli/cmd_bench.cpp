@@ -37,7 +37,8 @@ void run_bench(const BenchArgs& a) {
   opt.samples = parse_sample_counts(a.samples, "--samples");
   std::vector<std::string> names = split(a.methods);
   if (names.empty()) throw Error("--methods: give at least one method");
-  for (const auto& n : names) make_method(n, opt);  // validate names first
+  for (const auto& n : names)
+    make_method(n, opt);  // validate names first
   RenderSettings rs;
   rs.threads = a.threads;
   std::printf("| scene | method | ms/frame | x point | samples/s | wave evals/s |\n");
@@ -53,9 +54,9 @@ void run_bench(const BenchArgs& a) {
       for (int r = 0; r < std::max(1, a.repeat); ++r) {
         auto t0 = std::chrono::steady_clock::now();
         render_frame(model, *m, a.frame, rs);
-        best = std::min(best, std::chrono::duration<double, std::milli>(
-                                  std::chrono::steady_clock::now() - t0)
-                                  .count());
+        best = std::min(
+            best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                      .count());
       }
       if (n == "point") point_ms = best;
       std::string sps = "", wps = "";
@@ -64,7 +65,8 @@ void run_bench(const BenchArgs& a) {
         FrameContext ctx{model, frame_time(s, a.frame), 0};
         long evals = 0;
         for (int j = 0; j < s.height; ++j) {
-          for (int i = 0; i < s.width; ++i) evals += stratified_pixel_wave_evaluations(ctx, i, j, st);
+          for (int i = 0; i < s.width; ++i)
+            evals += stratified_pixel_wave_evaluations(ctx, i, j, st);
         }
         const double samples = double(s.width) * s.height * opt.samples.sx * opt.samples.sy *
                                (st.time_at_frame ? 1 : opt.samples.st);
@@ -92,11 +94,16 @@ void add_bench_command(CLI::App& app) {
   c->add_option("--methods", a->methods, "Comma-separated methods (put point first for ratios)")
       ->capture_default_str();
   c->add_option("--samples", a->samples, "Samples SxSxT")->capture_default_str();
-  c->add_option("--width", a->width, "Image width")->capture_default_str()->check(CLI::Range(1, 16384));
-  c->add_option("--height", a->height, "Image height")->capture_default_str()->check(CLI::Range(1, 16384));
+  c->add_option("--width", a->width, "Image width")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16384));
+  c->add_option("--height", a->height, "Image height")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16384));
   c->add_option("--frame", a->frame, "Frame")->capture_default_str();
   c->add_option("--threads,-j", a->threads, "Threads (0: all)")->capture_default_str();
-  c->add_option("--repeat", a->repeat, "Runs per method; the fastest counts")->capture_default_str();
+  c->add_option("--repeat", a->repeat, "Runs per method; the fastest counts")
+      ->capture_default_str();
   c->callback([a] { run_bench(*a); });
 }
 

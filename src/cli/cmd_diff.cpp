@@ -113,15 +113,18 @@ void run_diff(const DiffArgs& d) {
 void add_diff_command(CLI::App& app) {
   auto d = std::make_shared<DiffArgs>();
   CLI::App* c = app.add_subcommand(
-      "diff", "Compare image A with reference B (RMSE, PSNR, means, max |A-B|; for sequences "
-              "also temporal error and flicker)");
+      "diff",
+      "Compare image A with reference B (RMSE, PSNR, means, max |A-B|; for sequences "
+      "also temporal error and flicker)");
   c->add_option("A", d->a, "Image (.exr, .pfm) or sequence pattern (frame_%04d.exr)")->required();
   c->add_option("B", d->b, "Reference image or sequence pattern")->required();
   c->add_option("--frames", d->frames, "Frame range A-B when A and B are sequence patterns");
-  c->add_option("--out,-o", d->out, "Write a false-colour difference picture A-B (.png; blue: "
-                                    "A darker, red: A brighter)");
-  c->add_option("--range", d->range, "Difference mapped to the ends of the colour map (default: "
-                                     "max |A-B|)");
+  c->add_option("--out,-o", d->out,
+                "Write a false-colour difference picture A-B (.png; blue: "
+                "A darker, red: A brighter)");
+  c->add_option("--range", d->range,
+                "Difference mapped to the ends of the colour map (default: "
+                "max |A-B|)");
   c->add_option("--peak", d->peak, "Peak value for PSNR")->capture_default_str();
   c->add_flag("--json", d->json, "Print JSON");
   c->callback([d] { run_diff(*d); });

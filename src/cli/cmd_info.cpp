@@ -95,11 +95,10 @@ void run_info(const InfoArgs& a) {
     for (size_t k = 0; k < s.surface.waves.size(); ++k) {
       const Wave& wv = s.surface.waves[k];
       double kk = length(wv.wave_vector);
-      std::printf("%4zu  %9.5f  %10.4f  %14.2f  %9.4f  %6.3f\n", k, wv.amplitude,
-                  kk > 0 ? kTwoPi / kk : 0.0,
-                  degrees(std::atan2(wv.wave_vector.x, -wv.wave_vector.y)),
-                  wv.angular_frequency != 0 ? kTwoPi / std::fabs(wv.angular_frequency) : 0.0,
-                  wv.phase);
+      std::printf(
+          "%4zu  %9.5f  %10.4f  %14.2f  %9.4f  %6.3f\n", k, wv.amplitude,
+          kk > 0 ? kTwoPi / kk : 0.0, degrees(std::atan2(wv.wave_vector.x, -wv.wave_vector.y)),
+          wv.angular_frequency != 0 ? kTwoPi / std::fabs(wv.angular_frequency) : 0.0, wv.phase);
     }
   }
 }

@@ -28,8 +28,10 @@ void run_render(const RenderArgs& a) {
   Scene scene = load_scene(a.scene_path);
   if (a.width > 0 || a.height > 0) {
     int w = a.width, h = a.height;
-    if (w <= 0) w = std::max(1, static_cast<int>(std::lround(double(h) * scene.width / scene.height)));
-    if (h <= 0) h = std::max(1, static_cast<int>(std::lround(double(w) * scene.height / scene.width)));
+    if (w <= 0)
+      w = std::max(1, static_cast<int>(std::lround(double(h) * scene.width / scene.height)));
+    if (h <= 0)
+      h = std::max(1, static_cast<int>(std::lround(double(w) * scene.height / scene.width)));
     set_image_size(scene, w, h);
   }
   FrameRange range{a.frame, a.frame};
@@ -66,9 +68,9 @@ void run_render(const RenderArgs& a) {
   });
   bar.finish();
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%s: %s, %dx%d, frames %d-%d, %.2f s (%.1f ms per frame) -> %s\n",
-              scene.name.c_str(), method->name().c_str(), scene.width, scene.height, range.first,
-              range.last, secs, 1000 * secs / frames, a.out.c_str());
+  std::printf("%s: %s, %dx%d, frames %d-%d, %.2f s (%.1f ms per frame) -> %s\n", scene.name.c_str(),
+              method->name().c_str(), scene.width, scene.height, range.first, range.last, secs,
+              1000 * secs / frames, a.out.c_str());
 }
 
 }  // namespace
@@ -76,7 +78,8 @@ void run_render(const RenderArgs& a) {
 void add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   std::string methods;
-  for (const auto& m : method_catalog()) methods += "\n  " + m.name + ": " + m.summary;
+  for (const auto& m : method_catalog())
+    methods += "\n  " + m.name + ": " + m.summary;
   CLI::App* c = app.add_subcommand("render", "Render a scene with one method");
   c->add_option("scene", a->scene_path, "Scene file (sunglint-scene/1 JSON)")->required();
   c->add_option("--method,-m", a->method, "Rendering method:" + methods)->required();
@@ -89,8 +92,9 @@ void add_render_command(CLI::App& app) {
       ->excludes(frame);
   c->add_option("--samples", a->samples, "Samples SxSxT for reference and supersample")
       ->capture_default_str();
-  c->add_option("--width", a->width, "Override the image width (height follows the aspect "
-                                     "ratio unless given)")
+  c->add_option("--width", a->width,
+                "Override the image width (height follows the aspect "
+                "ratio unless given)")
       ->check(CLI::Range(1, 16384));
   c->add_option("--height", a->height, "Override the image height")->check(CLI::Range(1, 16384));
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")

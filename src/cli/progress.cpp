@@ -12,7 +12,9 @@ ProgressBar::ProgressBar(std::string label, bool enabled)
       tty_(::isatty(2) != 0),
       start_(std::chrono::steady_clock::now()) {}
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+  finish();
+}
 
 void ProgressBar::update(long done, long total) {
   if (!enabled_ || total <= 0) return;

@@ -49,7 +49,8 @@ Image render_frame(const SceneModel& model, Method& method, int frame,
 void render_frames(const SceneModel& model, Method& method, int first, int last,
                    const RenderSettings& settings,
                    const std::function<void(int frame, const Image&)>& on_frame) {
-  for (int f = first; f <= last; ++f) on_frame(f, render_frame(model, method, f, settings));
+  for (int f = first; f <= last; ++f)
+    on_frame(f, render_frame(model, method, f, settings));
 }
 
 }  // namespace sg

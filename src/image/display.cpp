@@ -22,11 +22,8 @@ std::vector<uint8_t> tonemap_srgb8(const Image& img, double exposure_stops) {
 
 std::array<uint8_t, 3> diverging_colour(double t) {
   // Control points of Moreland's cool-to-warm map (sRGB, 0..255), at t = -1, -0.5, 0, 0.5, 1.
-  static const double kStops[5][3] = {{59, 76, 192},
-                                      {141, 176, 254},
-                                      {221, 221, 221},
-                                      {244, 154, 123},
-                                      {180, 4, 38}};
+  static const double kStops[5][3] = {
+      {59, 76, 192}, {141, 176, 254}, {221, 221, 221}, {244, 154, 123}, {180, 4, 38}};
   t = std::clamp(std::isfinite(t) ? t : 1.0, -1.0, 1.0);
   double x = (t + 1.0) * 2.0;  // 0..4
   int k = std::min(3, static_cast<int>(x));

@@ -22,7 +22,8 @@ namespace sg {
 
 ImageFormat image_format_of(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".exr") return ImageFormat::exr;
   if (ext == ".pfm") return ImageFormat::pfm;
   if (ext == ".png") return ImageFormat::png;
@@ -70,8 +71,7 @@ Image decode_pfm(const std::string& bytes, const std::string& name) {
   for (int j = 0; j < img.height; ++j) {
     const float* src = &raw[static_cast<size_t>(img.height - 1 - j) * w * channels];
     for (int i = 0; i < img.width; ++i) {
-      img.at(i, j) = channels == 1 ? src[i]
-                                   : (src[3 * i] + src[3 * i + 1] + src[3 * i + 2]) / 3.0f;
+      img.at(i, j) = channels == 1 ? src[i] : (src[3 * i] + src[3 * i + 1] + src[3 * i + 2]) / 3.0f;
     }
   }
   return img;
@@ -123,7 +123,8 @@ Image read_exr(const std::string& path) {
     Image img(w, h);
     for (size_t k = 0; k < img.size(); ++k) {
       float s = 0;
-      for (auto& p : planes) s += p[k];
+      for (auto& p : planes)
+        s += p[k];
       img.data[k] = s / static_cast<float>(planes.size());
     }
     return img;

@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 Image ramp(int w, int h) {
   Image img(w, h);
   for (int j = 0; j < h; ++j) {
-    for (int i = 0; i < w; ++i) img.at(i, j) = 0.001f * i + 0.5f * j + (i == 3 ? 1e-7f : 0.0f);
+    for (int i = 0; i < w; ++i)
+      img.at(i, j) = 0.001f * i + 0.5f * j + (i == 3 ? 1e-7f : 0.0f);
   }
   return img;
 }
@@ -130,7 +131,8 @@ TEST_F(ImageIo, SequencePatterns) {
   EXPECT_THROW(format_frame_path("a_%s.exr", 1, "--out"), Error);
   EXPECT_THROW(format_frame_path("a_%d_%d.exr", 1, "--out"), Error);
   EXPECT_THROW(format_frame_path("a.exr", 1, "--out"), Error);
-  for (int f = 2; f <= 4; ++f) write_image(format_frame_path(path("s_%02d.pfm"), f), Image(3, 2, f));
+  for (int f = 2; f <= 4; ++f)
+    write_image(format_frame_path(path("s_%02d.pfm"), f), Image(3, 2, f));
   auto seq = read_sequence(path("s_%02d.pfm"), 2, 4);
   ASSERT_EQ(seq.size(), 3u);
   EXPECT_EQ(seq[2].at(1, 1), 4.0f);

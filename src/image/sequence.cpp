@@ -67,7 +67,8 @@ std::string format_frame_path(const std::string& pattern, int frame, const std::
 
 std::vector<Image> read_sequence(const std::string& pattern, int first, int last) {
   std::vector<Image> frames;
-  for (int f = first; f <= last; ++f) frames.push_back(read_image(format_frame_path(pattern, f)));
+  for (int f = first; f <= last; ++f)
+    frames.push_back(read_image(format_frame_path(pattern, f)));
   return frames;
 }
 

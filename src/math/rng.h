@@ -50,8 +50,8 @@ class Pcg32 {
 // The stream of pixel (i, j) of frame `frame` under `seed`.
 inline Pcg32 pixel_rng(uint64_t seed, int64_t frame, int i, int j) {
   uint64_t key = splitmix64(seed ^ splitmix64(static_cast<uint64_t>(frame) * 0x100000001b3ULL));
-  key = splitmix64(key ^ (static_cast<uint64_t>(static_cast<uint32_t>(j)) << 32 |
-                          static_cast<uint32_t>(i)));
+  key = splitmix64(
+      key ^ (static_cast<uint64_t>(static_cast<uint32_t>(j)) << 32 | static_cast<uint32_t>(i)));
   return Pcg32(key, splitmix64(key + 1));
 }
 

@@ -26,13 +26,15 @@ TEST(Rng, UniformMomentsAndRange) {
   EXPECT_NEAR(sum2 / n - (sum / n) * (sum / n), 1.0 / 12, 1e-3);
   // Chi-square over 20 bins, 19 degrees of freedom: 43.8 is the 0.999 quantile.
   double chi2 = 0, expect = n / 20.0;
-  for (int b : bins) chi2 += (b - expect) * (b - expect) / expect;
+  for (int b : bins)
+    chi2 += (b - expect) * (b - expect) / expect;
   EXPECT_LT(chi2, 43.8);
 }
 
 TEST(Rng, PixelStreamsAreReproducibleAndDistinct) {
   Pcg32 a = pixel_rng(1, 3, 10, 20), b = pixel_rng(1, 3, 10, 20);
-  for (int k = 0; k < 10; ++k) EXPECT_EQ(a.next_u32(), b.next_u32());
+  for (int k = 0; k < 10; ++k)
+    EXPECT_EQ(a.next_u32(), b.next_u32());
   // Neighbouring pixels, frames and seeds give uncorrelated first draws.
   const int n = 4000;
   double sxy = 0;

@@ -2,12 +2,15 @@
 
 #include <cmath>
 
-// Highway's per-target compilation: this file is included once per instruction set.
+// Highway's per-target compilation: this file is included once per instruction set. The
+// order of these lines matters, so they are kept out of clang-format's include sorting.
+// clang-format off
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "math/simd_trig.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
+// clang-format on
 
 HWY_BEFORE_NAMESPACE();
 namespace sg {
@@ -74,8 +77,8 @@ HWY_EXPORT(SinCosArray);
 HWY_EXPORT(ShiftedCosineSums);
 
 void shifted_cosine_sums(const double* ac, const double* as, const double* bc, const double* bs,
-                         const double* cos_t, const double* sin_t, size_t nk, size_t nt,
-                         double* gx, double* gz) {
+                         const double* cos_t, const double* sin_t, size_t nk, size_t nt, double* gx,
+                         double* gz) {
   HWY_DYNAMIC_DISPATCH(ShiftedCosineSums)(ac, as, bc, bs, cos_t, sin_t, nk, nt, gx, gz);
 }
 

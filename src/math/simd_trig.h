@@ -22,7 +22,7 @@ void sincos_array(const double* x, double* s, double* c, size_t n);
 // With ac = A a cos(theta), as = A a sin(theta) (and b for z), and cos_t, sin_t of c t,
 // gx = sum A a cos(theta + c t) = dh/dx (Podee et al. 2021, Eq. 1 differentiated).
 void shifted_cosine_sums(const double* ac, const double* as, const double* bc, const double* bs,
-                         const double* cos_t, const double* sin_t, size_t nk, size_t nt,
-                         double* gx, double* gz);
+                         const double* cos_t, const double* sin_t, size_t nk, size_t nt, double* gx,
+                         double* gz);
 
 }  // namespace sg

@@ -17,7 +17,8 @@ TEST(SimdTrig, MatchesLibm) {
   for (double range : {3.2, 100.0, 4e4, 1e6}) {
     const size_t n = 10007;  // not a multiple of the vector width: the tail is used
     std::vector<double> x(n), s(n), c(n);
-    for (auto& v : x) v = (2 * rng.uniform() - 1) * range;
+    for (auto& v : x)
+      v = (2 * rng.uniform() - 1) * range;
     sincos_array(x.data(), s.data(), c.data(), n);
     double worst = 0;
     for (size_t k = 0; k < n; ++k) {
@@ -39,7 +40,8 @@ TEST(SimdTrig, ShiftedCosineSumsAreTheGradientByAngleAddition) {
       theta[k] = 100 * rng.uniform();
       c[k] = 10 * rng.uniform();
     }
-    for (auto& v : t) v = rng.uniform();
+    for (auto& v : t)
+      v = rng.uniform();
     std::vector<double> ac(nk), as(nk), bc(nk), bs(nk), cos_t(nk * nt), sin_t(nk * nt);
     for (size_t k = 0; k < nk; ++k) {
       ac[k] = A[k] * std::cos(theta[k]);
@@ -52,11 +54,12 @@ TEST(SimdTrig, ShiftedCosineSumsAreTheGradientByAngleAddition) {
       }
     }
     std::vector<double> gx(nt), gz(nt);
-    shifted_cosine_sums(ac.data(), as.data(), bc.data(), bs.data(), cos_t.data(), sin_t.data(),
-                        nk, nt, gx.data(), gz.data());
+    shifted_cosine_sums(ac.data(), as.data(), bc.data(), bs.data(), cos_t.data(), sin_t.data(), nk,
+                        nt, gx.data(), gz.data());
     for (size_t q = 0; q < nt; ++q) {
       double direct = 0;
-      for (size_t k = 0; k < nk; ++k) direct += A[k] * std::cos(theta[k] + c[k] * t[q]);
+      for (size_t k = 0; k < nk; ++k)
+        direct += A[k] * std::cos(theta[k] + c[k] * t[q]);
       EXPECT_NEAR(gx[q], direct, 1e-13);
       EXPECT_NEAR(gz[q], 2 * direct, 2e-13);
     }

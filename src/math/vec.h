@@ -27,8 +27,14 @@ using glm::normalize;
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kTwoPi = 2.0 * kPi;
 
-inline double radians(double deg) { return deg * (kPi / 180.0); }
-inline double degrees(double rad) { return rad * (180.0 / kPi); }
-inline double sqr(double x) { return x * x; }
+inline double radians(double deg) {
+  return deg * (kPi / 180.0);
+}
+inline double degrees(double rad) {
+  return rad * (180.0 / kPi);
+}
+inline double sqr(double x) {
+  return x * x;
+}
 
 }  // namespace sg

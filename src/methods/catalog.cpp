@@ -6,10 +6,10 @@
 
 namespace sg {
 
-void Method::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
-                        Image& out) const {
+void Method::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1, Image& out) const {
   for (int j = y0; j < y1; ++j) {
-    for (int i = x0; i < x1; ++i) out.at(i, j) = static_cast<float>(shade(ctx, i, j));
+    for (int i = x0; i < x1; ++i)
+      out.at(i, j) = static_cast<float>(shade(ctx, i, j));
   }
 }
 
@@ -32,7 +32,8 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
   }
   if (name == "point") return std::make_unique<PointMethod>();
   std::string list;
-  for (const auto& m : method_catalog()) list += (list.empty() ? "" : ", ") + m.name;
+  for (const auto& m : method_catalog())
+    list += (list.empty() ? "" : ", ") + m.name;
   throw Error("--method: unknown method '" + name + "' (choose one of: " + list + ")");
 }
 

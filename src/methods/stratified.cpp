@@ -38,7 +38,8 @@ double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetting
   sc.cos_ct.resize(nw * nt);
   sc.sin_ct.resize(nw * nt);
   for (size_t k = 0; k < nw; ++k) {
-    for (int q = 0; q < nt; ++q) sc.ct_arg[k * nt + q] = w.c[k] * sc.times[q];
+    for (int q = 0; q < nt; ++q)
+      sc.ct_arg[k * nt + q] = w.c[k] * sc.times[q];
   }
   sincos_array(sc.ct_arg.data(), sc.sin_ct.data(), sc.cos_ct.data(), nw * nt);
 
@@ -69,7 +70,8 @@ double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetting
 
   sc.gx.resize(nt);
   sc.gz.resize(nt);
-  for (auto* v : {&sc.ac, &sc.as, &sc.bc, &sc.bs}) v->resize(nw);
+  for (auto* v : {&sc.ac, &sc.as, &sc.bc, &sc.bs})
+    v->resize(nw);
   for (size_t h = 0; h < sc.dirs.size(); ++h) {
     const double* st_h = &sc.sin_th[h * nw];
     const double* ct_h = &sc.cos_th[h * nw];
@@ -103,7 +105,8 @@ double displaced_pixel(const FrameContext& ctx, int i, int j, const StratifiedSe
       const double px = i + (cx + rng.uniform()) / s.samples.sx;
       const double py = j + (cy + rng.uniform()) / s.samples.sy;
       const vec3 d = m.camera.direction(px, py);
-      for (int q = 0; q < nt; ++q) sum += radiance_along_ray(m, m.camera.position(), d, sc.times[q]);
+      for (int q = 0; q < nt; ++q)
+        sum += radiance_along_ray(m, m.camera.position(), d, sc.times[q]);
     }
   }
   return sum / (static_cast<double>(nt) * s.samples.sx * s.samples.sy);

@@ -12,7 +12,7 @@ namespace {
 
 TEST(Metrics, KnownImages) {
   Image a(2, 2, 0.0f), b(2, 2, 0.0f);
-  a.at(0, 0) = 0.5f;   // differences: 0.5, -0.25, 0, 0
+  a.at(0, 0) = 0.5f;  // differences: 0.5, -0.25, 0, 0
   b.at(1, 0) = 0.25f;
   ImageMetrics m = compare_images(a, b);
   EXPECT_DOUBLE_EQ(m.rmse, std::sqrt((0.25 + 0.0625) / 4));

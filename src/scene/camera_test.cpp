@@ -78,9 +78,11 @@ TEST(Camera, FootprintOnThePlaneMatchesNeighbouringRays) {
       vec3 fy = transfer_differential(d, c.s, cam.ddir_dpy(), up);
       const double h = 1e-3;  // pixels
       vec3 nx = (intersect_flat(o, cam.direction(px + h, py)).point -
-                 intersect_flat(o, cam.direction(px - h, py)).point) / (2 * h);
+                 intersect_flat(o, cam.direction(px - h, py)).point) /
+                (2 * h);
       vec3 ny = (intersect_flat(o, cam.direction(px, py + h)).point -
-                 intersect_flat(o, cam.direction(px, py - h)).point) / (2 * h);
+                 intersect_flat(o, cam.direction(px, py - h)).point) /
+                (2 * h);
       // Relative agreement: central differences are second order in h; the footprint
       // grows to metres per pixel near the horizon.
       EXPECT_LT(length(fx - nx), 1e-6 * length(nx)) << px << "," << py;

@@ -17,12 +17,12 @@
 
 namespace sg {
 
-inline constexpr double kGrazeDepth = 1e-6;      // metres
-inline constexpr double kRootTolerance = 1e-9;   // metres
+inline constexpr double kGrazeDepth = 1e-6;     // metres
+inline constexpr double kRootTolerance = 1e-9;  // metres
 
 struct RayHit {
   bool hit = false;
-  double s = 0;     // ray parameter: point = origin + s * dir
+  double s = 0;  // ray parameter: point = origin + s * dir
   vec3 point{0};
 };
 

@@ -51,7 +51,8 @@ TEST(Intersect, DisplacedMatchesBruteForceMarch) {
   // The simple scene's waves made steep (x2.5 amplitude) so that crests occlude troughs,
   // seen along the camera rays of a 64x36 image, including grazing rays near the horizon.
   auto waves = testing::project_scene("simple").surface.waves;
-  for (auto& wv : waves) wv.amplitude *= 2.5;
+  for (auto& wv : waves)
+    wv.amplitude *= 2.5;
   WaveField w(waves);
   Scene s = testing::small_scene(waves, 64, 36);
   CameraModel cam(s.camera, s.width, s.height);

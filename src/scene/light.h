@@ -15,10 +15,10 @@
 namespace sg {
 
 struct LightModel {
-  vec3 L{0, 0, -1};       // unit, towards the light
-  vec3 e1{1, 0, 0};       // light-plane frame: e1 horizontal (e1.y = 0 unless L is vertical)
-  vec3 e2{0, 1, 0};       // e2 = L x e1, so that e1 x e2 = L
-  double radius = 0;      // angular radius, radians
+  vec3 L{0, 0, -1};   // unit, towards the light
+  vec3 e1{1, 0, 0};   // light-plane frame: e1 horizontal (e1.y = 0 unless L is vertical)
+  vec3 e2{0, 1, 0};   // e2 = L x e1, so that e1 x e2 = L
+  double radius = 0;  // angular radius, radians
   double cos_radius = 1;
   double tan_radius = 0;  // radius of the disk on the light plane
   double radiance = 1;

@@ -17,10 +17,7 @@ struct SceneModel {
   LightModel light;
 
   explicit SceneModel(const Scene& s)
-      : scene(s),
-        waves(s.surface.waves),
-        camera(s.camera, s.width, s.height),
-        light(s.light) {}
+      : scene(s), waves(s.surface.waves), camera(s.camera, s.width, s.height), light(s.light) {}
 
   int width() const { return scene.width; }
   int height() const { return scene.height; }

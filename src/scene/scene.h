@@ -12,10 +12,10 @@
 namespace sg {
 
 struct Wave {
-  double amplitude = 0;     // A_i, metres
-  vec2 wave_vector{0, 0};   // (a_i, b_i), rad/m
+  double amplitude = 0;          // A_i, metres
+  vec2 wave_vector{0, 0};        // (a_i, b_i), rad/m
   double angular_frequency = 0;  // c_i, rad/s
-  double phase = 0;         // phi_i, rad
+  double phase = 0;              // phi_i, rad
 };
 
 enum class Geometry { flat, displaced };

@@ -76,7 +76,8 @@ class ObjectReader {
       if (v == o) return v;
     }
     std::string list;
-    for (const auto& o : options) list += (list.empty() ? "\"" : ", \"") + o + "\"";
+    for (const auto& o : options)
+      list += (list.empty() ? "\"" : ", \"") + o + "\"";
     fail(key_path(key), "must be one of " + list + " (got \"" + v + "\")");
   }
 
@@ -88,7 +89,8 @@ class ObjectReader {
       fail(p, "must be an array of " + std::to_string(N) + " numbers");
     }
     glm::vec<N, double> out;
-    for (int k = 0; k < N; ++k) out[k] = as_number(v[k], p + "[" + std::to_string(k) + "]");
+    for (int k = 0; k < N; ++k)
+      out[k] = as_number(v[k], p + "[" + std::to_string(k) + "]");
     return out;
   }
 
@@ -170,7 +172,7 @@ SurfaceDesc read_surface(ObjectReader o) {
                    ? Geometry::flat
                    : Geometry::displaced;
   s.fresnel = o.choice_or("fresnel", {"none", "schlick"}, "none") == "none" ? FresnelMode::none
-                                                                           : FresnelMode::schlick;
+                                                                            : FresnelMode::schlick;
   s.sea_radiance = o.number_or("sea_radiance", 0.0);
   require(s.sea_radiance >= 0, o.key_path("sea_radiance"), "must be >= 0");
   const std::string wpath = o.key_path("waves");
@@ -235,7 +237,8 @@ class ErrorLocator : public nlohmann::json_sax<json> {
     return true;
   }
   bool end_array() override { return end(); }
-  bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) override {
+  bool parse_error(std::size_t pos, const std::string&,
+                   const nlohmann::detail::exception& e) override {
     position = pos;
     reason = e.id == 406 ? "number out of range" : "";
     return false;
@@ -288,11 +291,10 @@ Scene parse_scene(const std::string& text, const std::string& name) {
   try {
     ObjectReader top(j, "");
     const std::string format = top.string("format");
-    require(format == kFormat, "format", std::string("must be \"") + kFormat + "\" (got \"" +
-                                             format + "\")");
+    require(format == kFormat, "format",
+            std::string("must be \"") + kFormat + "\" (got \"" + format + "\")");
     Scene s;
-    s.name = top.has("name") ? top.string("name")
-                             : std::filesystem::path(name).stem().string();
+    s.name = top.has("name") ? top.string("name") : std::filesystem::path(name).stem().string();
     {
       ObjectReader img = top.object("image");
       s.width = img.integer("width");
@@ -320,7 +322,9 @@ Scene parse_scene(const std::string& text, const std::string& name) {
   }
 }
 
-Scene load_scene(const std::string& path) { return parse_scene(read_file(path), path); }
+Scene load_scene(const std::string& path) {
+  return parse_scene(read_file(path), path);
+}
 
 std::string scene_to_json(const Scene& s) {
   auto v3 = [](const vec3& v) { return json::array({v.x, v.y, v.z}); };

@@ -65,8 +65,8 @@ const BadCase kBad[] = {
 class BadScene : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(BadScene, RejectedWithKeyAndRule) {
-  const std::string path = std::string(SG_SOURCE_DIR) + "/tests/scenes/bad/" + GetParam().file +
-                           ".json";
+  const std::string path =
+      std::string(SG_SOURCE_DIR) + "/tests/scenes/bad/" + GetParam().file + ".json";
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   try {
     load_scene(path);
@@ -85,7 +85,8 @@ TEST(SceneLoad, EveryBadFixtureHasAnExpectedMessage) {
        std::filesystem::directory_iterator(std::string(SG_SOURCE_DIR) + "/tests/scenes/bad")) {
     ++files;
     bool listed = false;
-    for (const auto& c : kBad) listed |= e.path().stem() == c.file;
+    for (const auto& c : kBad)
+      listed |= e.path().stem() == c.file;
     EXPECT_TRUE(listed) << e.path();
   }
   EXPECT_EQ(files, static_cast<int>(std::size(kBad)));

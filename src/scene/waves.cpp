@@ -19,7 +19,8 @@ WaveField::WaveField(const std::vector<Wave>& waves) {
 
 double WaveField::height(double x, double z, double t) const {
   double h = 0;
-  for (size_t i = 0; i < size(); ++i) h += A[i] * std::sin(a[i] * x + b[i] * z + c[i] * t + phi[i]);
+  for (size_t i = 0; i < size(); ++i)
+    h += A[i] * std::sin(a[i] * x + b[i] * z + c[i] * t + phi[i]);
   return h;
 }
 
@@ -44,8 +45,7 @@ Hessian WaveField::hessian(double x, double z, double t) const {
   return H;
 }
 
-vec2 WaveField::gradient_weighted(double x, double z, double t,
-                                  std::span<const double> w) const {
+vec2 WaveField::gradient_weighted(double x, double z, double t, std::span<const double> w) const {
   assert(w.size() == size());
   double gx = 0, gz = 0;
   for (size_t i = 0; i < size(); ++i) {
@@ -57,8 +57,7 @@ vec2 WaveField::gradient_weighted(double x, double z, double t,
   return {gx, gz};
 }
 
-Hessian WaveField::hessian_weighted(double x, double z, double t,
-                                    std::span<const double> w) const {
+Hessian WaveField::hessian_weighted(double x, double z, double t, std::span<const double> w) const {
   assert(w.size() == size());
   Hessian H;
   for (size_t i = 0; i < size(); ++i) {

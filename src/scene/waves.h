@@ -48,6 +48,8 @@ class WaveField {
 };
 
 // The unit normal of the spec for a height gradient g = (dh/dx, dh/dz).
-inline vec3 normal_from_gradient(vec2 g) { return normalize(vec3(-g.x, 1.0, -g.y)); }
+inline vec3 normal_from_gradient(vec2 g) {
+  return normalize(vec3(-g.x, 1.0, -g.y));
+}
 
 }  // namespace sg

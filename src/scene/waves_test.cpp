@@ -12,7 +12,9 @@
 namespace sg {
 namespace {
 
-WaveField medium_field() { return WaveField(testing::project_scene("medium").surface.waves); }
+WaveField medium_field() {
+  return WaveField(testing::project_scene("medium").surface.waves);
+}
 
 TEST(Waves, GradientMatchesCentralDifferences) {
   WaveField w = medium_field();
@@ -50,7 +52,8 @@ TEST(Waves, WeightsScaleEachWave) {
   auto waves = testing::project_scene("simple").surface.waves;
   WaveField all(waves);
   std::vector<double> weights = {1.0, 0.0, 0.25, 1.0, 0.5};
-  for (size_t i = 0; i < waves.size(); ++i) waves[i].amplitude *= weights[i];
+  for (size_t i = 0; i < waves.size(); ++i)
+    waves[i].amplitude *= weights[i];
   WaveField scaled(waves);
   for (double x : {-3.0, 0.5, 17.0}) {
     vec2 a = all.gradient_weighted(x, -20, 1.3, weights), b = scaled.gradient(x, -20, 1.3);

@@ -23,7 +23,9 @@ namespace sg {
 inline constexpr double kSchlickR0 = 0.02;
 
 // r = 2 (n . v) n - v
-inline vec3 reflect_view(const vec3& n, const vec3& v) { return 2.0 * dot(n, v) * n - v; }
+inline vec3 reflect_view(const vec3& n, const vec3& v) {
+  return 2.0 * dot(n, v) * n - v;
+}
 
 // Schlick's approximation (scene spec 4). n_dot_v is clamped to [0, 1].
 inline double fresnel_schlick(double n_dot_v) {
@@ -58,7 +60,9 @@ inline double water_radiance(const SceneModel& m, const vec3& nm, const vec3& v)
 }
 
 // The (unnormalised) normal (-dh/dx, 1, -dh/dz) of the scene spec for gradient g.
-inline vec3 normal_direction(vec2 g) { return vec3(-g.x, 1.0, -g.y); }
+inline vec3 normal_direction(vec2 g) {
+  return vec3(-g.x, 1.0, -g.y);
+}
 
 // The expected radiance when a fraction `in_light` of the footprint and shutter reflects
 // into the light disk, `below` reflects below the horizon and the rest sees the sky;

@@ -18,9 +18,9 @@ TEST(Radiance, MirrorReflectionLaw) {
     vec3 v = normalize(vec3(rng.uniform() - 0.5, rng.uniform(), rng.uniform() - 0.5));
     vec3 r = reflect_view(n, v);
     EXPECT_NEAR(length(r), 1, 1e-14);
-    EXPECT_NEAR(dot(r, n), dot(v, n), 1e-14);                   // equal angles
-    EXPECT_NEAR(dot(cross(v, n), r), 0, 1e-14);                 // coplanar
-    EXPECT_LT(length(reflect_view(n, r) - v), 1e-14);           // involution
+    EXPECT_NEAR(dot(r, n), dot(v, n), 1e-14);          // equal angles
+    EXPECT_NEAR(dot(cross(v, n), r), 0, 1e-14);        // coplanar
+    EXPECT_LT(length(reflect_view(n, r) - v), 1e-14);  // involution
   }
 }
 
@@ -29,7 +29,8 @@ TEST(Radiance, SchlickEndpointsAndMonotone) {
   EXPECT_DOUBLE_EQ(fresnel_schlick(0.0), 1.0);
   EXPECT_DOUBLE_EQ(fresnel_schlick(-0.3), 1.0);  // clamped
   EXPECT_NEAR(fresnel_schlick(0.5), 0.02 + 0.98 * std::pow(0.5, 5), 1e-15);
-  for (double c = 0; c < 1; c += 0.01) EXPECT_GT(fresnel_schlick(c), fresnel_schlick(c + 0.01));
+  for (double c = 0; c < 1; c += 0.01)
+    EXPECT_GT(fresnel_schlick(c), fresnel_schlick(c + 0.01));
   EXPECT_DOUBLE_EQ(fresnel(FresnelMode::none, 0.3), 1.0);
 }
 

@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# End-to-end checks of the `sunglint` command line, as a user meets it: every bad input
+# exits non-zero with a message naming its culprit and leaves no output file; the same
+# command twice writes the same bytes.
+# Usage: cli_test.sh SUNGLINT SOURCE_DIR WORK_DIR
+set -u
+bin=$1 src=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+scene=$src/scenes/simple.json
+fails=0 passes=0
+
+# expect_fail NAME PATTERN CMD...: the command must exit non-zero and print PATTERN.
+expect_fail() {
+  local name=$1 pattern=$2
+  shift 2
+  local out rc
+  out=$("$@" 2>&1)
+  rc=$?
+  if [ $rc -ne 0 ] && grep -qF -- "$pattern" <<<"$out"; then
+    passes=$((passes + 1))
+  else
+    echo "FAIL $name: rc=$rc, wanted '$pattern', got: $out"
+    fails=$((fails + 1))
+  fi
+}
+expect_ok() {
+  local name=$1
+  shift
+  local out
+  if out=$("$@" 2>&1); then
+    passes=$((passes + 1))
+  else
+    echo "FAIL $name: $out"
+    fails=$((fails + 1))
+  fi
+}
+expect_no_file() {
+  if [ -e "$2" ] || compgen -G "$2.tmp*" >/dev/null; then
+    echo "FAIL $1: $2 (or a temporary) was left behind"
+    fails=$((fails + 1))
+  else
+    passes=$((passes + 1))
+  fi
+}
+
+expect_fail "unknown method" "--method: unknown method 'nope'" \
+  "$bin" render "$scene" --method nope --out "$work/a.exr"
+expect_no_file "unknown method" "$work/a.exr"
+expect_fail "bad samples" "--samples: expected SxSxT" \
+  "$bin" render "$scene" -m reference --samples 8x8 --out "$work/a.exr"
+expect_fail "bad extension" "unknown image format '.jpg'" \
+  "$bin" render "$scene" -m point --out "$work/a.jpg"
+expect_no_file "bad extension" "$work/a.jpg"
+expect_fail "missing scene" "missing.json: cannot read" \
+  "$bin" render "$work/missing.json" -m point --out "$work/a.exr"
+expect_fail "bad scene names key" "surface.waves[3].amplitude: must be >= 0" \
+  "$bin" render "$src/tests/scenes/bad/amplitude_negative.json" -m point --out "$work/a.exr"
+expect_fail "frame out of range" "--frame: frame 60 is outside the animation [0, 59]" \
+  "$bin" render "$scene" -m point --frame 60 --out "$work/a.exr"
+expect_fail "unwritable output" "does not exist" \
+  "$bin" render "$scene" -m point --width 16 --out "$work/no/such/dir/a.exr"
+expect_fail "bad width" "--width" \
+  "$bin" render "$scene" -m point --width 0 --out "$work/a.exr"
+expect_fail "unknown flag" "--bogus" "$bin" render "$scene" -m point --bogus --out "$work/a.exr"
+expect_fail "sequence needs a pattern" "exactly one frame number conversion" \
+  "$bin" render "$scene" -m point --frames 0-2 --out "$work/a.exr"
+expect_fail "bad frame range" "--frames: expected a frame range A-B" \
+  "$bin" render "$scene" -m point --frames 3-1 --out "$work/f_%02d.exr"
+expect_fail "no subcommand" "A subcommand is required" "$bin"
+expect_fail "diff sizes" "image sizes differ" bash -c \
+  "'$bin' render '$scene' -m point --width 16 -q --out '$work/s16.exr' && \
+   '$bin' render '$scene' -m point --width 32 -q --out '$work/s32.exr' && \
+   '$bin' diff '$work/s16.exr' '$work/s32.exr'"
+expect_fail "diff missing file" "nothere.exr: cannot read" "$bin" diff "$work/nothere.exr" "$work/s16.exr"
+expect_fail "diff png input" "PNG files are pictures" "$bin" diff "$work/x.png" "$work/s16.exr"
+
+# Help exists for every subcommand.
+for sub in render diff info bench; do
+  expect_ok "help $sub" "$bin" "$sub" --help
+done
+
+# Determinism: the same command twice gives the same bytes (two thread counts).
+expect_ok "render 1" "$bin" render "$scene" -m reference --samples 2x2x2 --width 96 -j 1 -q --out "$work/r1.exr"
+expect_ok "render 2" "$bin" render "$scene" -m reference --samples 2x2x2 --width 96 -j 2 -q --out "$work/r2.exr"
+expect_ok "render 3 pfm" "$bin" render "$scene" -m reference --samples 2x2x2 --width 96 -q --out "$work/r3.pfm"
+expect_ok "render 4 pfm" "$bin" render "$scene" -m reference --samples 2x2x2 --width 96 -q --out "$work/r4.pfm"
+if cmp -s "$work/r1.exr" "$work/r2.exr" && cmp -s "$work/r3.pfm" "$work/r4.pfm"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL determinism: outputs differ"
+  fails=$((fails + 1))
+fi
+
+# Sequences and their metrics.
+expect_ok "sequence" "$bin" render "$scene" -m point --frames 0-2 --width 48 -q --out "$work/p_%02d.pfm"
+expect_ok "sequence ref" "$bin" render "$scene" -m supersample --samples 2x2x2 --frames 0-2 --width 48 -q --out "$work/s_%02d.pfm"
+out=$("$bin" diff "$work/p_%02d.pfm" "$work/s_%02d.pfm" --frames 0-2 --json 2>&1)
+if grep -q '"temporal_error"' <<<"$out" && grep -q '"flicker_b"' <<<"$out"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL sequence diff: $out"
+  fails=$((fails + 1))
+fi
+expect_ok "diff picture" "$bin" diff "$work/r1.exr" "$work/r3.pfm" --out "$work/d.png"
+[ -s "$work/d.png" ] && passes=$((passes + 1)) || { echo "FAIL diff picture missing"; fails=$((fails + 1)); }
+expect_ok "info" "$bin" info "$scene" --waves
+expect_ok "info json" "$bin" info "$scene" --json
+
+echo "$passes passed, $fails failed"
+[ $fails -eq 0 ]
