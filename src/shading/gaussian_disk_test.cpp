@@ -1,0 +1,94 @@
+// The mass of a 2D Gaussian in a disk against direct 2D quadrature.
+#include "shading/gaussian_disk.h"
+
+#include <gtest/gtest.h>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+
+#include "math/rng.h"
+
+namespace sg {
+namespace {
+
+// Direct integration of the density over the disk in polar coordinates about the disk's
+// centre (adaptive Gauss-Kronrod in both variables).
+double brute_mass(const vec2& mean, const mat2& cov, double R) {
+  const mat2 inv = glm::inverse(cov);
+  const double norm = 1.0 / (kTwoPi * std::sqrt(glm::determinant(cov)));
+  using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
+  auto ring = [&](double rho) {
+    auto f = [&](double phi) {
+      vec2 d = vec2(rho * std::cos(phi), rho * std::sin(phi)) - mean;
+      return std::exp(-0.5 * dot(d, inv * d));
+    };
+    return rho * GK::integrate(f, 0, kTwoPi, 12, 1e-12);
+  };
+  return norm * GK::integrate(ring, 0, R, 12, 1e-11);
+}
+
+TEST(GaussianDisk, PrincipalAxes) {
+  mat2 c(vec2(4, 1.5), vec2(1.5, 1));
+  PrincipalAxes p = principal_axes(c);
+  EXPECT_NEAR(p.s1 * p.s1 + p.s2 * p.s2, 5, 1e-12);
+  EXPECT_NEAR(sqr(p.s1 * p.s2), 4 - 2.25, 1e-12);
+  vec2 cu = c * p.u;
+  EXPECT_NEAR(cu.x, p.s1 * p.s1 * p.u.x, 1e-12);
+  EXPECT_NEAR(cu.y, p.s1 * p.s1 * p.u.y, 1e-12);
+  PrincipalAxes iso = principal_axes(mat2(2.0));
+  EXPECT_NEAR(iso.s1, std::sqrt(2.0), 1e-15);
+  EXPECT_NEAR(iso.s2, std::sqrt(2.0), 1e-15);
+}
+
+TEST(GaussianDisk, MatchesQuadrature) {
+  Pcg32 rng(21, 3);
+  double worst = 0;
+  for (int k = 0; k < 60; ++k) {
+    const double R = 0.5 + rng.uniform();
+    const double s1 = R * std::exp(3 * (rng.uniform() - 0.5) * 2);  // 0.05 R .. 20 R
+    const double s2 = s1 * (0.05 + 0.95 * rng.uniform());
+    const double ang = kPi * rng.uniform();
+    const vec2 u(std::cos(ang), std::sin(ang)), w(-u.y, u.x);
+    const mat2 cov = s1 * s1 * glm::outerProduct(u, u) + s2 * s2 * glm::outerProduct(w, w);
+    const vec2 mean = (R + 2 * s1) * 1.5 * vec2(rng.uniform() - 0.5, rng.uniform() - 0.5);
+    const double a = gaussian_disk_mass(mean, cov, R), b = brute_mass(mean, cov, R);
+    worst = std::max(worst, std::fabs(a - b));
+    EXPECT_NEAR(a, b, 1e-7) << "R " << R << " s1 " << s1 << " s2 " << s2;
+  }
+  std::printf("max |quadrature - brute| = %.2e\n", worst);
+}
+
+TEST(GaussianDisk, DegenerateAndLimitingCases) {
+  // Rank one: all mass on a line through the mean along u; the mass is the 1D Gaussian's
+  // share of the chord.
+  const vec2 u = normalize(vec2(1, 2));
+  const mat2 line = 0.25 * glm::outerProduct(u, u);  // s1 = 0.5
+  const vec2 mean(0.3, -0.1);
+  const double c = dot(-mean, u), w = dot(-mean, vec2(-u.y, u.x));
+  const double h = std::sqrt(1 - w * w);  // chord half-length in the unit disk
+  const double expect = 0.5 * (std::erf((c + h) / (0.5 * std::sqrt(2.0))) -
+                               std::erf((c - h) / (0.5 * std::sqrt(2.0))));
+  EXPECT_NEAR(gaussian_disk_mass(mean, line, 1.0), expect, 1e-9);
+  // A point: the indicator of the disk.
+  EXPECT_EQ(gaussian_disk_mass(vec2(0.5, 0.5), mat2(0.0), 1.0), 1.0);
+  EXPECT_EQ(gaussian_disk_mass(vec2(1.5, 0.0), mat2(0.0), 1.0), 0.0);
+  // Very wide: density at the centre times the disk's area.
+  const double s = 300;
+  EXPECT_NEAR(gaussian_disk_mass(vec2(0), mat2(s * s), 1.0), kPi / (kTwoPi * s * s), 1e-9);
+  // Narrow, well inside or outside.
+  EXPECT_NEAR(gaussian_disk_mass(vec2(0.2, 0), mat2(1e-6), 1.0), 1.0, 1e-12);
+  EXPECT_NEAR(gaussian_disk_mass(vec2(1.2, 0), mat2(1e-6), 1.0), 0.0, 1e-12);
+}
+
+TEST(GaussianDisk, RiemannSumConvergesToTheQuadrature) {
+  const mat2 cov(vec2(0.3, 0.1), vec2(0.1, 0.05));
+  const vec2 mean(0.4, 0.2);
+  const double exact = gaussian_disk_mass(mean, cov, 1.0);
+  const double e16 = std::fabs(gaussian_disk_mass_riemann(mean, cov, 1.0, 16) - exact);
+  const double e64 = std::fabs(gaussian_disk_mass_riemann(mean, cov, 1.0, 64) - exact);
+  EXPECT_LT(e64, 2e-3);
+  EXPECT_LT(e64, e16);
+}
+
+}  // namespace
+}  // namespace sg

@@ -1,0 +1,34 @@
+// From normals to reflections (Podee et al. 2021, Sec. 3.4, Eqs. 8-16).
+//
+// A point n = (n_x, n_z) of the NDF plane is the normal m = (n_x, 1, n_z); it reflects the
+// view direction v into
+//     r(n) = 2 (n^ . v) n^ - v = 2 (m . v) / (m . m) m - v           (Eqs. 9-10)
+// which meets the light plane at Phi(n) = r / (r . L) (Eq. 8), with 2D coordinates
+// (r . e1, r . e2) / (r . L) in the light plane's frame (scene/light.h). Phi is
+// linearised at the NDF's centre n_c (Eq. 11): Phi(n) ~ Phi(n_c) + J_c (n - n_c), with
+// the 2x2 Jacobian J_c (Eq. 12) computed analytically here (chain rule through r and the
+// projection; tested against finite differences). A Gaussian NDF of covariance Sigma then
+// maps to a Gaussian RDF of covariance Sigma_r = J_c Sigma J_c^T (Eq. 16) centred at
+// Phi(n_c).
+#pragma once
+
+#include "math/vec.h"
+#include "scene/light.h"
+
+namespace sg {
+
+// The reflection r(n) (unit) of unit view direction v about the normal (n.x, 1, n.y).
+vec3 reflect_about_ndf_point(const vec2& n, const vec3& v);
+
+// Phi(n) in light-plane coordinates (meaningful when r . L > 0).
+vec2 ndf_to_light_plane(const vec2& n, const vec3& v, const LightModel& light);
+
+// J_c = dPhi/dn at n (Eq. 12); columns are dPhi/dn_x and dPhi/dn_z.
+mat2 ndf_to_light_plane_jacobian(const vec2& n, const vec3& v, const LightModel& light);
+
+// Eq. 16.
+inline mat2 rdf_covariance(const mat2& J, const mat2& ndf_cov) {
+  return J * ndf_cov * glm::transpose(J);
+}
+
+}  // namespace sg
