@@ -7,6 +7,7 @@
 #include "base/error.h"
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/method_flags.h"
 #include "cli/progress.h"
 #include "engine/render.h"
 #include "image/image_io.h"
@@ -17,14 +18,14 @@ namespace sg {
 namespace {
 
 struct RenderArgs {
-  std::string scene_path, method = "", out, frames, samples = "8x8x8";
+  std::string scene_path, method = "", out, frames;
   int frame = 0, width = 0, height = 0, threads = 0;
-  uint64_t seed = 0;
   double exposure = 0;
   bool quiet = false;
+  MethodFlags flags;
 };
 
-void run_render(const RenderArgs& a) {
+void run_render(RenderArgs& a) {
   Scene scene = load_scene(a.scene_path);
   if (a.width > 0 || a.height > 0) {
     int w = a.width, h = a.height;
@@ -44,16 +45,15 @@ void run_render(const RenderArgs& a) {
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
   image_format_of(out_path(range.first));  // fails early on a bad pattern or extension
 
-  MethodOptions opt;
-  opt.samples = parse_sample_counts(a.samples, "--samples");
-  opt.seed = a.seed;
+  a.flags.finish();
+  const MethodOptions& opt = a.flags.options;
   std::unique_ptr<Method> method = make_method(a.method, opt);
   SceneModel model(scene);
 
   ProgressBar bar(a.method, !a.quiet);
   RenderSettings rs;
   rs.threads = a.threads;
-  rs.seed = a.seed;
+  rs.seed = opt.seed;
   const long frames = range.count();
   long frames_done = 0;
   rs.progress = [&](long done, long total) {
@@ -90,8 +90,6 @@ void add_render_command(CLI::App& app) {
   auto* frame = c->add_option("--frame,-f", a->frame, "Frame to render (default 0)");
   c->add_option("--frames", a->frames, "Render a range of frames A-B (use a pattern in --out)")
       ->excludes(frame);
-  c->add_option("--samples", a->samples, "Samples SxSxT for reference and supersample")
-      ->capture_default_str();
   c->add_option("--width", a->width,
                 "Override the image width (height follows the aspect "
                 "ratio unless given)")
@@ -99,7 +97,7 @@ void add_render_command(CLI::App& app) {
   c->add_option("--height", a->height, "Override the image height")->check(CLI::Range(1, 16384));
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024));
-  c->add_option("--seed", a->seed, "Seed of the sampling streams")->capture_default_str();
+  add_method_flags(*c, a->flags);
   c->add_option("--exposure", a->exposure, "Exposure in stops for .png output")
       ->capture_default_str();
   c->add_flag("--quiet,-q", a->quiet, "No progress bar");

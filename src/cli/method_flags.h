@@ -1,0 +1,33 @@
+// The flags that configure methods, defined once: `render` adds them to its command line,
+// and `compare` parses each method variant it is given ("staa --ndf per-pixel") with the
+// same definitions, so a flag means the same thing everywhere.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+
+#include "methods/options.h"
+
+namespace sg {
+
+// Storage for the flags' raw values; `finish` converts them into MethodOptions.
+struct MethodFlags {
+  std::string samples = "8x8x8";
+  MethodOptions options;
+  void finish(const std::string& context = "");
+};
+
+void add_method_flags(CLI::App& app, MethodFlags& flags);
+
+// A method variant as `compare` takes it: "NAME [FLAGS...]", e.g.
+// "supersample --samples 6x6x1". Returns the method name and its options; throws
+// sg::Error naming the variant on a bad flag.
+struct MethodVariant {
+  std::string label;  // the text as given, used in tables and file names
+  std::string name;
+  MethodOptions options;
+};
+MethodVariant parse_method_variant(const std::string& text);
+
+}  // namespace sg
