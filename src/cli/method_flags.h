@@ -14,6 +14,8 @@ namespace sg {
 // Storage for the flags' raw values; `finish` converts them into MethodOptions.
 struct MethodFlags {
   std::string samples = "8x8x8";
+  std::string ndf = "per-pixel", ndf_mean = "shift", fallback = "quadrature", nyquist = "max";
+  std::string fallback_time = "path";
   MethodOptions options;
   void finish(const std::string& context = "");
 };

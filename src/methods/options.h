@@ -18,9 +18,37 @@ struct SampleCounts {
 SampleCounts parse_sample_counts(const std::string& text, const std::string& flag);
 std::string to_string(const SampleCounts& s);
 
+enum class NdfMode { uniform, per_pixel };
+enum class FallbackMode { quadrature, riemann };
+
+// The choices of the paper's method (Podee et al. 2021) that `staa` and `staa-temporal`
+// expose; defaults chosen by measurement (docs/results.md).
+struct StaaOptions {
+  int segments = 1;  // --segments K: sub-arcs of the shutter interval (Sec. 3.5)
+  // --ndf uniform|per-pixel: Eq. 3 or Eqs. 4-7 with Appendix A.
+  NdfMode ndf = NdfMode::per_pixel;
+  // --ndf-mean shift|none: whether the per-pixel mean slope of the aliasing waves (B)
+  // shifts the NDF's centre.
+  bool ndf_mean_shift = true;
+  int kernels = 9;  // --kernels 1|3|5|9: circular Gaussians for the RDF (Sec. 3.5, 3.6)
+  // --elongation-threshold X: ratio of the RDF's axes past which the fallback renders
+  // (0: the paper's threshold, the kernel count, for 3, 5 or 9 kernels; none for the
+  // circular approximation of Sec. 3.5, which the paper uses at any elongation).
+  double elongation_threshold = 0;
+  FallbackMode fallback = FallbackMode::quadrature;  // --fallback quadrature|riemann
+  // --fallback-time path|current: the fallback averaged along the reflection path, or at
+  // the display time only (the paper: "We ignore the temporal integration in our fallback").
+  bool fallback_along_path = true;
+  int riemann_cells = 32;                            // --riemann-cells N (per disk diameter)
+  double alias_start = 0.2;                          // --alias-start (cycles per pixel, Eq. 20)
+  double alias_end = 0.5;                            // --alias-end
+  bool nyquist_max_axis = true;                      // --nyquist max|norm (shading/aliasing.h)
+};
+
 struct MethodOptions {
   SampleCounts samples{8, 8, 8};  // --samples, for reference and supersample
   uint64_t seed = 0;              // --seed: the sampling streams (rng.h)
+  StaaOptions staa;
 };
 
 }  // namespace sg

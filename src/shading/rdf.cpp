@@ -11,24 +11,35 @@ vec2 ndf_to_light_plane(const vec2& n, const vec3& v, const LightModel& light) {
   return light.to_plane(reflect_about_ndf_point(n, v));
 }
 
-mat2 ndf_to_light_plane_jacobian(const vec2& n, const vec3& v, const LightModel& light) {
-  const vec3 m(n.x, 1.0, n.y);
+glm::dmat3x2 light_plane_jacobian(const vec3& r, const LightModel& light) {
+  // P(r) = (r.e1, r.e2) / (r.L): dP_i/dr = (e_i (r.L) - (r.e_i) L) / (r.L)^2.
+  const double rl = dot(r, light.L), inv = 1.0 / (rl * rl);
+  const vec3 row1 = (light.e1 * rl - dot(r, light.e1) * light.L) * inv;
+  const vec3 row2 = (light.e2 * rl - dot(r, light.e2) * light.L) * inv;
+  return glm::dmat3x2(vec2(row1.x, row2.x), vec2(row1.y, row2.y), vec2(row1.z, row2.z));
+}
+
+mat3 reflection_jacobian_normal(const vec3& m, const vec3& v) {
+  // dr/dm_j = 2 [v_j m + (m.v) e_j] / (m.m) - 4 (m.v) m_j m / (m.m)^2
   const double mm = dot(m, m), mv = dot(m, v);
-  const vec3 r = (2.0 * mv / mm) * m - v;
-  // dr/dm_j = 2 [v_j m + (m.v) e_j] / (m.m) - 4 (m.v) m_j m / (m.m)^2, for j = x, z.
-  auto dr = [&](int j) {
+  mat3 J(0.0);
+  for (int j = 0; j < 3; ++j) {
     vec3 e(0.0);
     e[j] = 1.0;
-    return (2.0 / mm) * (v[j] * m + mv * e) - (4.0 * mv * m[j] / (mm * mm)) * m;
-  };
-  // P(r) = (r.e1, r.e2) / (r.L): dP = ((dr.e1) (r.L) - (r.e1)(dr.L)) / (r.L)^2, same for e2.
-  const double rl = dot(r, light.L), r1 = dot(r, light.e1), r2 = dot(r, light.e2);
-  auto dP = [&](const vec3& d) {
-    const double dl = dot(d, light.L);
-    return vec2((dot(d, light.e1) * rl - r1 * dl) / (rl * rl),
-                (dot(d, light.e2) * rl - r2 * dl) / (rl * rl));
-  };
-  return mat2(dP(dr(0)), dP(dr(2)));
+    J[j] = (2.0 / mm) * (v[j] * m + mv * e) - (4.0 * mv * m[j] / (mm * mm)) * m;
+  }
+  return J;
+}
+
+mat3 reflection_jacobian_view(const vec3& m) {
+  return (2.0 / dot(m, m)) * glm::outerProduct(m, m) - mat3(1.0);
+}
+
+mat2 ndf_to_light_plane_jacobian(const vec2& n, const vec3& v, const LightModel& light) {
+  const vec3 m(n.x, 1.0, n.y);
+  const vec3 r = (2.0 * dot(m, v) / dot(m, m)) * m - v;
+  const glm::dmat3x2 JP = light_plane_jacobian(r, light) * reflection_jacobian_normal(m, v);
+  return mat2(JP[0], JP[2]);  // columns for m.x = n.x and m.z = n.y
 }
 
 }  // namespace sg

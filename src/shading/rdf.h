@@ -26,6 +26,14 @@ vec2 ndf_to_light_plane(const vec2& n, const vec3& v, const LightModel& light);
 // J_c = dPhi/dn at n (Eq. 12); columns are dPhi/dn_x and dPhi/dn_z.
 mat2 ndf_to_light_plane_jacobian(const vec2& n, const vec3& v, const LightModel& light);
 
+// The pieces of the chain rule, also used for the pixel-footprint term (footprint AA):
+// d(light-plane point)/d(direction r), a 2x3 matrix (3 columns, 2 rows; any length of r);
+glm::dmat3x2 light_plane_jacobian(const vec3& r, const LightModel& light);
+// d r / d m for r = 2 (m.v)/(m.m) m - v with respect to the (unnormalised) normal m;
+mat3 reflection_jacobian_normal(const vec3& m, const vec3& v);
+// d r / d v with respect to the view direction v: 2 m m^T / (m.m) - I.
+mat3 reflection_jacobian_view(const vec3& m);
+
 // Eq. 16.
 inline mat2 rdf_covariance(const mat2& J, const mat2& ndf_cov) {
   return J * ndf_cov * glm::transpose(J);

@@ -41,6 +41,23 @@ TEST(Rdf, JacobianMatchesFiniteDifferences) {
   }
 }
 
+TEST(Rdf, ViewJacobianMatchesFiniteDifferences) {
+  LightModel light(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, 1, false});
+  const vec3 m(0.05, 1.0, -0.12);
+  auto plane_of = [&](const vec3& v) {
+    return light.to_plane((2.0 * dot(m, v) / dot(m, m)) * m - v);
+  };
+  const vec3 v = normalize(vec3(0.02, 0.1, 1.0));
+  const vec3 r = (2.0 * dot(m, v) / dot(m, m)) * m - v;
+  const glm::dmat3x2 J = light_plane_jacobian(r, light) * reflection_jacobian_view(m);
+  for (int c = 0; c < 3; ++c) {
+    vec3 h(0.0);
+    h[c] = 1e-6;
+    vec2 fd = (plane_of(v + h) - plane_of(v - h)) / 2e-6;
+    EXPECT_LT(length(J[c] - fd), 1e-6 * (1 + length(fd))) << c;
+  }
+}
+
 TEST(Rdf, MassInTheDiskMatchesMonteCarloForModerateVariances) {
   // The shared scenes' light (radius 0.27 degrees), a grazing view, and slope
   // distributions whose reflections spread from 0.3 to 3 disk radii. Normals are sampled

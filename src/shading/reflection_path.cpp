@@ -1,0 +1,40 @@
+#include "shading/reflection_path.h"
+
+#include "shading/arc.h"
+#include "shading/radiance.h"
+
+namespace sg {
+
+void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameTime& ft,
+                     int segments, std::span<const double> weights, ReflectionPath& path) {
+  const int K = std::max(1, segments);
+  path.view = fp.view;
+  path.xz = vec2(fp.point.x, fp.point.z);
+  path.times.resize(K + 1);
+  path.gradients.resize(K + 1);
+  path.normals.resize(K + 1);
+  path.reflections.resize(K + 1);
+  for (int k = 0; k <= K; ++k) {
+    const double t = ft.start + ft.duration() * k / K;
+    const vec2 g = weights.empty() ? m.waves.gradient(path.xz.x, path.xz.y, t)
+                                   : m.waves.gradient_weighted(path.xz.x, path.xz.y, t, weights);
+    path.times[k] = t;
+    path.gradients[k] = g;
+    path.normals[k] = normal_from_gradient(g);
+    path.reflections[k] = reflect_view(path.normals[k], path.view);
+  }
+}
+
+double temporal_value(const SceneModel& m, const ReflectionPath& path) {
+  const FresnelMode mode = m.scene.surface.fresnel;
+  double sum = 0;
+  for (int k = 0; k < path.segments(); ++k) {
+    ArcFractions f = arc_fractions(path.reflections[k], path.reflections[k + 1], m.light);
+    const double F = 0.5 * (fresnel(mode, dot(path.normals[k], path.view)) +
+                            fresnel(mode, dot(path.normals[k + 1], path.view)));
+    sum += combine_radiance(m, F, f.in_light, f.below);
+  }
+  return sum / path.segments();
+}
+
+}  // namespace sg

@@ -1,0 +1,45 @@
+// The reflection path of a pixel (Podee et al. 2021, Sec. 3.3, Fig. 1 and 4): the point
+// of the water seen through the pixel centre, and the reflection of the view direction
+// about the normal of the resolved waves at K + 1 instants of the frame's shutter
+// interval, t_k = start + k (end - start) / K. Consecutive instants bound the K sub-arcs
+// ("dividing the frame time into subintervals", Sec. 3.5); K = 1 is the paper's path from
+// the previous frame's reflection to the current one.
+//
+// The normals come from the waves weighted by w_i (1 for staa-temporal; 1 - alpha_i, the
+// resolved share, for staa). On displaced water the point is the first hit at the display
+// time t_f and its horizontal position is kept for the whole interval (the paper samples
+// "a single point on the water surface corresponding to the pixel center").
+//
+// temporal_value: the temporal method (Sec. 3.3) on a path: for each sub-arc, the
+// fractions of time in the light disk and below the horizon (shading/arc.h, exact for a
+// constant-speed great-circle arc), combined into the spec's radiance with the sub-arc's
+// mean Fresnel factor, and averaged over the sub-arcs.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "math/vec.h"
+#include "scene/footprint.h"
+#include "scene/model.h"
+
+namespace sg {
+
+struct ReflectionPath {
+  vec3 view{0};                 // unit, towards the camera
+  vec2 xz{0};                   // the surface point
+  std::vector<double> times;    // K + 1 instants
+  std::vector<vec2> gradients;  // weighted (dh/dx, dh/dz) at each instant
+  std::vector<vec3> normals;    // unit normals
+  std::vector<vec3> reflections;  // unit reflections of the view
+  int segments() const { return static_cast<int>(times.size()) - 1; }
+};
+
+// `weights` may be empty (all waves at full amplitude).
+void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameTime& ft,
+                     int segments, std::span<const double> weights, ReflectionPath& path);
+
+// The temporal method's value for a path (Sec. 3.3).
+double temporal_value(const SceneModel& m, const ReflectionPath& path);
+
+}  // namespace sg
