@@ -2,8 +2,6 @@
 #include "base/error.h"
 #include "methods/method.h"
 #include "methods/point.h"
-#include "methods/staa.h"
-#include "methods/staa_temporal.h"
 #include "methods/supersample.h"
 
 namespace sg {
@@ -20,10 +18,6 @@ const std::vector<MethodInfo>& method_catalog() {
       {"reference", "ground truth: stratified samples over pixel and shutter (--samples, 8x8x8)"},
       {"supersample", "stratified supersampling at a chosen budget (--samples; T=1 samples t_f)"},
       {"point", "one sample at the pixel centre at t_f (no anti-aliasing)"},
-      {"staa-temporal", "Podee et al. 2021 Sec. 3.3: time in the light along the reflection path "
-                        "(--segments)"},
-      {"staa", "Podee et al. 2021: temporal path + aliasing waves as a Gaussian RDF (--ndf, "
-               "--kernels, --segments, ...)"},
   };
   return catalog;
 }
@@ -37,8 +31,6 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                               StratifiedSettings{o.samples, o.samples.st == 1});
   }
   if (name == "point") return std::make_unique<PointMethod>();
-  if (name == "staa-temporal") return std::make_unique<StaaTemporalMethod>(o.staa.segments);
-  if (name == "staa") return std::make_unique<StaaMethod>(o.staa);
   std::string list;
   for (const auto& m : method_catalog())
     list += (list.empty() ? "" : ", ") + m.name;
