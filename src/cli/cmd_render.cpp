@@ -2,7 +2,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "base/error.h"
 #include "cli/args.h"
@@ -22,6 +25,7 @@ struct RenderArgs {
   uint64_t seed = 0;
   double exposure = 0;
   bool quiet = false;
+  MethodOptions options;  // the --lean-* and --taa-* flags
 };
 
 void run_render(const RenderArgs& a) {
@@ -44,7 +48,7 @@ void run_render(const RenderArgs& a) {
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
   image_format_of(out_path(range.first));  // fails early on a bad pattern or extension
 
-  MethodOptions opt;
+  MethodOptions opt = a.options;
   opt.samples = parse_sample_counts(a.samples, "--samples");
   opt.seed = a.seed;
   std::unique_ptr<Method> method = make_method(a.method, opt);
@@ -54,26 +58,81 @@ void run_render(const RenderArgs& a) {
   RenderSettings rs;
   rs.threads = a.threads;
   rs.seed = a.seed;
-  const long frames = range.count();
+  // Frames rendered: the requested ones and a stateful method's warm-up frames before them.
+  const int warmup = warmup_frame_count(*method);
+  const long frames = range.count() + warmup;
   long frames_done = 0;
   rs.progress = [&](long done, long total) {
     bar.update(frames_done * total + done, frames * total);
+    if (done == total) ++frames_done;  // calls are serialised; each frame ends once
   };
   WriteOptions wo;
   wo.exposure = a.exposure;
   auto t0 = std::chrono::steady_clock::now();
-  render_frames(model, *method, range.first, range.last, rs, [&](int f, const Image& img) {
-    write_image(out_path(f), img, wo);
-    ++frames_done;
-  });
+  render_frames(model, *method, range.first, range.last, rs,
+                [&](int f, const Image& img) { write_image(out_path(f), img, wo); });
   bar.finish();
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%s: %s, %dx%d, frames %d-%d, %.2f s (%.1f ms per frame) -> %s\n", scene.name.c_str(),
-              method->name().c_str(), scene.width, scene.height, range.first, range.last, secs,
-              1000 * secs / frames, a.out.c_str());
+  std::printf("%s: %s, %dx%d, frames %d-%d%s, %.2f s (%.1f ms per frame) -> %s\n",
+              scene.name.c_str(), method->name().c_str(), scene.width, scene.height, range.first,
+              range.last,
+              warmup > 0 ? (" after " + std::to_string(warmup) + " warm-up frames").c_str() : "",
+              secs, 1000 * secs / frames, a.out.c_str());
 }
 
 }  // namespace
+
+void add_method_flags(CLI::App* c, MethodOptions& o) {
+  // A flag that picks one of named values: CLI11 checks the name, the callback stores it.
+  auto choice = [c](const std::string& flag, auto& field, const auto& names,
+                    const std::string& help) {
+    std::string current;
+    for (const auto& [k, v] : names) {
+      if (v == field) current = k;
+    }
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : names)
+      keys.push_back(k);
+    c->add_option_function<std::string>(
+         flag, [&field, names](const std::string& v) { field = names.at(v); }, help)
+        ->check(CLI::IsMember(keys))
+        ->default_str(current);
+  };
+  c->add_option("--lean-size", o.lean.size,
+                "lean: texels per side of the slope-moment map (a power of two)")
+      ->capture_default_str();
+  c->add_option("--lean-far", o.lean.far,
+                "lean: distance (m) the map covers; beyond it the uniform NDF (Eq. 3). 0: "
+                "automatic (texel = the smallest pixel footprint)")
+      ->capture_default_str();
+  choice("--lean-filter", o.lean.filter,
+         std::map<std::string, LeanFilter>{{"trilinear", LeanFilter::trilinear},
+                                           {"aniso", LeanFilter::aniso}},
+         "lean: map filter");
+  c->add_option("--lean-max-aniso", o.lean.max_aniso,
+                "lean: most trilinear probes per pixel with --lean-filter aniso")
+      ->capture_default_str();
+  c->add_option("--taa-jitter-count", o.taa.jitter_count,
+                "taa: length of the Halton (2,3) jitter cycle")
+      ->capture_default_str();
+  c->add_option("--taa-alpha", o.taa.alpha, "taa: weight of the current frame in the blend")
+      ->capture_default_str();
+  c->add_option("--taa-gamma", o.taa.gamma,
+                "taa: width of the variance box, in standard deviations")
+      ->capture_default_str();
+  choice(
+      "--taa-clamp", o.taa.clamp,
+      std::map<std::string, TaaClamp>{
+          {"none", TaaClamp::none}, {"minmax", TaaClamp::minmax}, {"variance", TaaClamp::variance}},
+      "taa: history rectification");
+  choice("--taa-history", o.taa.history,
+         std::map<std::string, TaaHistoryFilter>{{"bilinear", TaaHistoryFilter::bilinear},
+                                                 {"catmull-rom", TaaHistoryFilter::catmull_rom}},
+         "taa: history resampling");
+  c->add_option("--taa-warmup", o.taa.warmup,
+                "taa: frames rendered (not written) before the first frame, to fill the history")
+      ->capture_default_str();
+}
 
 void add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
@@ -103,6 +162,7 @@ void add_render_command(CLI::App& app) {
   c->add_option("--exposure", a->exposure, "Exposure in stops for .png output")
       ->capture_default_str();
   c->add_flag("--quiet,-q", a->quiet, "No progress bar");
+  add_method_flags(c, a->options);
   c->callback([a] { run_render(*a); });
 }
 
