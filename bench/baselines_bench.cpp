@@ -1,11 +1,14 @@
-// Micro-benchmarks of the two baselines' per-frame work (docs/baselines-lean-taa.md):
+// Micro-benchmarks of the two baselines' per-frame work (docs/baselines-lean-taa.md), on one
+// thread so that the CPU time is the whole work and does not depend on the machine's load:
 //  - LEAN's map build (LeanMethod::begin_frame: the region, the slopes of the waves at every
 //    level-0 texel, the MIP chain) for map sizes 1024, 2048, 4096 on the shared scenes at
-//    160x90 (automatic far distance), with the map's memory and the mapped waves as counters;
+//    160x90 (automatic far distance), with the map's memory, its texel, its far distance
+//    and the mapped waves as counters;
 //  - the shading of all pixels once the map is built (trilinear, aniso), and TAA's resolve
 //    (reprojection, clamp, blend) of a 160x90 frame.
 // Run: build/bench/baselines_bench
 #include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
 
 #include <string>
 
@@ -23,6 +26,7 @@ Scene bench_scene(const char* name) {
 }
 
 void BM_LeanMapBuild(benchmark::State& state, const char* name) {
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
   Scene s = bench_scene(name);
   SceneModel m(s);
   LeanOptions o;
@@ -42,6 +46,8 @@ void BM_LeanMapBuild(benchmark::State& state, const char* name) {
   state.counters["far_m"] = lean.region().far;
   state.counters["texel_mm"] = 1000 * lean.region().texel;
   state.SetItemsProcessed(state.iterations() * int64_t(o.size) * o.size);  // level-0 texels
+  state.counters["wave_texels_per_s"] = benchmark::Counter(
+      double(state.iterations()) * o.size * o.size * mapped, benchmark::Counter::kIsRate);
 }
 BENCHMARK_CAPTURE(BM_LeanMapBuild, simple, "simple")
     ->Arg(1024)
@@ -65,6 +71,7 @@ BENCHMARK_CAPTURE(BM_LeanMapBuild, high, "high")
     ->Unit(benchmark::kMillisecond);
 
 void BM_LeanShade(benchmark::State& state, const char* name, LeanFilter filter) {
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
   Scene s = bench_scene(name);
   SceneModel m(s);
   LeanOptions o;
@@ -86,6 +93,7 @@ BENCHMARK_CAPTURE(BM_LeanShade, medium_aniso, "medium", LeanFilter::aniso)
     ->Unit(benchmark::kMillisecond);
 
 void BM_TaaResolve(benchmark::State& state, const char* name) {
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
   Scene s = bench_scene(name);
   SceneModel m(s);
   TaaMethod taa{TaaOptions{}};

@@ -7,7 +7,7 @@
 //  1. The map (lean_map.h). The slope (dh/dx, dh/dz) of the waves (scene/waves.h, Podee
 //     Eq. 1 differentiated) is point-sampled at the centre of each level-0 texel, as a
 //     normal map generated from sine data, and stored with its second moments: B =
-//     (b_x, b_z), M = (b_x^2, b_z^2, b_x b_z) (LEAN Sec. 3). Sampling uses angle addition
+//     (b_x, b_z), M = (b_x^2, b_z^2, b_x b_z) (lean_map.h). Sampling uses angle addition
 //     over the texel grid, cos(theta_j + a x_i) = cos theta_j cos a x_i - sin theta_j sin
 //     a x_i, with the vectorised sums of math/simd_trig.h (tested equal to
 //     WaveField::gradient). Built in parallel (oneTBB); the MIP chain is the 2 x 2 box mean
@@ -15,8 +15,8 @@
 //  2. Waves the grid cannot sample, above 0.5 cycles per texel along x or z
 //     (shading/aliasing.h's projected frequency of the texel grid), are left out of the
 //     map: point samples would alias them into a false pattern. Their covariance (Podee
-//     Eq. 3) is added to every lookup, which is LEAN's per-texel base roughness (the 1/s
-//     of the Beckmann base BRDF in Olano and Baker's M): the slopes finer than a texel.
+//     Eq. 3) is added to every lookup, in the place of LEAN's base roughness (Olano and
+//     Baker add the base BRDF's own Beckmann variance to M): the slopes finer than a texel.
 //  3. Coverage of the unbounded plane (lean_coverage.h). The map is a square over the
 //     water visible within a far distance D (`--lean-far`, metres; 0, the default, picks
 //     the texel equal to the smallest pixel footprint of the frame and D as far as N
@@ -31,8 +31,10 @@
 //     map would not be a texture on the surface as LEAN assumes.
 //  4. Per pixel: the footprint of the pixel centre (scene/footprint.h: the water point,
 //     the view, dP/dpx and dP/dpy) gives the texel position and derivatives; the map is
-//     filtered there (`--lean-filter trilinear`: GL level of detail; `aniso`: GL
-//     anisotropic probes along the footprint's longer side, `--lean-max-aniso`). The
+//     filtered there (`--lean-filter trilinear`, the default: GL level of detail; `aniso`:
+//     GL anisotropic probes along the footprint's longer side, `--lean-max-aniso`; aniso
+//     follows the footprint more closely but did not pay against the reference, which
+//     also integrates the shutter: docs/baselines-lean-taa.md). The
 //     filtered moments give the Gaussian slope distribution of LEAN, mean B and covariance
 //     Sigma = M - B B^T (+ the base term), with correlation (Chermain et al. 2021, Sec. 5).
 //     Its NDF-plane centre is n_c = -B (shading/ndf.h). shading/ndf_radiance.h maps it to

@@ -1,15 +1,16 @@
-// The LEAN map (Olano and Baker 2010, "LEAN Mapping", I3D, Sec. 3): a texture of the first
-// and second moments of the surface slope, MIP-mapped, and its filtered lookups.
+// The LEAN map (Olano and Baker 2010, "LEAN Mapping", I3D): a texture of the first and
+// second moments of the surface slope, MIP-mapped, and its filtered lookups.
 //
 // Each texel stores, in single precision (as the paper's GPU textures),
-//     B = (b_x, b_z)                  the slope (dh/dx, dh/dz)          (LEAN Eq. 5's "B")
-//     M = (b_x^2, b_z^2, b_x b_z)     its second moments                (LEAN Eq. 6's "M")
+//     B = (b_x, b_z)                  the slope (dh/dx, dh/dz): LEAN's first-moment texture
+//     M = (b_x^2, b_z^2, b_x b_z)     its second moments: LEAN's second-moment texture
 // Moments filter linearly, so any linear filter (box MIP levels, bilinear, trilinear, a sum
 // of probes) of B and M gives the mean and second moments of the slopes under the filter,
-// and the filtered slope distribution is the Gaussian of covariance
+// and the filtered slope distribution is LEAN's Gaussian of covariance
 //     Sigma = M - B B^T = [M_xx - B_x^2, M_xz - B_x B_z; M_xz - B_x B_z, M_zz - B_z^2]
-// (LEAN Eq. 7; the correlation M_xz - B_x B_z is the non-axis-aligned part that Chermain
-// et al. 2021, Sec. 5.1, Eq. 16, build on). Sums and subtractions are done in double.
+// with its correlation M_xz - B_x B_z (the non-axis-aligned covariance of Chermain et al.
+// 2021, Sec. 5.1, Eq. 16, "computed from precomputed MIP maps of x, y, x^2, y^2 and xy"; the
+// same as Podee et al. 2021, Eq. 4). Sums and subtractions are done in double.
 //
 // Layout: level 0 is N x N texels (N a power of two) over the square [0, N]^2 of texel
 // coordinates (texel (i, j) covers [i, i+1] x [j, j+1]); level l is N/2^l texels a side,
