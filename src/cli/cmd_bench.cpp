@@ -8,6 +8,7 @@
 
 #include "base/error.h"
 #include "cli/commands.h"
+#include "cli/method_flags.h"
 #include "engine/render.h"
 #include "methods/method.h"
 #include "methods/stratified.h"
@@ -17,8 +18,9 @@ namespace {
 
 struct BenchArgs {
   std::vector<std::string> scenes;
-  std::string methods = "point,reference", samples = "8x8x8";
+  std::string methods = "point,reference";
   int width = 640, height = 360, frame = 0, threads = 0, repeat = 1;
+  MethodFlags flags;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -31,10 +33,10 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-void run_bench(const BenchArgs& a) {
+void run_bench(BenchArgs& a) {
   if (a.scenes.empty()) throw Error("bench: give at least one scene file");
-  MethodOptions opt;
-  opt.samples = parse_sample_counts(a.samples, "--samples");
+  a.flags.finish();
+  const MethodOptions& opt = a.flags.options;
   std::vector<std::string> names = split(a.methods);
   if (names.empty()) throw Error("--methods: give at least one method");
   for (const auto& n : names)
@@ -51,7 +53,13 @@ void run_bench(const BenchArgs& a) {
     for (const auto& n : names) {
       auto m = make_method(n, opt);
       double best = 1e300;
+      // A stateful method is timed on a frame that has history to resolve.
+      if (m->stateful()) render_frame(model, *m, a.frame - 1, rs);
       for (int r = 0; r < std::max(1, a.repeat); ++r) {
+        if (m->stateful() && r > 0) {
+          m->reset();
+          render_frame(model, *m, a.frame - 1, rs);
+        }
         auto t0 = std::chrono::steady_clock::now();
         render_frame(model, *m, a.frame, rs);
         best = std::min(
@@ -93,7 +101,6 @@ void add_bench_command(CLI::App& app) {
   c->add_option("scenes", a->scenes, "Scene files")->required();
   c->add_option("--methods", a->methods, "Comma-separated methods (put point first for ratios)")
       ->capture_default_str();
-  c->add_option("--samples", a->samples, "Samples SxSxT")->capture_default_str();
   c->add_option("--width", a->width, "Image width")
       ->capture_default_str()
       ->check(CLI::Range(1, 16384));
@@ -104,6 +111,7 @@ void add_bench_command(CLI::App& app) {
   c->add_option("--threads,-j", a->threads, "Threads (0: all)")->capture_default_str();
   c->add_option("--repeat", a->repeat, "Runs per method; the fastest counts")
       ->capture_default_str();
+  add_method_flags(*c, a->flags);
   c->callback([a] { run_bench(*a); });
 }
 

@@ -2,7 +2,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "base/error.h"
 #include "cli/args.h"
@@ -54,23 +57,26 @@ void run_render(RenderArgs& a) {
   RenderSettings rs;
   rs.threads = a.threads;
   rs.seed = opt.seed;
-  const long frames = range.count();
+  // Frames rendered: the requested ones and a stateful method's warm-up frames before them.
+  const int warmup = warmup_frame_count(*method);
+  const long frames = range.count() + warmup;
   long frames_done = 0;
   rs.progress = [&](long done, long total) {
     bar.update(frames_done * total + done, frames * total);
+    if (done == total) ++frames_done;  // calls are serialised; each frame ends once
   };
   WriteOptions wo;
   wo.exposure = a.exposure;
   auto t0 = std::chrono::steady_clock::now();
-  render_frames(model, *method, range.first, range.last, rs, [&](int f, const Image& img) {
-    write_image(out_path(f), img, wo);
-    ++frames_done;
-  });
+  render_frames(model, *method, range.first, range.last, rs,
+                [&](int f, const Image& img) { write_image(out_path(f), img, wo); });
   bar.finish();
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%s: %s, %dx%d, frames %d-%d, %.2f s (%.1f ms per frame) -> %s\n", scene.name.c_str(),
-              method->name().c_str(), scene.width, scene.height, range.first, range.last, secs,
-              1000 * secs / frames, a.out.c_str());
+  std::printf("%s: %s, %dx%d, frames %d-%d%s, %.2f s (%.1f ms per frame) -> %s\n",
+              scene.name.c_str(), method->name().c_str(), scene.width, scene.height, range.first,
+              range.last,
+              warmup > 0 ? (" after " + std::to_string(warmup) + " warm-up frames").c_str() : "",
+              secs, 1000 * secs / frames, a.out.c_str());
 }
 
 }  // namespace

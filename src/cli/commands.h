@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "methods/options.h"
+
 namespace sg {
 
 void add_render_command(CLI::App& app);

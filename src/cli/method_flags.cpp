@@ -1,46 +1,60 @@
 #include "cli/method_flags.h"
 
+#include <map>
 #include <sstream>
 #include <vector>
 
 #include "base/error.h"
-#include "methods/options.h"
 #include "methods/method.h"
 
 namespace sg {
 
 void MethodFlags::finish(const std::string& context) {
   options.samples = parse_sample_counts(samples, context + "--samples");
-  StaaOptions& s = options.staa;
-  s.ndf = ndf == "uniform" ? NdfMode::uniform : NdfMode::per_pixel;
-  s.ndf_mean_shift = ndf_mean == "shift";
-  s.fallback = fallback == "riemann" ? FallbackMode::riemann : FallbackMode::quadrature;
-  s.nyquist_max_axis = nyquist == "max";
-  s.fallback_along_path = fallback_time == "path";
+  const StaaOptions& s = options.staa;
   if (!(s.alias_start >= 0 && s.alias_end > s.alias_start)) {
     throw Error(context + "--alias-start, --alias-end: need 0 <= start < end (got " +
                 std::to_string(s.alias_start) + ", " + std::to_string(s.alias_end) + ")");
   }
 }
 
+namespace {
+
+// A flag that picks one of named values: CLI11 checks the name, the callback stores it.
+template <class T>
+void choice(CLI::App& app, const std::string& flag, T& field, const std::map<std::string, T>& names,
+            const std::string& help) {
+  std::string current;
+  std::vector<std::string> keys;
+  for (const auto& [k, v] : names) {
+    if (v == field) current = k;
+    keys.push_back(k);
+  }
+  app.add_option_function<std::string>(
+         flag, [&field, names](const std::string& v) { field = names.at(v); }, help)
+      ->check(CLI::IsMember(keys))
+      ->default_str(current);
+}
+
+}  // namespace
+
 void add_method_flags(CLI::App& app, MethodFlags& f) {
+  MethodOptions& o = f.options;
   app.add_option("--samples", f.samples, "Samples SxSxT for reference and supersample")
       ->capture_default_str();
-  app.add_option("--seed", f.options.seed, "Seed of the sampling streams")->capture_default_str();
-  StaaOptions& s = f.options.staa;
+  app.add_option("--seed", o.seed, "Seed of the sampling streams")->capture_default_str();
+
+  // staa, staa-temporal (methods/staa.h)
+  StaaOptions& s = o.staa;
   app.add_option("--segments", s.segments,
                  "staa, staa-temporal: sub-arcs of the shutter interval (Sec. 3.5)")
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
-  app.add_option("--ndf", f.ndf, "staa: NDF of the aliasing waves: uniform (Eq. 3) or per-pixel "
-                                 "(Eqs. 4-7)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"uniform", "per-pixel"}));
-  app.add_option("--ndf-mean", f.ndf_mean,
-                 "staa, per-pixel NDF: the aliasing waves' mean slope shifts the NDF centre "
-                 "(shift) or not (none)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"shift", "none"}));
+  choice(app, "--ndf", s.ndf, {{"uniform", NdfMode::uniform}, {"per-pixel", NdfMode::per_pixel}},
+         "staa: NDF of the aliasing waves: uniform (Eq. 3) or per-pixel (Eqs. 4-7)");
+  choice(app, "--ndf-mean", s.ndf_mean_shift, {{"shift", true}, {"none", false}},
+         "staa, per-pixel NDF: the aliasing waves' mean slope shifts the NDF centre (shift) or "
+         "not (none)");
   app.add_option("--kernels", s.kernels,
                  "staa: circular Gaussians approximating the RDF: 1 (equal-area circle, Sec. "
                  "3.5), 3, 5 or 9 (Sec. 3.6)")
@@ -48,19 +62,16 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->check(CLI::IsMember({1, 3, 5, 9}));
   app.add_option("--elongation-threshold", s.elongation_threshold,
                  "staa: RDF axis ratio past which the fallback renders (0: the kernel count, "
-                 "as the paper)")
+                 "as the paper; none for --kernels 1)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e6));
-  app.add_option("--fallback", f.fallback,
-                 "staa: fallback past the elongation threshold: quadrature (accurate) or "
-                 "riemann (the paper's Riemann sum)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"quadrature", "riemann"}));
-  app.add_option("--fallback-time", f.fallback_time,
-                 "staa: the fallback averaged along the reflection path (path) or at the display "
-                 "time only (current, the paper)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"path", "current"}));
+  choice(app, "--fallback", s.fallback,
+         {{"quadrature", FallbackMode::quadrature}, {"riemann", FallbackMode::riemann}},
+         "staa: the fallback's RDF-disk convolution: quadrature (accurate) or riemann (the "
+         "paper's Riemann sum)");
+  choice(app, "--fallback-time", s.fallback_along_path, {{"path", true}, {"current", false}},
+         "staa: the fallback averaged along the reflection path (path) or at the display time "
+         "only (current, the paper)");
   app.add_option("--riemann-cells", s.riemann_cells, "staa: cells across the disk for riemann")
       ->capture_default_str()
       ->check(CLI::Range(2, 1024));
@@ -70,10 +81,41 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
   app.add_option("--alias-end", s.alias_end,
                  "staa: projected frequency (cycles/pixel) where a wave fully aliases (Eq. 20)")
       ->capture_default_str();
-  app.add_option("--nyquist", f.nyquist,
-                 "staa: projected frequency as the larger axis frequency (max) or the norm")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"max", "norm"}));
+  choice(app, "--nyquist", s.nyquist_max_axis, {{"max", true}, {"norm", false}},
+         "staa: projected frequency as the larger axis frequency (max) or the norm");
+
+  // lean (methods/lean.h)
+  app.add_option("--lean-size", o.lean.size,
+                 "lean: texels per side of the slope-moment map (a power of two)")
+      ->capture_default_str();
+  app.add_option("--lean-far", o.lean.far,
+                 "lean: distance (m) the map covers; beyond it the uniform NDF (Eq. 3). 0: "
+                 "automatic (texel = the smallest pixel footprint)")
+      ->capture_default_str();
+  choice(app, "--lean-filter", o.lean.filter,
+         {{"trilinear", LeanFilter::trilinear}, {"aniso", LeanFilter::aniso}}, "lean: map filter");
+  app.add_option("--lean-max-aniso", o.lean.max_aniso,
+                 "lean: most trilinear probes per pixel with --lean-filter aniso")
+      ->capture_default_str();
+
+  // taa (methods/taa.h)
+  app.add_option("--taa-jitter-count", o.taa.jitter_count,
+                 "taa: length of the Halton (2,3) jitter cycle")
+      ->capture_default_str();
+  app.add_option("--taa-alpha", o.taa.alpha, "taa: weight of the current frame in the blend")
+      ->capture_default_str();
+  app.add_option("--taa-gamma", o.taa.gamma,
+                 "taa: width of the variance box, in standard deviations")
+      ->capture_default_str();
+  choice(app, "--taa-clamp", o.taa.clamp,
+         {{"none", TaaClamp::none}, {"minmax", TaaClamp::minmax}, {"variance", TaaClamp::variance}},
+         "taa: history rectification");
+  choice(app, "--taa-history", o.taa.history,
+         {{"bilinear", TaaHistoryFilter::bilinear}, {"catmull-rom", TaaHistoryFilter::catmull_rom}},
+         "taa: history resampling");
+  app.add_option("--taa-warmup", o.taa.warmup,
+                 "taa: frames rendered (not written) before the first frame, to fill the history")
+      ->capture_default_str();
 }
 
 MethodVariant parse_method_variant(const std::string& text) {
@@ -96,7 +138,7 @@ MethodVariant parse_method_variant(const std::string& text) {
   }
   flags.finish("--methods: '" + text + "': ");
   v.options = flags.options;
-  make_method(v.name, v.options);  // validates the name
+  make_method(v.name, v.options);  // validates the name and the options
   return v;
 }
 

@@ -1,30 +1,27 @@
-// The flags that configure methods, defined once: `render` adds them to its command line,
-// and `compare` parses each method variant it is given ("staa --ndf per-pixel") with the
-// same definitions, so a flag means the same thing everywhere.
+// The flags that configure methods, defined once: `render` and `bench` add them to their
+// command lines, and `compare` parses each method variant it is given ("staa --ndf
+// per-pixel") with the same definitions, so a flag means the same thing everywhere.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <memory>
 #include <string>
 
 #include "methods/options.h"
 
 namespace sg {
 
-// Storage for the flags' raw values; `finish` converts them into MethodOptions.
+// Storage for the flags' values; `finish` checks them and converts the few that need it.
 struct MethodFlags {
   std::string samples = "8x8x8";
-  std::string ndf = "per-pixel", ndf_mean = "shift", fallback = "quadrature", nyquist = "max";
-  std::string fallback_time = "path";
   MethodOptions options;
+  // `context` prefixes error messages (e.g. the method variant being parsed).
   void finish(const std::string& context = "");
 };
 
 void add_method_flags(CLI::App& app, MethodFlags& flags);
 
 // A method variant as `compare` takes it: "NAME [FLAGS...]", e.g.
-// "supersample --samples 6x6x1". Returns the method name and its options; throws
-// sg::Error naming the variant on a bad flag.
+// "supersample --samples 6x6x1". Throws sg::Error naming the variant on a bad flag.
 struct MethodVariant {
   std::string label;  // the text as given, used in tables and file names
   std::string name;

@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -46,9 +47,18 @@ Image render_frame(const SceneModel& model, Method& method, int frame,
   return img;
 }
 
+int warmup_frame_count(const Method& method) {
+  return method.stateful() ? std::max(0, method.warmup_frames()) : 0;
+}
+
 void render_frames(const SceneModel& model, Method& method, int first, int last,
                    const RenderSettings& settings,
                    const std::function<void(int frame, const Image&)>& on_frame) {
+  if (method.stateful()) {
+    method.reset();
+    for (int f = first - warmup_frame_count(method); f < first; ++f)
+      render_frame(model, method, f, settings);
+  }
   for (int f = first; f <= last; ++f)
     on_frame(f, render_frame(model, method, f, settings));
 }

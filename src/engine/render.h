@@ -4,7 +4,14 @@
 // or on which thread ran which tile.
 //
 // Sequences render frames in order through the same method object, so stateful methods
-// (history, as in TAA) see their previous frame.
+// (history, as in TAA) see their previous frame. For a stateful method, frame F is defined
+// as the method's output after it has rendered frames F - N .. F - 1 from an empty history,
+// N = method.warmup_frames(): render_frames resets the method and renders those N warm-up
+// frames (not passed to on_frame) before the first requested frame, so `--frame F` and
+// the first frame of `--frames F-G` are the same image. Warm-up frames may have negative
+// indices (times before t0: the waves are defined at every t). Later frames of a sequence
+// carry history from further back; the difference from rendering them alone decays as
+// the method's history weight after N frames ((1 - alpha)^N for TAA).
 #pragma once
 
 #include <functional>
@@ -25,10 +32,18 @@ struct RenderSettings {
   ProgressFn progress;
 };
 
+// One step of the method at `frame`: begin_frame, the tiles, end_frame. No warm-up: a
+// stateful method blends with whatever history it holds.
 Image render_frame(const SceneModel& model, Method& method, int frame,
                    const RenderSettings& settings);
 
-// Frames first..last in order; `on_frame(frame, image)` receives each one.
+// The warm-up frames render_frames renders before a sequence: method.warmup_frames() for a
+// stateful method, 0 otherwise.
+int warmup_frame_count(const Method& method);
+
+// Frames first..last in order, after the warm-up frames first - N .. first - 1 of a
+// stateful method (reset first); `on_frame(frame, image)` receives each requested frame.
+// settings.progress reports the tiles of every frame rendered, warm-up frames included.
 void render_frames(const SceneModel& model, Method& method, int first, int last,
                    const RenderSettings& settings,
                    const std::function<void(int frame, const Image&)>& on_frame);

@@ -1,8 +1,10 @@
 // The list of methods and the factory behind `--method`.
 #include "base/error.h"
+#include "methods/lean.h"
 #include "methods/method.h"
 #include "methods/point.h"
 #include "methods/supersample.h"
+#include "methods/taa.h"
 
 namespace sg {
 
@@ -18,6 +20,8 @@ const std::vector<MethodInfo>& method_catalog() {
       {"reference", "ground truth: stratified samples over pixel and shutter (--samples, 8x8x8)"},
       {"supersample", "stratified supersampling at a chosen budget (--samples; T=1 samples t_f)"},
       {"point", "one sample at the pixel centre at t_f (no anti-aliasing)"},
+      {"lean", "LEAN mapping (Olano & Baker 2010): MIP-mapped slope moments, Gaussian NDF at t_f"},
+      {"taa", "temporal anti-aliasing: Halton jitter, reprojected history, variance clipping"},
   };
   return catalog;
 }
@@ -31,6 +35,8 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                               StratifiedSettings{o.samples, o.samples.st == 1});
   }
   if (name == "point") return std::make_unique<PointMethod>();
+  if (name == "lean") return std::make_unique<LeanMethod>(o.lean);
+  if (name == "taa") return std::make_unique<TaaMethod>(o.taa);
   std::string list;
   for (const auto& m : method_catalog())
     list += (list.empty() ? "" : ", ") + m.name;

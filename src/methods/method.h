@@ -41,6 +41,12 @@ class Method {
   // True when frame f depends on frames before it (history); sequences then render in
   // order and a single frame is rendered after its predecessors (see engine/render.h).
   virtual bool stateful() const { return false; }
+  // Stateful methods: the number of frames rendered (and not shown) before the first frame
+  // of every sequence, so that its history is full; frame F alone is the output after
+  // frames F - N .. F - 1 (engine/render.h, render_frames).
+  virtual int warmup_frames() const { return 0; }
+  // Stateful methods: drops the history; the next frame is a first frame.
+  virtual void reset() {}
 };
 
 struct MethodInfo {

@@ -45,10 +45,33 @@ struct StaaOptions {
   bool nyquist_max_axis = true;                      // --nyquist max|norm (shading/aliasing.h)
 };
 
+// `lean` (methods/lean.h): LEAN mapping of the waves' slopes.
+enum class LeanFilter { trilinear, aniso };
+struct LeanOptions {
+  int size = 4096;                            // --lean-size: texels per side (power of two)
+  double far = 0;                             // --lean-far: map's far distance, m (0: auto)
+  LeanFilter filter = LeanFilter::trilinear;  // --lean-filter trilinear|aniso
+  int max_aniso = 16;                         // --lean-max-aniso: probes per pixel (aniso)
+};
+
+// `taa` (methods/taa.h): temporal anti-aliasing with jitter, reprojection and clamping.
+enum class TaaClamp { none, minmax, variance };
+enum class TaaHistoryFilter { bilinear, catmull_rom };
+struct TaaOptions {
+  int jitter_count = 8;                                   // --taa-jitter-count: Halton cycle
+  double alpha = 0.1;                                     // --taa-alpha: current frame's weight
+  double gamma = 1.0;                                     // --taa-gamma: variance box width
+  TaaClamp clamp = TaaClamp::variance;                    // --taa-clamp none|minmax|variance
+  TaaHistoryFilter history = TaaHistoryFilter::bilinear;  // --taa-history bilinear|catmull-rom
+  int warmup = 16;                                        // --taa-warmup: frames before F
+};
+
 struct MethodOptions {
   SampleCounts samples{8, 8, 8};  // --samples, for reference and supersample
   uint64_t seed = 0;              // --seed: the sampling streams (rng.h)
   StaaOptions staa;
+  LeanOptions lean;
+  TaaOptions taa;
 };
 
 }  // namespace sg

@@ -20,6 +20,8 @@
 
 namespace sg {
 
+struct RayHit;
+
 inline constexpr double kSchlickR0 = 0.02;
 
 // r = 2 (n . v) n - v
@@ -76,7 +78,10 @@ inline double combine_radiance(const SceneModel& m, double F, double in_light, d
 }
 
 // The radiance along the camera ray from `origin` with direction `dir` (any length) at
-// time t: intersection (flat or displaced), normal, reflection, shading.
-double radiance_along_ray(const SceneModel& m, const vec3& origin, const vec3& dir, double t);
+// time t: intersection (flat or displaced), normal, reflection, shading. When `hit` is
+// given it receives the intersection (for motion vectors; hit->s is along the unit
+// direction).
+double radiance_along_ray(const SceneModel& m, const vec3& origin, const vec3& dir, double t,
+                          RayHit* hit = nullptr);
 
 }  // namespace sg

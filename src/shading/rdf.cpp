@@ -35,6 +35,12 @@ mat3 reflection_jacobian_view(const vec3& m) {
   return (2.0 / dot(m, m)) * glm::outerProduct(m, m) - mat3(1.0);
 }
 
+void reflection_derivatives(const vec2& n, const vec3& v, vec3& dr_dnx, vec3& dr_dnz) {
+  const mat3 J = reflection_jacobian_normal(vec3(n.x, 1.0, n.y), v);
+  dr_dnx = J[0];
+  dr_dnz = J[2];
+}
+
 mat2 ndf_to_light_plane_jacobian(const vec2& n, const vec3& v, const LightModel& light) {
   const vec3 m(n.x, 1.0, n.y);
   const vec3 r = (2.0 * dot(m, v) / dot(m, m)) * m - v;

@@ -20,6 +20,9 @@ namespace sg {
 // The reflection r(n) (unit) of unit view direction v about the normal (n.x, 1, n.y).
 vec3 reflect_about_ndf_point(const vec2& n, const vec3& v);
 
+// dr/dn_x and dr/dn_z at n (the columns of the 3x2 Jacobian of r(n), Eqs. 9-10).
+void reflection_derivatives(const vec2& n, const vec3& v, vec3& dr_dnx, vec3& dr_dnz);
+
 // Phi(n) in light-plane coordinates (meaningful when r . L > 0).
 vec2 ndf_to_light_plane(const vec2& n, const vec3& v, const LightModel& light);
 

@@ -67,6 +67,17 @@ expect_fail "sequence needs a pattern" "exactly one frame number conversion" \
 expect_fail "bad frame range" "--frames: expected a frame range A-B" \
   "$bin" render "$scene" -m point --frames 3-1 --out "$work/f_%02d.exr"
 expect_fail "no subcommand" "A subcommand is required" "$bin"
+expect_fail "lean size" "--lean-size: must be a power of two" \
+  "$bin" render "$scene" -m lean --lean-size 1000 --out "$work/a.exr"
+expect_no_file "lean size" "$work/a.exr"
+expect_fail "lean filter" "--lean-filter" \
+  "$bin" render "$scene" -m lean --lean-filter bicubic --out "$work/a.exr"
+expect_fail "taa alpha" "--taa-alpha: must be in (0, 1]" \
+  "$bin" render "$scene" -m taa --taa-alpha 0 --out "$work/a.exr"
+expect_fail "taa clamp" "--taa-clamp" \
+  "$bin" render "$scene" -m taa --taa-clamp clip --out "$work/a.exr"
+expect_fail "bench taa alpha" "--taa-alpha: must be in (0, 1]" \
+  "$bin" bench "$scene" --methods point,taa --taa-alpha 2 --width 16 --height 9
 expect_fail "diff sizes" "image sizes differ" bash -c \
   "'$bin' render '$scene' -m point --width 16 -q --out '$work/s16.exr' && \
    '$bin' render '$scene' -m point --width 32 -q --out '$work/s32.exr' && \
@@ -90,6 +101,19 @@ else
   echo "FAIL determinism: outputs differ"
   fails=$((fails + 1))
 fi
+
+# A stateful method (taa) warms up before the first frame: frame 5 alone is the first
+# frame of the sequence 5-6, and sequences repeat byte for byte.
+expect_ok "taa single" "$bin" render "$scene" -m taa --taa-warmup 3 --frame 5 --width 48 -q --out "$work/t5.pfm"
+expect_ok "taa seq" "$bin" render "$scene" -m taa --taa-warmup 3 --frames 5-6 --width 48 -q --out "$work/ts_%02d.pfm"
+expect_ok "taa seq again" "$bin" render "$scene" -m taa --taa-warmup 3 --frames 5-6 --width 48 -j 1 -q --out "$work/tt_%02d.pfm"
+if cmp -s "$work/t5.pfm" "$work/ts_05.pfm" && cmp -s "$work/ts_06.pfm" "$work/tt_06.pfm"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL taa warm-up: frame 5 alone differs from the sequence's, or sequences differ"
+  fails=$((fails + 1))
+fi
+expect_ok "lean" "$bin" render "$scene" -m lean --lean-size 256 --lean-filter aniso --width 48 -q --out "$work/l.pfm"
 
 # Sequences and their metrics.
 expect_ok "sequence" "$bin" render "$scene" -m point --frames 0-2 --width 48 -q --out "$work/p_%02d.pfm"

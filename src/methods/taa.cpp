@@ -1,0 +1,102 @@
+#include "methods/taa.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+#include "base/error.h"
+#include "methods/taa_resolve.h"
+#include "scene/intersect.h"
+#include "shading/radiance.h"
+
+namespace sg {
+
+TaaMethod::TaaMethod(const TaaOptions& o) : options_(o) {
+  if (o.jitter_count < 1 || o.jitter_count > 1024) {
+    throw Error("--taa-jitter-count: must be in [1, 1024]");
+  }
+  if (!(o.alpha > 0 && o.alpha <= 1)) throw Error("--taa-alpha: must be in (0, 1]");
+  if (!(o.gamma >= 0) || !std::isfinite(o.gamma)) throw Error("--taa-gamma: must be >= 0");
+  if (o.warmup < 0 || o.warmup > 10000) throw Error("--taa-warmup: must be in [0, 10000]");
+}
+
+void TaaMethod::reset() {
+  has_history_ = false;
+  history_ = Image();
+}
+
+void TaaMethod::begin_frame(const FrameContext& ctx) {
+  const SceneModel& m = ctx.model;
+  if (has_history_ && (ctx.time.frame != last_frame_ + 1 || history_.width != m.width() ||
+                       history_.height != m.height())) {
+    reset();  // a cut: the history belongs to another sequence
+  }
+  jitter_ = taa_jitter(ctx.time.frame, options_.jitter_count);
+  t_prev_ = m.scene.frame_time(ctx.time.frame - 1);
+  motion_.assign(static_cast<size_t>(m.width()) * m.height(), vec2(0));
+}
+
+double TaaMethod::sample(const FrameContext& ctx, int i, int j, vec2* motion) const {
+  const SceneModel& m = ctx.model;
+  const vec2 p = vec2(i + 0.5, j + 0.5) + jitter_;
+  const vec3 origin = m.camera.position();
+  if (!motion || !m.displaced()) {
+    return radiance_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end);
+  }
+  RayHit hit;
+  const double value =
+      radiance_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end, &hit);
+  if (hit.hit) {
+    const vec3 before(hit.point.x, m.waves.height(hit.point.x, hit.point.z, t_prev_), hit.point.z);
+    double px, py;
+    if (m.camera.project(before - origin, px, py)) *motion = p - vec2(px, py);
+  }
+  return value;
+}
+
+double TaaMethod::shade(const FrameContext& ctx, int i, int j) const {
+  return sample(ctx, i, j, nullptr);
+}
+
+void TaaMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
+                           Image& out) const {
+  const int w = ctx.model.width();
+  for (int j = y0; j < y1; ++j) {
+    for (int i = x0; i < x1; ++i) {
+      out.at(i, j) =
+          static_cast<float>(sample(ctx, i, j, &motion_[static_cast<size_t>(j) * w + i]));
+    }
+  }
+}
+
+void TaaMethod::end_frame(const FrameContext& ctx, Image& img) {
+  last_frame_ = ctx.time.frame;
+  if (!has_history_) {
+    history_ = img;
+    has_history_ = true;
+    return;
+  }
+  const Image current = img;
+  const TaaOptions& o = options_;
+  tbb::parallel_for(tbb::blocked_range<int>(0, img.height), [&](const tbb::blocked_range<int>& r) {
+    for (int j = r.begin(); j < r.end(); ++j) {
+      for (int i = 0; i < img.width; ++i) {
+        const double c = current.at(i, j);
+        const vec2 p = vec2(i + 0.5, j + 0.5) - motion_[static_cast<size_t>(j) * img.width + i];
+        double h;
+        if (!sample_history(history_, p, o.history, h)) {
+          img.at(i, j) = static_cast<float>(c);
+          continue;
+        }
+        if (o.clamp != TaaClamp::none) {
+          h = clip_to_box(h, neighbourhood_box(current, i, j, o.clamp, o.gamma));
+        }
+        img.at(i, j) = static_cast<float>(taa_blend(h, c, o.alpha));
+      }
+    }
+  });
+  history_ = img;
+}
+
+}  // namespace sg

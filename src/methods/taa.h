@@ -1,0 +1,87 @@
+// Temporal anti-aliasing (`--method taa`): the accumulation that real-time engines ship,
+// the alternative Podee et al. 2021 argue against (Sec. 2.2: reprojection "cannot track the
+// movement of the reflection direction"). Karis 2014, "High Quality Temporal
+// Supersampling"; Salvi 2016, "An Excursion in Temporal Supersampling" (variance
+// clipping); Yang, Liu and Salvi 2020, "A Survey of Temporal Antialiasing Techniques".
+// Building blocks in taa_resolve.h.
+//
+// Frame f (display time t_f):
+//  1. Current samples: one camera ray per pixel through (i + 1/2, j + 1/2) + jitter(f), the
+//     Halton (2, 3) offset of index (f mod K) + 1 (`--taa-jitter-count` K, default 8),
+//     shaded at t_f exactly as `point` shades (shading/radiance.h, radiance_along_ray).
+//  2. Motion vectors (the engine's velocity buffer), per sample: where the surface point
+//     it hit was at the previous frame's display time t_{f-1}. The camera of the scene
+//     spec is static, so the sky (at infinity) does not move. Flat water is the plane
+//     y = 0, which does not move: motion 0 (the reflections move, and reprojection cannot
+//     follow them: the paper's point). Displaced water is a height field displaced
+//     vertically, as a displaced grid mesh: the point (x, h(x, z, t_f), z) was at
+//     (x, h(x, z, t_{f-1}), z), projected by the camera to p'; motion = p - p', with p the
+//     sample's image-plane position.
+//  3. Reprojection: the history (the previous output) is resampled at the pixel centre
+//     minus the motion (`--taa-history bilinear|catmull-rom`). A point outside the image
+//     has no history: the pixel shows its current sample. There is no depth test for
+//     disocclusion: as in Karis 2014, the neighbourhood clamp rectifies stale history.
+//  4. Rectification: the history is clipped to the box of the current samples in the 3 x 3
+//     pixels around the pixel (`--taa-clamp variance`: mean +- gamma sigma, Salvi 2016,
+//     `--taa-gamma` default 1; `minmax`: Karis 2014; `none`).
+//  5. Blend: out = lerp(history, current, alpha), `--taa-alpha` default 0.1 (Karis 2014;
+//     Survey Sec. 4). out becomes the history of the next frame.
+// The blend is on the spec's linear value; Karis's luminance weighting (1 / (1 + luma),
+// against bright fireflies) is left out because it biases the linear mean that every
+// method here is measured on. No sharpening, no motion-dependent alpha.
+//
+// Stateful: frames must arrive in order. The first frame after reset() (or after a frame
+// that does not follow the previous one: a cut) has no history and shows its current
+// samples. Frame F alone is the output after `--taa-warmup` N (default 16) frames F-N..F-1
+// rendered first (engine/render.h: render_frames does this for every stateful method, and
+// for the first frame of a sequence); with alpha 0.1, 0.9^16 = 19% of the first warm-up
+// frame still remains at F, so frames inside a long sequence differ slightly from the same
+// frames rendered alone.
+#pragma once
+
+#include <vector>
+
+#include "methods/method.h"
+
+namespace sg {
+
+class TaaMethod final : public Method {
+ public:
+  // Throws sg::Error naming the flag for a bad option.
+  explicit TaaMethod(const TaaOptions& options);
+  std::string name() const override { return "taa"; }
+  bool stateful() const override { return true; }
+  int warmup_frames() const override { return options_.warmup; }
+  void reset() override;
+
+  void begin_frame(const FrameContext& ctx) override;
+  // The current (jittered) sample of pixel (i, j).
+  double shade(const FrameContext& ctx, int i, int j) const override;
+  // Current samples and their motion vectors.
+  void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
+                  Image& out) const override;
+  // Reprojection, rectification and blend; `img` holds the current samples on entry and
+  // the output on return.
+  void end_frame(const FrameContext& ctx, Image& img) override;
+
+  const vec2& jitter() const { return jitter_; }
+  // This frame's motion vectors (image-plane pixels, current minus previous position), row
+  // by row; written by shade_tile.
+  const std::vector<vec2>& motion() const { return motion_; }
+  bool has_history() const { return has_history_; }
+
+ private:
+  double sample(const FrameContext& ctx, int i, int j, vec2* motion) const;
+
+  TaaOptions options_;
+  Image history_;
+  bool has_history_ = false;
+  int last_frame_ = 0;
+  vec2 jitter_{0, 0};
+  double t_prev_ = 0;
+  // Per-pixel motion of this frame's samples, written by shade_tile (each pixel its own
+  // slot, so tiles on different threads never share one).
+  mutable std::vector<vec2> motion_;
+};
+
+}  // namespace sg
