@@ -3,6 +3,8 @@
 #include "methods/lean.h"
 #include "methods/method.h"
 #include "methods/point.h"
+#include "methods/staa.h"
+#include "methods/staa_temporal.h"
 #include "methods/supersample.h"
 #include "methods/taa.h"
 
@@ -20,6 +22,10 @@ const std::vector<MethodInfo>& method_catalog() {
       {"reference", "ground truth: stratified samples over pixel and shutter (--samples, 8x8x8)"},
       {"supersample", "stratified supersampling at a chosen budget (--samples; T=1 samples t_f)"},
       {"point", "one sample at the pixel centre at t_f (no anti-aliasing)"},
+      {"staa-temporal", "Podee et al. 2021 Sec. 3.3: time in the light along the reflection path "
+                        "(--segments)"},
+      {"staa", "Podee et al. 2021: temporal path + aliasing waves as a Gaussian RDF (--ndf, "
+               "--kernels, --segments, ...)"},
       {"lean", "LEAN mapping (Olano & Baker 2010): MIP-mapped slope moments, Gaussian NDF at t_f"},
       {"taa", "temporal anti-aliasing: Halton jitter, reprojected history, variance clipping"},
   };
@@ -35,6 +41,8 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                               StratifiedSettings{o.samples, o.samples.st == 1});
   }
   if (name == "point") return std::make_unique<PointMethod>();
+  if (name == "staa-temporal") return std::make_unique<StaaTemporalMethod>(o.staa.segments);
+  if (name == "staa") return std::make_unique<StaaMethod>(o.staa);
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);
   std::string list;

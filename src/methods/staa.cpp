@@ -23,7 +23,9 @@ namespace {
 constexpr double kMinCosToLight = 0.1;
 
 // The standard normal CDF.
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+double normal_cdf(double x) {
+  return 0.5 * std::erfc(-x / std::sqrt(2.0));
+}
 
 // The share of N(p, cov) (light-plane coordinates) whose direction lies below the
 // horizon. The horizon r.y = 0 is a great circle, so on the light plane it is the line
@@ -43,7 +45,8 @@ double below_horizon_share(const LightModel& light, const vec2& p, const mat2& c
 
 StaaMethod::StaaMethod(const StaaOptions& o) : o_(o), tables_(&PathTables::shared()) {}
 
-StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j) const {
+StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
+                                      ReflectionPath** path_out) const {
   const SceneModel& m = ctx.model;
   const FrameTime& ft = ctx.time;
   Shares out;
@@ -65,22 +68,14 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j) con
 
   thread_local ReflectionPath path;
   reflection_path(m, fp, ft, o_.segments, resolved, path);
+  if (path_out) *path_out = &path;
   const FresnelMode fm = m.scene.surface.fresnel;
   if (!any) {
-    // Step 3: the temporal method, exactly.
-    ArcFractions acc;
-    double F = 0;
-    for (int k = 0; k < path.segments(); ++k) {
-      ArcFractions f = arc_fractions(path.reflections[k], path.reflections[k + 1], m.light);
-      acc.in_light += f.in_light / path.segments();
-      acc.below += f.below / path.segments();
-      F += 0.5 * (fresnel(fm, dot(path.normals[k], path.view)) +
-                  fresnel(fm, dot(path.normals[k + 1], path.view))) /
-           path.segments();
-    }
-    out.in_light = acc.in_light;
-    out.below = acc.below;
-    out.fresnel = F;
+    // Step 3: the temporal method, exactly (shade() returns temporal_value for these).
+    const PathShares p = temporal_shares(m, path);
+    out.in_light = p.in_light;
+    out.below = p.below;
+    out.fresnel = p.fresnel;
     return out;
   }
   out.aliasing = true;
@@ -130,8 +125,8 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j) con
 
   const PrincipalAxes ax = principal_axes(cov_r);
   const double threshold = o_.elongation_threshold > 0 ? o_.elongation_threshold
-                           : o_.kernels > 1             ? o_.kernels
-                                                        : HUGE_VAL;
+                           : o_.kernels > 1            ? o_.kernels
+                                                       : HUGE_VAL;
   const bool degenerate = !(ax.s2 > 1e-12 * R);
   if (ax.s1 <= 1e-9 * R) {
     // A vanishing RDF: the fraction of the path inside the disk.
@@ -163,7 +158,8 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j) con
         const double width = R + std::sqrt(std::max(0.0, dot(dir, cov_r * dir)));
         const int n = std::clamp(static_cast<int>(std::ceil(3 * len / width)), 1, 32);
         double seg = 0;
-        for (int q = 0; q < n; ++q) seg += mass(centre[k] + ((q + 0.5) / n) * d);
+        for (int q = 0; q < n; ++q)
+          seg += mass(centre[k] + ((q + 0.5) / n) * d);
         sum += seg / n;
       }
       out.in_light = sum / K;
@@ -187,8 +183,11 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j) con
 }
 
 double StaaMethod::shade(const FrameContext& ctx, int i, int j) const {
-  const Shares s = shares(ctx, i, j);
-  if (!s.hit) return miss_radiance(ctx.model, normalize(ctx.model.camera.direction(i + 0.5, j + 0.5)));
+  ReflectionPath* path = nullptr;
+  const Shares s = shares(ctx, i, j, &path);
+  if (!s.hit)
+    return miss_radiance(ctx.model, normalize(ctx.model.camera.direction(i + 0.5, j + 0.5)));
+  if (!s.aliasing) return temporal_value(ctx.model, *path);  // step 3, the temporal method
   return combine_radiance(ctx.model, s.fresnel, s.in_light, s.below);
 }
 

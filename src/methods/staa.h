@@ -37,6 +37,7 @@
 namespace sg {
 
 class PathTables;
+struct ReflectionPath;
 
 class StaaMethod final : public Method {
  public:
@@ -47,11 +48,13 @@ class StaaMethod final : public Method {
   // The light, sky and sea shares of a pixel, for tests and diagnostics.
   struct Shares {
     bool hit = false;
-    bool aliasing = false;   // step 4 (some alpha > 0)
-    bool fallback = false;   // past the elongation threshold
+    bool aliasing = false;  // step 4 (some alpha > 0)
+    bool fallback = false;  // past the elongation threshold
     double in_light = 0, below = 0, fresnel = 1;
   };
-  Shares shares(const FrameContext& ctx, int i, int j) const;
+  // `path`, when given, receives the pixel's reflection path (per-thread storage, valid
+  // until the next call on this thread).
+  Shares shares(const FrameContext& ctx, int i, int j, ReflectionPath** path = nullptr) const;
 
  private:
   StaaOptions o_;

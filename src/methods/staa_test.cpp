@@ -8,11 +8,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <string>
 
 #include "engine/render.h"
 #include "methods/point.h"
 #include "methods/staa_temporal.h"
 #include "methods/stratified.h"
+#include "methods/supersample.h"
 #include "metrics/metrics.h"
 #include "scene/footprint.h"
 #include "shading/aliasing.h"
@@ -24,7 +27,8 @@ namespace {
 TEST(Staa, EqualsTheTemporalMethodWhereNothingAliases) {
   Scene s = testing::small_scene({Wave{0.1, {0.0, -0.5}, 10.0, 0.3}}, 48, 27);
   s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -15}, {0, 1, 0}, 2.0};
-  s.light = LightDesc{{0, std::sin(std::atan(2.5 / 15)), -std::cos(std::atan(2.5 / 15))}, 2.0, 1, false};
+  s.light =
+      LightDesc{{0, std::sin(std::atan(2.5 / 15)), -std::cos(std::atan(2.5 / 15))}, 2.0, 1, false};
   SceneModel m(s);
   StaaOptions o;
   o.segments = 4;
@@ -94,8 +98,8 @@ TEST(Staa, KernelsConvergeToTheExactRdfMass) {
   std::vector<double> err(4, 0.0);
   int n = 0;
   const int counts[4] = {1, 3, 5, 9};
-  for (int j = 50; j < 90; j += 2) {
-    for (int i = 60; i < 100; i += 2) {
+  for (int j = 46; j < 90; ++j) {
+    for (int i = 50; i < 110; ++i) {
       StaaOptions exact_o;
       exact_o.elongation_threshold = 1e-9;  // always the quadrature fallback
       StaaMethod exact(exact_o);
@@ -135,26 +139,31 @@ TEST(Staa, FallbackAlongThePathEqualsTheCurrentTimeWithoutMotion) {
 }
 
 TEST(Staa, BeatsPointSamplingOnTheSharedScenes) {
-  // A sanity bound on small images (the figures are in docs/results.md): over frames 0-2
-  // at 96x54, RMSE(staa) < RMSE(point) against a 6x6x6 reference on every scene.
+  // A regression bound (the figures are in docs/results.md): over frames 0-9 at 160x90,
+  // against a 6x6x4 reference, RMSE(staa) / RMSE(point) stays within the targets
+  // for 160x90 plus 0.1 (a noisier reference than the figures' 12x12x8). At this size
+  // point's error comes from a few full-value hits on sub-pixel glints, so fewer frames
+  // would make the ratio a lottery.
+  const std::map<std::string, double> bound = {
+      {"simple", 0.4}, {"smooth", 0.7}, {"medium", 0.3}, {"high", 0.2}};
   for (const char* name : {"simple", "smooth", "medium", "high"}) {
     Scene s = testing::project_scene(name);
-    s.width = 96;
-    s.height = 54;
+    s.width = 160;
+    s.height = 90;
     SceneModel m(s);
     StaaMethod staa(StaaOptions{});
     PointMethod point;
-    StratifiedMethod ref("reference", {{6, 6, 6}, false});
+    StratifiedMethod ref("reference", {{6, 6, 4}, false});
     std::vector<Image> a, b, r;
-    for (int f = 0; f < 3; ++f) {
+    for (int f = 0; f < 10; ++f) {
       RenderSettings rs;
       a.push_back(render_frame(m, staa, f, rs));
       b.push_back(render_frame(m, point, f, rs));
       r.push_back(render_frame(m, ref, f, rs));
     }
     const double es = compare_sequences(a, r).rmse, ep = compare_sequences(b, r).rmse;
-    std::printf("%s: rmse staa %.5f point %.5f\n", name, es, ep);
-    EXPECT_LT(es, ep) << name;
+    std::printf("%s: rmse staa %.5f point %.5f ratio %.3f\n", name, es, ep, es / ep);
+    EXPECT_LT(es / ep, bound.at(name)) << name;
   }
 }
 

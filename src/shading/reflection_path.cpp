@@ -25,13 +25,37 @@ void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameT
   }
 }
 
-double temporal_value(const SceneModel& m, const ReflectionPath& path) {
+namespace {
+
+// Sub-arc k: its fractions and its Fresnel factor (the mean of its ends').
+ArcFractions sub_arc(const SceneModel& m, const ReflectionPath& path, int k, double& F) {
   const FresnelMode mode = m.scene.surface.fresnel;
+  F = 0.5 * (fresnel(mode, dot(path.normals[k], path.view)) +
+             fresnel(mode, dot(path.normals[k + 1], path.view)));
+  return arc_fractions(path.reflections[k], path.reflections[k + 1], m.light);
+}
+
+}  // namespace
+
+PathShares temporal_shares(const SceneModel& m, const ReflectionPath& path) {
+  PathShares s;
+  s.fresnel = 0;
+  const int K = path.segments();
+  for (int k = 0; k < K; ++k) {
+    double F;
+    ArcFractions f = sub_arc(m, path, k, F);
+    s.in_light += f.in_light / K;
+    s.below += f.below / K;
+    s.fresnel += F / K;
+  }
+  return s;
+}
+
+double temporal_value(const SceneModel& m, const ReflectionPath& path) {
   double sum = 0;
   for (int k = 0; k < path.segments(); ++k) {
-    ArcFractions f = arc_fractions(path.reflections[k], path.reflections[k + 1], m.light);
-    const double F = 0.5 * (fresnel(mode, dot(path.normals[k], path.view)) +
-                            fresnel(mode, dot(path.normals[k + 1], path.view)));
+    double F;
+    ArcFractions f = sub_arc(m, path, k, F);
     sum += combine_radiance(m, F, f.in_light, f.below);
   }
   return sum / path.segments();

@@ -26,11 +26,11 @@
 namespace sg {
 
 struct ReflectionPath {
-  vec3 view{0};                 // unit, towards the camera
-  vec2 xz{0};                   // the surface point
-  std::vector<double> times;    // K + 1 instants
-  std::vector<vec2> gradients;  // weighted (dh/dx, dh/dz) at each instant
-  std::vector<vec3> normals;    // unit normals
+  vec3 view{0};                   // unit, towards the camera
+  vec2 xz{0};                     // the surface point
+  std::vector<double> times;      // K + 1 instants
+  std::vector<vec2> gradients;    // weighted (dh/dx, dh/dz) at each instant
+  std::vector<vec3> normals;      // unit normals
   std::vector<vec3> reflections;  // unit reflections of the view
   int segments() const { return static_cast<int>(times.size()) - 1; }
 };
@@ -39,7 +39,15 @@ struct ReflectionPath {
 void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameTime& ft,
                      int segments, std::span<const double> weights, ReflectionPath& path);
 
-// The temporal method's value for a path (Sec. 3.3).
+// The temporal method's shares for a path (Sec. 3.3): the fractions of the interval in
+// the light and below the horizon, and the mean Fresnel factor, over all sub-arcs.
+struct PathShares {
+  double in_light = 0, below = 0, fresnel = 1;
+};
+PathShares temporal_shares(const SceneModel& m, const ReflectionPath& path);
+
+// The temporal method's value for a path: each sub-arc's shares combined into the spec's
+// radiance with that sub-arc's Fresnel factor, averaged over the sub-arcs.
 double temporal_value(const SceneModel& m, const ReflectionPath& path);
 
 }  // namespace sg

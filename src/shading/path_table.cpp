@@ -1,0 +1,510 @@
+// The path-integral tables (Podee et al. 2021, Sec. 3.5, Eqs. 17-19, and Sec. 4); every
+// choice is documented in path_table.h.
+#include "shading/path_table.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <boost/math/quadrature/gauss.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <thread>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "shading/disk_gaussian.h"
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kMagic[8] = {'S', 'G', 'P', 'A', 'T', 'H', 'T', 'B'};
+constexpr size_t kHeaderBytes = 64;
+constexpr double kInvSqrt2 = 0.70710678118654752440;
+constexpr double kSqrtHalfPi = 1.25331413731550025121;  // sqrt(pi / 2)
+
+[[noreturn]] void bad(const std::string& what, double got) {
+  std::ostringstream msg;
+  msg << what << " (got " << got << ")";
+  throw Error(msg.str());
+}
+
+void validate(const PathTableParams& p) {
+  if (p.n_distance < 2) bad("path tables: n_distance must be >= 2", p.n_distance);
+  if (p.n_u < 2) bad("path tables: n_u must be >= 2", p.n_u);
+  if (p.n_v < 2) bad("path tables: n_v must be >= 2", p.n_v);
+  if (p.n_sigma < 3) bad("path tables: n_sigma must be >= 3", p.n_sigma);
+  if (!(p.sigma_min > 0 && std::isfinite(p.sigma_min)))
+    bad("path tables: sigma_min must be finite and > 0", p.sigma_min);
+  if (!(p.sigma_max > p.sigma_min && std::isfinite(p.sigma_max)))
+    bad("path tables: sigma_max must be finite and > sigma_min", p.sigma_max);
+  if (!(p.extent_k > 0 && std::isfinite(p.extent_k)))
+    bad("path tables: extent_k must be finite and > 0", p.extent_k);
+}
+
+// ---------------------------------------------------------------- generation
+
+// F(d) for one sigma on a fine uniform grid, read back with 4-point (cubic) Lagrange
+// interpolation. F is even in d, so the point before 0 mirrors the one after it.
+class FineF {
+ public:
+  FineF(double sigma, double d_max, double step) : step_(step) {
+    const int n = static_cast<int>(std::ceil(d_max / step)) + 4;
+    g_.resize(n);
+    for (int j = 0; j < n; ++j)
+      g_[j] = disk_gaussian(j * step, sigma);
+  }
+  double operator()(double d) const {
+    const double x = d / step_;
+    const int j = static_cast<int>(x);
+    if (j + 2 >= static_cast<int>(g_.size())) return 0;  // beyond sqrt(2) R: F < 1e-9
+    const double t = x - j;
+    const double gm = j == 0 ? g_[1] : g_[j - 1];
+    const double g0 = g_[j], g1 = g_[j + 1], g2 = g_[j + 2];
+    // Newton form of the cubic through the nodes 0, 1, -1, 2.
+    return g0 + t * ((g1 - g0) + (t - 1) * (0.5 * (g1 - 2 * g0 + gm) +
+                                            (t + 1) * (g2 - 3 * g1 + 3 * g0 - gm) / 6));
+  }
+
+ private:
+  double step_;
+  std::vector<double> g_;
+};
+
+}  // namespace
+
+PathTables::PathTables(const PathTableParams& p) : p_(p) {
+  validate(p);
+  sigma_.resize(p.n_sigma);
+  extent_.resize(p.n_sigma);
+  log_q_ = std::log(p.sigma_max / p.sigma_min) / (p.n_sigma - 2);
+  sigma_[0] = 0;
+  for (int k = 1; k < p.n_sigma; ++k)
+    sigma_[k] = p.sigma_min * std::exp((k - 1) * log_q_);
+  sigma_[p.n_sigma - 1] = p.sigma_max;
+  for (int k = 0; k < p.n_sigma; ++k)
+    extent_[k] = 1 + p.extent_k * sigma_[k];
+}
+
+PathTables PathTables::generate(const PathTableParams& params, int threads) {
+  PathTables t(params);
+  const PathTableParams& p = t.p_;
+  t.f_.assign(size_t(p.n_sigma) * p.n_distance, 0.0f);
+  t.s_.assign(size_t(p.n_sigma) * p.n_v * p.n_u, 0.0f);
+
+  auto make_slice = [&t, &p](int k) {
+    const double sigma = t.sigma_[k], R = t.extent_[k];
+    float* f = &t.f_[size_t(k) * p.n_distance];
+    for (int i = 0; i < p.n_distance; ++i)
+      f[i] = float(disk_gaussian(t.distance_node(i, k), sigma));
+    const double hu = 2 * R / (p.n_u - 1);
+    if (sigma == 0) {
+      for (int j = 0; j < p.n_v; ++j) {
+        const double v = t.v_node(j, k);
+        const double c = std::sqrt(std::max(0.0, 1 - v * v));
+        float* row = &t.s_[(size_t(k) * p.n_v + j) * p.n_u];
+        for (int i = 0; i < p.n_u; ++i)
+          row[i] = float(std::clamp(t.u_node(i, k), -c, c) + c);
+      }
+      return;
+    }
+    const FineF fine(sigma, std::sqrt(2.0) * R, std::min(sigma / 16, R / 1024));
+    const int panels = std::max(1, static_cast<int>(std::ceil(hu / sigma)));
+    const double w = hu / panels;
+    using Gauss4 = boost::math::quadrature::gauss<double, 4>;
+    const auto& x = Gauss4::abscissa();  // the positive nodes on [-1, 1]
+    const auto& gw = Gauss4::weights();
+    // Where F is exactly 1 or 0 (|d - 1| >= 40 sigma, disk_gaussian.h) the cell's integral
+    // is its width or 0; the fine grid holds those exact values, so skipping is exact.
+    const double d_one = 1 - 40 * sigma, d_zero = 1 + 40 * sigma;
+    // S(-u) = S(R) - S(u): integrate up to the first node at or right of u = 0 (index
+    // half) and mirror the rest; u_i = -u_(n_u - 1 - i).
+    const int half = p.n_u / 2;
+    for (int j = 0; j < p.n_v; ++j) {
+      const double v = t.v_node(j, k), v2 = v * v;
+      float* row = &t.s_[(size_t(k) * p.n_v + j) * p.n_u];
+      std::vector<double> S(half + 1);
+      double sum = 0;
+      for (int i = 0; i < half; ++i) {
+        const double u0 = t.u_node(i, k), u1 = u0 + hu;
+        const double near = std::min(std::abs(u0), std::abs(u1));
+        const double d_far = std::hypot(std::max(std::abs(u0), std::abs(u1)), v);
+        const double d_near = u0 < 0 && u1 > 0 ? v : std::hypot(near, v);
+        if (d_near >= d_zero) {
+          // nothing to add
+        } else if (d_far <= d_one) {
+          sum += hu;
+        } else {
+          for (int m = 0; m < panels; ++m) {
+            const double c = u0 + (m + 0.5) * w, r = 0.5 * w;
+            double cell = 0;
+            for (size_t q = 0; q < x.size(); ++q) {
+              const double dx = r * x[q];
+              const double f = (x[q] == 0) ? fine(std::sqrt(c * c + v2))
+                                           : fine(std::sqrt((c - dx) * (c - dx) + v2)) +
+                                                 fine(std::sqrt((c + dx) * (c + dx) + v2));
+              cell += gw[q] * f;
+            }
+            sum += r * cell;
+          }
+        }
+        S[i + 1] = sum;
+      }
+      const int mirror = p.n_u - 1 - half;  // == half - 1 (n_u even) or half (odd)
+      const double total = S[half] + S[mirror];
+      for (int i = 0; i <= half; ++i)
+        row[i] = float(S[i]);
+      for (int i = half + 1; i < p.n_u; ++i)
+        row[i] = float(total - S[p.n_u - 1 - i]);
+    }
+  };
+
+  int n = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
+  n = std::clamp(n, 1, p.n_sigma);
+  std::atomic<int> next{0};
+  auto worker = [&] {
+    for (int k; (k = next.fetch_add(1)) < p.n_sigma;)
+      make_slice(k);
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < n; ++i)
+    pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool)
+    th.join();
+  return t;
+}
+
+// ---------------------------------------------------------------- lookups
+
+void PathTables::locate_sigma(double sigma, int& k, double& w) const {
+  double c;
+  if (sigma <= 0) {
+    c = 0;
+  } else if (sigma < p_.sigma_min) {
+    c = sigma / p_.sigma_min;
+  } else {
+    c = 1 + std::log(sigma / p_.sigma_min) / log_q_;
+  }
+  k = std::min(static_cast<int>(c), p_.n_sigma - 2);
+  w = std::min(c - k, 1.0);
+}
+
+double PathTables::f_slice(int k, double d) const {
+  const double x = d * (p_.n_distance - 1) / extent_[k];
+  if (x > p_.n_distance - 1) return 0;
+  const int i = std::min(static_cast<int>(x), p_.n_distance - 2);
+  const double a = x - i;
+  return (1 - a) * f_node(i, k) + a * f_node(i + 1, k);
+}
+
+double PathTables::s_slice(int k, double u, double v) const {
+  const double R = extent_[k];
+  v = std::abs(v);
+  if (v > R) return 0;
+  const double y = v * (p_.n_v - 1) / R;
+  const int j = std::min(static_cast<int>(y), p_.n_v - 2);
+  const double b = y - j;
+  const double x = (std::clamp(u, -R, R) + R) * (p_.n_u - 1) / (2 * R);
+  const int i = std::min(static_cast<int>(x), p_.n_u - 2);
+  const double a = x - i;
+  const double lo = (1 - a) * s_node(i, j, k) + a * s_node(i + 1, j, k);
+  const double hi = (1 - a) * s_node(i, j + 1, k) + a * s_node(i + 1, j + 1, k);
+  return (1 - b) * lo + b * hi;
+}
+
+double PathTables::path_slice(int k, double u0, double u1, double v) const {
+  const double len = u1 - u0;  // >= 0
+  const double h = 2 * extent_[k] / (p_.n_u - 1);
+  const double mid = len >= h ? 0.0 : f_slice(k, std::hypot(0.5 * (u0 + u1), v));
+  if (len <= 0.5 * h) return mid;
+  const double quotient = (s_slice(k, u1, v) - s_slice(k, u0, v)) / len;
+  if (len >= h) return quotient;
+  const double w = 2 * len / h - 1;
+  return (1 - w) * mid + w * quotient;
+}
+
+namespace {
+
+// The closed-form integral from -inf to u of the wide-Gaussian expansion of F along the
+// line at distance v (disk_gaussian.h): with x = u' / sigma, a = v / sigma and
+// P(r) = 1 + (r - 2) / (8 s^2) + (r^2 - 8 r + 8) / (192 s^4), r = x^2 + a^2 written as
+// c0 + c2 x^2 + c4 x^4, and the Gaussian moments M_n(X) = int_-inf^X x^n exp(-x^2 / 2) dx:
+// M0 = sqrt(pi / 2) erfc(-X / sqrt 2), M2 = M0 - X e, M4 = 3 M2 - X^3 e, e = exp(-X^2 / 2).
+double wide_S(double u, double v, double sigma) {
+  const double a2 = (v / sigma) * (v / sigma);
+  const double is2 = 1 / (sigma * sigma), is4 = is2 * is2;
+  const double c0 = 1 + (a2 - 2) * is2 / 8 + (a2 * a2 - 8 * a2 + 8) * is4 / 192;
+  const double c2 = is2 / 8 + (2 * a2 - 8) * is4 / 192;
+  const double c4 = is4 / 192;
+  const double X = u / sigma;
+  const double e = std::exp(-0.5 * X * X);
+  const double m0 = kSqrtHalfPi * std::erfc(-X * kInvSqrt2);
+  const double m2 = m0 - X * e;
+  const double m4 = 3 * m2 - X * X * X * e;
+  return 0.5 / sigma * std::exp(-0.5 * a2) * (c0 * m0 + c2 * m2 + c4 * m4);
+}
+
+void check_finite(double x, const char* name) {
+  if (!std::isfinite(x)) bad(std::string("path tables: ") + name + " must be finite", x);
+}
+void check_sigma(double sigma) {
+  if (!(std::isfinite(sigma) && sigma >= 0))
+    bad("path tables: sigma must be finite and >= 0", sigma);
+}
+
+}  // namespace
+
+double PathTables::disk_gaussian_table(double d, double sigma) const {
+  check_sigma(sigma);
+  if (!(std::isfinite(d) && d >= 0)) bad("path tables: d must be finite and >= 0", d);
+  if (sigma > p_.sigma_max) return disk_gaussian_wide(d, sigma);
+  int k;
+  double w;
+  locate_sigma(sigma, k, w);
+  return (1 - w) * f_slice(k, d) + w * f_slice(k + 1, d);
+}
+
+double PathTables::path_table_S(double u, double v, double sigma) const {
+  check_sigma(sigma);
+  check_finite(u, "u");
+  check_finite(v, "v");
+  if (sigma > p_.sigma_max) return wide_S(u, v, sigma);
+  int k;
+  double w;
+  locate_sigma(sigma, k, w);
+  return (1 - w) * s_slice(k, u, v) + w * s_slice(k + 1, u, v);
+}
+
+double PathTables::path_integral(double u0, double u1, double v, double sigma) const {
+  check_sigma(sigma);
+  check_finite(u0, "u0");
+  check_finite(u1, "u1");
+  check_finite(v, "v");
+  if (u1 < u0) std::swap(u0, u1);
+  v = std::abs(v);
+  if (sigma > p_.sigma_max) {
+    // Exact up to rounding, which the quotient amplifies by 1 / len: F' is ~F / sigma, so
+    // below 1e-6 sigma the midpoint's error (len^2 F'' / 24) is smaller.
+    const double len = u1 - u0;
+    if (len < 1e-6 * sigma) return disk_gaussian_wide(std::hypot(0.5 * (u0 + u1), v), sigma);
+    return (wide_S(u1, v, sigma) - wide_S(u0, v, sigma)) / len;
+  }
+  int k;
+  double w;
+  locate_sigma(sigma, k, w);
+  const double a = path_slice(k, u0, u1, v);
+  return w == 0 ? a : (1 - w) * a + w * path_slice(k + 1, u0, u1, v);
+}
+
+double PathTables::path_average(vec2 p0, vec2 p1, double sigma, double disk_radius) const {
+  if (!(std::isfinite(disk_radius) && disk_radius > 0))
+    bad("path tables: disk_radius must be finite and > 0", disk_radius);
+  check_sigma(sigma);
+  check_finite(p0.x, "p0.x");
+  check_finite(p0.y, "p0.y");
+  check_finite(p1.x, "p1.x");
+  check_finite(p1.y, "p1.y");
+  const vec2 q0 = p0 / disk_radius, q1 = p1 / disk_radius;
+  const double s = sigma / disk_radius;
+  const vec2 dir = q1 - q0;
+  const double len = length(dir);
+  if (!(len > 1e-12)) return disk_gaussian_table(length(0.5 * (q0 + q1)), s);
+  const vec2 t = dir / len;
+  const double u0 = dot(q0, t);
+  const double v = std::abs(q0.x * t.y - q0.y * t.x);
+  return path_integral(u0, u0 + len, v, s);
+}
+
+// ---------------------------------------------------------------- cache
+
+namespace {
+
+void put_u32(std::string& out, uint32_t x) {
+  for (int i = 0; i < 4; ++i)
+    out.push_back(static_cast<char>((x >> (8 * i)) & 0xff));
+}
+void put_u64(std::string& out, uint64_t x) {
+  for (int i = 0; i < 8; ++i)
+    out.push_back(static_cast<char>((x >> (8 * i)) & 0xff));
+}
+void put_f64(std::string& out, double x) {
+  put_u64(out, std::bit_cast<uint64_t>(x));
+}
+uint32_t get_u32(std::string_view in, size_t at) {
+  uint32_t x = 0;
+  for (int i = 0; i < 4; ++i)
+    x |= uint32_t(static_cast<unsigned char>(in[at + i])) << (8 * i);
+  return x;
+}
+uint64_t get_u64(std::string_view in, size_t at) {
+  uint64_t x = 0;
+  for (int i = 0; i < 8; ++i)
+    x |= uint64_t(static_cast<unsigned char>(in[at + i])) << (8 * i);
+  return x;
+}
+double get_f64(std::string_view in, size_t at) {
+  return std::bit_cast<double>(get_u64(in, at));
+}
+
+uint32_t crc_of(std::string_view bytes) {
+  uLong crc = crc32_z(0L, Z_NULL, 0);
+  return static_cast<uint32_t>(
+      crc32_z(crc, reinterpret_cast<const Bytef*>(bytes.data()), bytes.size()));
+}
+
+size_t payload_floats(const PathTableParams& p) {
+  return size_t(p.n_sigma) * p.n_distance + size_t(p.n_sigma) * p.n_v * p.n_u;
+}
+
+std::optional<PathTables> reject(std::string* why, const std::string& reason) {
+  if (why) *why = reason;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string PathTables::serialize() const {
+  std::string out;
+  out.reserve(kHeaderBytes + bytes() + 4);
+  out.append(kMagic, sizeof kMagic);
+  put_u32(out, kFormatVersion);
+  put_u32(out, uint32_t(p_.n_distance));
+  put_u32(out, uint32_t(p_.n_u));
+  put_u32(out, uint32_t(p_.n_v));
+  put_u32(out, uint32_t(p_.n_sigma));
+  put_u32(out, 0);  // reserved
+  put_f64(out, p_.sigma_min);
+  put_f64(out, p_.sigma_max);
+  put_f64(out, p_.extent_k);
+  put_u64(out, uint64_t(bytes()));
+  for (const std::vector<float>* v : {&f_, &s_}) {
+    for (float x : *v)
+      put_u32(out, std::bit_cast<uint32_t>(x));
+  }
+  put_u32(out, crc_of(out));
+  return out;
+}
+
+std::optional<PathTables> PathTables::deserialize(std::string_view in,
+                                                  const PathTableParams& expected,
+                                                  std::string* why) {
+  if (in.size() < kHeaderBytes + 4) return reject(why, "truncated header");
+  if (std::memcmp(in.data(), kMagic, sizeof kMagic) != 0) return reject(why, "bad magic");
+  const uint32_t version = get_u32(in, 8);
+  if (version != kFormatVersion) {
+    return reject(why, "format version " + std::to_string(version) + ", expected " +
+                           std::to_string(kFormatVersion));
+  }
+  PathTableParams p;
+  p.n_distance = int(get_u32(in, 12));
+  p.n_u = int(get_u32(in, 16));
+  p.n_v = int(get_u32(in, 20));
+  p.n_sigma = int(get_u32(in, 24));
+  p.sigma_min = get_f64(in, 32);
+  p.sigma_max = get_f64(in, 40);
+  p.extent_k = get_f64(in, 48);
+  if (!(p == expected)) return reject(why, "parameters differ");
+  const size_t floats = payload_floats(p);
+  if (get_u64(in, 56) != floats * 4) return reject(why, "payload size differs");
+  if (in.size() != kHeaderBytes + floats * 4 + 4) return reject(why, "truncated or oversized");
+  if (crc_of(in.substr(0, in.size() - 4)) != get_u32(in, in.size() - 4)) {
+    return reject(why, "checksum mismatch");
+  }
+  PathTables t(p);
+  t.f_.resize(size_t(p.n_sigma) * p.n_distance);
+  t.s_.resize(size_t(p.n_sigma) * p.n_v * p.n_u);
+  size_t at = kHeaderBytes;
+  for (std::vector<float>* v : {&t.f_, &t.s_}) {
+    for (float& x : *v) {
+      x = std::bit_cast<float>(get_u32(in, at));
+      at += 4;
+    }
+  }
+  return t;
+}
+
+PathTables PathTables::load_or_generate(const std::string& path, const PathTableParams& params,
+                                        PathTableCacheResult* result) {
+  PathTableCacheResult r;
+  r.path = path;
+  if (!path.empty()) {
+    std::error_code ec;
+    if (fs::exists(path, ec)) {
+      try {
+        std::string why;
+        std::optional<PathTables> t = deserialize(read_file(path), params, &why);
+        if (t) {
+          r.loaded = true;
+          if (result) *result = r;
+          return std::move(*t);
+        }
+        r.note = path + ": stale cache (" + why + "), regenerated";
+      } catch (const std::exception& e) {
+        r.note = std::string(e.what()) + ", regenerated";
+      }
+    } else {
+      r.note = path + ": no cache, generated";
+    }
+  } else {
+    r.note = "no cache directory, generated in memory";
+  }
+  PathTables t = generate(params);
+  if (!path.empty()) {
+    try {
+      std::error_code ec;
+      fs::create_directories(fs::path(path).parent_path(), ec);
+      write_file_atomic(path, t.serialize());
+      r.written = true;
+    } catch (const std::exception& e) {
+      r.note += std::string("; not written: ") + e.what();
+    }
+  }
+  if (result) *result = r;
+  return t;
+}
+
+std::string PathTables::default_cache_dir() {
+  auto env = [](const char* name) {
+    const char* v = std::getenv(name);
+    return std::string(v ? v : "");
+  };
+  if (std::string d = env("SUNGLINT_CACHE_DIR"); !d.empty()) return d;
+  if (std::string d = env("XDG_CACHE_HOME"); !d.empty()) return d + "/sunglint";
+  if (std::string d = env("HOME"); !d.empty()) return d + "/.cache/sunglint";
+  std::error_code ec;
+  const fs::path tmp = fs::temp_directory_path(ec);
+  return ec ? std::string() : (tmp / "sunglint").string();
+}
+
+namespace {
+struct Shared {
+  PathTableCacheResult result;
+  PathTables tables;
+  Shared()
+      : tables(PathTables::load_or_generate(
+            PathTables::default_cache_dir().empty()
+                ? std::string()
+                : PathTables::default_cache_dir() + "/" + PathTables::kCacheFileName,
+            {}, &result)) {}
+};
+const Shared& shared_state() {
+  static const Shared s;  // thread-safe initialisation (C++11 "magic statics")
+  return s;
+}
+}  // namespace
+
+const PathTables& PathTables::shared() {
+  return shared_state().tables;
+}
+const PathTableCacheResult& PathTables::shared_cache_result() {
+  return shared_state().result;
+}
+
+}  // namespace sg
