@@ -119,39 +119,6 @@ std::string scene_table(const SceneResult& sc) {
   return o.str();
 }
 
-std::string equal_cost_html(const EqualCost& e) {
-  std::ostringstream o;
-  o << "<p class=\"equal-cost\">Equal cost, target " << code(e.target) << " ("
-    << fmt("%.3g", e.target_ms) << " ms per frame, RMSE " << fmt("%.3g", e.target_rmse) << "): ";
-  switch (e.cost.status) {
-    case CurveStatus::interpolated:
-      o << "supersampling at the same cost takes <b>" << fmt("%.3g", e.cost.spp)
-        << "</b> samples per pixel and reaches RMSE <b>" << fmt("%.3g", e.cost.rmse) << "</b>; ";
-      break;
-    case CurveStatus::below:
-      o << "it costs less than the cheapest supersampling budget; ";
-      break;
-    case CurveStatus::above:
-      o << "it costs more than the largest supersampling budget; ";
-      break;
-  }
-  switch (e.rmse.status) {
-    case CurveStatus::interpolated:
-      o << "to match its RMSE supersampling needs <b>" << fmt("%.3g", e.rmse.spp)
-        << "</b> samples per pixel, " << fmt("%.3g", e.rmse.ms) << " ms per frame (<b>"
-        << fmt("%.3g", e.rmse.ms / e.target_ms) << "&times;</b> its time).";
-      break;
-    case CurveStatus::below:
-      o << "the cheapest supersampling budget already matches its RMSE.";
-      break;
-    case CurveStatus::above:
-      o << "no budget of the curve matches its RMSE.";
-      break;
-  }
-  o << "</p>\n";
-  return o.str();
-}
-
 std::string scene_section(const SceneResult& sc, const StudyResults& r) {
   const std::string id = "scene-" + file_slug(sc.name);
   std::ostringstream o;
@@ -163,7 +130,10 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
     << fmt("%.3g", sc.reference.at(Region::near).flicker) << ", far "
     << fmt("%.3g", sc.reference.at(Region::far).flicker) << ".</p>\n";
   o << scene_table(sc);
-  if (sc.equal_cost) o << equal_cost_html(*sc.equal_cost);
+  if (sc.equal_cost) {
+    o << "<p class=\"equal-cost\">"
+      << equal_cost_sentence(*sc.equal_cost, code(sc.equal_cost->target)) << "</p>\n";
+  }
   if (!sc.budgets.empty()) {
     o << "<div class=\"chart\"><canvas id=\"chart-cost-" << file_slug(sc.name) << "\" data-scene=\""
       << html_escape(sc.name) << "\"></canvas></div>\n";

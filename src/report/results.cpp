@@ -330,37 +330,6 @@ std::string md_code(const std::string& s) {
   return "`" + s + "`";
 }
 
-std::string equal_cost_text(const EqualCost& e) {
-  std::string t = "Equal cost, target " + md_code(e.target) + " (" + fmt("%.3g", e.target_ms) +
-                  " ms per frame, RMSE " + fmt("%.4g", e.target_rmse) + "): ";
-  switch (e.cost.status) {
-    case CurveStatus::interpolated:
-      t += "supersampling at the same cost takes " + fmt("%.3g", e.cost.spp) +
-           " samples per pixel and reaches RMSE " + fmt("%.4g", e.cost.rmse) + "; ";
-      break;
-    case CurveStatus::below:
-      t += "it costs less than the cheapest supersampling budget; ";
-      break;
-    case CurveStatus::above:
-      t += "it costs more than the largest supersampling budget; ";
-      break;
-  }
-  switch (e.rmse.status) {
-    case CurveStatus::interpolated:
-      t += "supersampling needs " + fmt("%.3g", e.rmse.spp) + " samples per pixel (" +
-           fmt("%.3g", e.rmse.ms) + " ms per frame, " + fmt("%.3g", e.rmse.ms / e.target_ms) +
-           "x its time) to match its RMSE.";
-      break;
-    case CurveStatus::below:
-      t += "the cheapest supersampling budget already matches its RMSE.";
-      break;
-    case CurveStatus::above:
-      t += "no supersampling budget of the curve matches its RMSE.";
-      break;
-  }
-  return t;
-}
-
 }  // namespace
 
 std::string results_to_markdown(const StudyResults& r, const std::string& prefix) {
@@ -441,7 +410,8 @@ std::string results_to_markdown(const StudyResults& r, const std::string& prefix
           << " |\n";
       }
     }
-    if (sc.equal_cost) o << "\n" << equal_cost_text(*sc.equal_cost) << "\n";
+    if (sc.equal_cost)
+      o << "\n" << equal_cost_sentence(*sc.equal_cost, md_code(sc.equal_cost->target)) << "\n";
   }
   return o.str();
 }
@@ -485,7 +455,9 @@ std::string results_summary_markdown(const StudyResults& r, const std::string& p
     o << "\n";
   }
   for (const auto& sc : r.scenes) {
-    if (sc.equal_cost) o << "\n**" << sc.name << "**. " << equal_cost_text(*sc.equal_cost) << "\n";
+    if (sc.equal_cost)
+      o << "\n**" << sc.name << "**. "
+        << equal_cost_sentence(*sc.equal_cost, md_code(sc.equal_cost->target)) << "\n";
   }
   return o.str();
 }
@@ -503,6 +475,37 @@ std::string replace_marked_section(const std::string& text, const std::string& b
   std::string c = content;
   if (!c.empty() && c.back() != '\n') c += '\n';
   return text.substr(0, body + 1) + c + text.substr(e);
+}
+
+std::string equal_cost_sentence(const EqualCost& e, const std::string& target_markup) {
+  std::string t = "Equal cost, target " + target_markup + " (" + fmt("%.3g", e.target_ms) +
+                  " ms per frame, RMSE " + fmt("%.3g", e.target_rmse) + "): ";
+  switch (e.cost.status) {
+    case CurveStatus::interpolated:
+      t += "supersampling at the same cost takes " + fmt("%.3g", e.cost.spp) +
+           " samples per pixel and reaches RMSE " + fmt("%.3g", e.cost.rmse) + "; ";
+      break;
+    case CurveStatus::below:
+      t += "it costs less than the cheapest supersampling budget; ";
+      break;
+    case CurveStatus::above:
+      t += "it costs more than the largest supersampling budget; ";
+      break;
+  }
+  switch (e.rmse.status) {
+    case CurveStatus::interpolated:
+      t += "supersampling needs " + fmt("%.3g", e.rmse.spp) + " samples per pixel (" +
+           fmt("%.3g", e.rmse.ms) + " ms per frame, " + fmt("%.3g", e.rmse.ms / e.target_ms) +
+           "x its time) to match its RMSE.";
+      break;
+    case CurveStatus::below:
+      t += "the cheapest supersampling budget already matches its RMSE.";
+      break;
+    case CurveStatus::above:
+      t += "no supersampling budget of the curve matches its RMSE.";
+      break;
+  }
+  return t;
 }
 
 }  // namespace sg

@@ -103,6 +103,10 @@ std::vector<std::vector<std::string>> parse_csv(const std::string& text);
 // study folder).
 std::string results_to_markdown(const StudyResults& r, const std::string& image_prefix = "");
 
+// The equal-cost comparison in words; `target_markup` is the target's label as the
+// document writes it (Markdown code, escaped HTML).
+std::string equal_cost_sentence(const EqualCost& e, const std::string& target_markup);
+
 // A short summary for the README: one picture, the RMSE and temporal error of each
 // method on each scene, the equal-cost line of each scene.
 std::string results_summary_markdown(const StudyResults& r, const std::string& picture);

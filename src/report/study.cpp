@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <map>
 #include <set>
 
 #include "base/atomic_file.h"
@@ -50,16 +49,17 @@ std::unique_ptr<Method> build(const StudyVariant& v) {
   return v.make ? v.make() : make_method(v.name, v.options);
 }
 
-// Relative cost of one frame, for the progress bar only: the samples per pixel of the
-// supersampling estimators, and a few for every other method (a few times `point`).
-double cost_weight(const StudyVariant& v) {
-  if (v.name == "reference" || v.name == "supersample") return double(v.options.samples.total());
-  return 2.0;
-}
-
+// Samples per pixel of the supersampling estimators; 0 for other methods.
 double samples_per_pixel(const StudyVariant& v) {
   if (v.name == "reference" || v.name == "supersample") return double(v.options.samples.total());
   return 0.0;
+}
+
+// Relative cost of one frame, for the progress bar only: the samples per pixel of the
+// supersampling estimators, and a few for every other method (a few times `point`).
+double cost_weight(const StudyVariant& v) {
+  const double spp = samples_per_pixel(v);
+  return spp > 0 ? spp : 2.0;
 }
 
 struct Sequence {
