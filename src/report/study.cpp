@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "base/atomic_file.h"
@@ -85,10 +86,7 @@ std::vector<std::string> unique_slugs(const std::vector<std::string>& labels) {
 
 class Study {
  public:
-  Study(const StudyConfig& c, const StudyProgress& p)
-      : c_(c),
-        progress_(p),
-        cache_(c.cache_dir.empty() ? (fs::path(c.out_dir) / "cache").string() : c.cache_dir) {}
+  Study(const StudyConfig& c, const StudyProgress& p) : c_(c), progress_(p) {}
 
   StudyResults run();
 
@@ -119,7 +117,7 @@ class Study {
     const bool stateful = build(v)->stateful();
     int missing = 0;
     for (const auto& k : keys(s, label, stateful))
-      missing += cache_.has(label, k) ? 0 : 1;
+      missing += cache_->has(label, k) ? 0 : 1;
     return stateful && missing > 0 ? c_.last_frame - c_.first_frame + 1 : missing;
   }
   void report(double fraction, const std::string& what) {
@@ -132,7 +130,7 @@ class Study {
 
   const StudyConfig& c_;
   const StudyProgress& progress_;
-  FrameCache cache_;
+  std::optional<FrameCache> cache_;  // created once the configuration is checked
   double total_weight_ = 0, done_weight_ = 0;
 };
 
@@ -147,7 +145,7 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   std::vector<double> ms(n, 0.0);
   std::vector<bool> have(n, false);
   for (int q = 0; q < n; ++q) {
-    auto f = cache_.load(label, k[q]);
+    auto f = cache_->load(label, k[q]);
     if (f && f->image.width == model.width() && f->image.height == model.height()) {
       s.frames[q] = std::move(f->image);
       ms[q] = f->ms;
@@ -165,7 +163,7 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   auto keep = [&](int f, const Image& img, double t) {
     const int q = f - a;
     if (q < 0 || q >= n) return;  // frames before the range (warm-up) are not kept
-    cache_.store(label, k[q], img, t);
+    cache_->store(label, k[q], img, t);
     s.frames[q] = img;
     ms[q] = t;
     ++s.rendered;
@@ -393,6 +391,7 @@ StudyResults Study::run() {
   std::error_code ec;
   fs::create_directories(c_.out_dir, ec);
   if (!fs::is_directory(c_.out_dir)) throw Error("--out: cannot create '" + c_.out_dir + "'");
+  cache_.emplace(c_.cache_dir.empty() ? (fs::path(c_.out_dir) / "cache").string() : c_.cache_dir);
 
   // Plan: the work still to do, for the progress bar.
   for (const auto& s : c_.scenes) {

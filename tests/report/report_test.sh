@@ -92,6 +92,7 @@ expect_fail "no methods" "--method: give at least one" \
   "$bin" compare "$src/scenes/simple.json" --out "$work/x"
 expect_fail "paper row" "--paper-row: unknown row 'Nope'" \
   "$bin" compare "$src/scenes/simple.json" -m point --paper-row Nope=point --out "$work/x"
+[ -e "$work/x" ] && fail "a failed command left $work/x behind" || pass
 expect_fail "no ffmpeg" "ffmpeg: not found; install it" \
   env PATH=/nonexistent "$bin" compare "$src/scenes/simple.json" -m point --frames 0-1 \
   --width 16 --reference 1x1x1 --budgets none -q --out "$work/noff"
