@@ -23,8 +23,10 @@ build: configure
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
+# FULL=1: the paper-sized study (640x360, 30 frames); DOCS=1: then regenerate docs/results.md
+# and the README's demo section from its results.json.
 demo: build
-	bash scripts/demo.sh $(BUILD)/sunglint
+	bash scripts/demo.sh $(if $(FULL),--full) $(if $(DOCS),--docs) $(BUILD)/sunglint
 
 bench: build
 	$(BUILD)/sunglint bench scenes/simple.json scenes/smooth.json scenes/medium.json scenes/high.json

@@ -1,21 +1,53 @@
 #!/usr/bin/env bash
-# The demo: renders the four shared scenes with `point` and `reference`, writes
-# pictures, and prints the RMSE of point sampling against the reference.
-# Usage: scripts/demo.sh [path/to/sunglint]
+# The demo: `sunglint compare` on the four shared scenes with every method of the
+# catalogue, against a cached reference, and the report a user opens to see and trust
+# the result (out/demo/index.html).
+#
+#   scripts/demo.sh [--full] [--docs] [path/to/sunglint]
+#
+# Default: 240x135, frames 0-9, reference 12x12x8, in out/demo (docs/report.md has the
+# measured time; later runs take the frames from the cache). --full: the paper-sized
+# study, 640x360, frames 0-29, reference 12x12x8, in out/demo-full (21 times the
+# default's pixels x frames).
+# --docs: then regenerate docs/results.md, docs/img/ and the README's demo section from
+# the study's results.json (sunglint report).
+#
+# Methods: every catalogue method at its defaults, except `reference` (the ground truth
+# column) and `supersample`, which appears as `supersample --samples 6x6x1` (the paper's
+# MSAA-like baseline); the quality-cost curve covers its other budgets.
 set -euo pipefail
-bin=${1:-build/sunglint}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-out=$root/out/demo
-mkdir -p "$out"
-printf '%-8s %-12s %s\n' scene "rmse(point)" "psnr(dB)"
-for s in simple smooth medium high; do
-  scene=$root/scenes/$s.json
-  "$bin" render "$scene" -m reference -q --out "$out/${s}_reference.exr" >/dev/null
-  "$bin" render "$scene" -m point -q --out "$out/${s}_point.exr" >/dev/null
-  for m in reference point; do
-    "$bin" render "$scene" -m $m -q --samples 2x2x2 --exposure 3 --out "$out/${s}_${m}.png" >/dev/null
-  done
-  "$bin" diff "$out/${s}_point.exr" "$out/${s}_reference.exr" --json --out "$out/${s}_diff.png" |
-    python3 -c "import json,sys; d=json.load(sys.stdin); print('%-8s %-12.6f %.2f' % ('$s', d['rmse'], d['psnr']))"
+full=0 docs=0 bin=$root/build/sunglint
+for arg in "$@"; do
+  case $arg in
+    --full) full=1 ;;
+    --docs) docs=1 ;;
+    -h | --help) sed -n '2,17p' "$0"; exit 0 ;;
+    *) bin=$arg ;;
+  esac
 done
-echo "pictures and images in $out"
+[ -x "$bin" ] || { echo "demo: $bin not found; build first (make build)" >&2; exit 1; }
+
+if [ $full -eq 1 ]; then
+  out=out/demo-full size=(--width 640 --height 360) frames=0-29
+else
+  out=out/demo size=(--width 240 --height 135) frames=0-9
+fi
+methods=()
+while read -r m; do
+  case $m in
+    reference) ;;
+    supersample) methods+=(-m "supersample --samples 6x6x1") ;;
+    *) methods+=(-m "$m") ;;
+  esac
+done < <("$bin" compare --list-methods)
+
+start=$(date +%s)
+(cd "$root" && "$bin" compare scenes/simple.json scenes/smooth.json scenes/medium.json scenes/high.json \
+  "${methods[@]}" "${size[@]}" --frames $frames --reference 12x12x8 --out "$out")
+echo "demo: $(($(date +%s) - start)) s"
+if [ $docs -eq 1 ]; then
+  (cd "$root" && "$bin" report "$out/results.json" --markdown docs/results.md \
+    --images docs/img --readme README.md)
+fi
+echo "demo: open $root/$out/index.html"

@@ -1,6 +1,8 @@
 #include "cli/args.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include "base/error.h"
 
@@ -32,6 +34,16 @@ void check_frame(int frame, const Scene& scene, const std::string& flag) {
                 std::to_string(scene.animation.frames - 1) + "] (animation.frames is " +
                 std::to_string(scene.animation.frames) + ")");
   }
+}
+
+void apply_image_size(Scene& scene, int width, int height) {
+  if (width <= 0 && height <= 0) return;
+  int w = width, h = height;
+  if (w <= 0)
+    w = std::max(1, static_cast<int>(std::lround(double(h) * scene.width / scene.height)));
+  if (h <= 0)
+    h = std::max(1, static_cast<int>(std::lround(double(w) * scene.height / scene.width)));
+  set_image_size(scene, w, h);
 }
 
 }  // namespace sg

@@ -30,14 +30,7 @@ struct RenderArgs {
 
 void run_render(RenderArgs& a) {
   Scene scene = load_scene(a.scene_path);
-  if (a.width > 0 || a.height > 0) {
-    int w = a.width, h = a.height;
-    if (w <= 0)
-      w = std::max(1, static_cast<int>(std::lround(double(h) * scene.width / scene.height)));
-    if (h <= 0)
-      h = std::max(1, static_cast<int>(std::lround(double(w) * scene.height / scene.width)));
-    set_image_size(scene, w, h);
-  }
+  apply_image_size(scene, a.width, a.height);
   FrameRange range{a.frame, a.frame};
   const bool sequence = !a.frames.empty();
   if (sequence) range = parse_frame_range(a.frames, "--frames");

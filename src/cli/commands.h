@@ -11,5 +11,7 @@ void add_render_command(CLI::App& app);
 void add_diff_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
+void add_report_command(CLI::App& app);
 
 }  // namespace sg

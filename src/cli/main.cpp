@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   sg::add_diff_command(app);
   sg::add_info_command(app);
   sg::add_bench_command(app);
+  sg::add_compare_command(app);
+  sg::add_report_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

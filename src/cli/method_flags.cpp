@@ -118,12 +118,12 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->capture_default_str();
 }
 
-MethodVariant parse_method_variant(const std::string& text) {
+MethodVariant parse_method_variant(const std::string& text, const std::string& flag) {
   std::istringstream in(text);
   std::vector<std::string> words;
   for (std::string w; in >> w;)
     words.push_back(w);
-  if (words.empty()) throw Error("--methods: empty method variant");
+  if (words.empty()) throw Error(flag + ": empty method variant");
   MethodVariant v;
   v.label = text;
   v.name = words[0];
@@ -134,9 +134,9 @@ MethodVariant parse_method_variant(const std::string& text) {
   try {
     app.parse(args);
   } catch (const CLI::ParseError& e) {
-    throw Error("--methods: '" + text + "': " + e.what());
+    throw Error(flag + ": '" + text + "': " + e.what());
   }
-  flags.finish("--methods: '" + text + "': ");
+  flags.finish(flag + ": '" + text + "': ");
   v.options = flags.options;
   make_method(v.name, v.options);  // validates the name and the options
   return v;

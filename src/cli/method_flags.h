@@ -21,12 +21,13 @@ struct MethodFlags {
 void add_method_flags(CLI::App& app, MethodFlags& flags);
 
 // A method variant as `compare` takes it: "NAME [FLAGS...]", e.g.
-// "supersample --samples 6x6x1". Throws sg::Error naming the variant on a bad flag.
+// "supersample --samples 6x6x1". Returns the method name and its options; throws
+// sg::Error naming `flag` (the option that gave it) and the variant on a bad flag.
 struct MethodVariant {
   std::string label;  // the text as given, used in tables and file names
   std::string name;
   MethodOptions options;
 };
-MethodVariant parse_method_variant(const std::string& text);
+MethodVariant parse_method_variant(const std::string& text, const std::string& flag = "--methods");
 
 }  // namespace sg

@@ -1,0 +1,118 @@
+#include "report/cache.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "image/image_io.h"
+
+namespace sg {
+namespace fs = std::filesystem;
+
+std::string canonical_label(const std::string& label) {
+  std::string out;
+  bool space = false;
+  for (char c : label) {
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      space = !out.empty();
+      continue;
+    }
+    if (space) out += ' ';
+    space = false;
+    out += c;
+  }
+  return out;
+}
+
+std::string file_slug(const std::string& label) {
+  std::string out;
+  for (char c : label) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (std::isalnum(u)) {
+      out += static_cast<char>(std::tolower(u));
+    } else if (!out.empty() && out.back() != '-') {
+      out += '-';
+    }
+  }
+  if (out.size() > 48) out.resize(48);
+  while (!out.empty() && out.back() == '-')
+    out.pop_back();
+  return out.empty() ? "method" : out;
+}
+
+std::string frame_key(const Scene& scene, const std::string& label, int frame, int history_from) {
+  std::string key = "sunglint-frame/1\nsize=" + std::to_string(scene.width) + "x" +
+                    std::to_string(scene.height) + "\nframe=" + std::to_string(frame) +
+                    "\nmethod=" + canonical_label(label) + "\n";
+  if (history_from >= 0) key += "history_from=" + std::to_string(history_from) + "\n";
+  return key + "scene=" + scene_to_json(scene) + "\n";
+}
+
+uint64_t fnv1a64(std::string_view bytes) {
+  uint64_t h = 0xcbf29ce484222325ull;  // FNV offset basis
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 0x100000001b3ull;  // FNV prime
+  }
+  return h;
+}
+
+FrameCache::FrameCache(std::string dir) : dir_(std::move(dir)) {
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (!fs::is_directory(dir_)) throw Error(dir_ + ": cannot create the cache folder");
+}
+
+std::string FrameCache::path(const std::string& label, const std::string& key) const {
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a64(key)));
+  return (fs::path(dir_) / (file_slug(label) + "-" + hash + ".exr")).string();
+}
+
+namespace {
+
+// The sidecar's render time when it holds `key`.
+std::optional<double> read_sidecar(const std::string& image_path, const std::string& key) {
+  std::error_code ec;
+  if (!fs::exists(image_path, ec) || !fs::exists(image_path + ".json", ec)) return std::nullopt;
+  try {
+    auto j = nlohmann::json::parse(read_file(image_path + ".json"));
+    if (j.at("key").get<std::string>() != key) return std::nullopt;
+    return j.at("ms").get<double>();
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+bool FrameCache::has(const std::string& label, const std::string& key) const {
+  return read_sidecar(path(label, key), key).has_value();
+}
+
+std::optional<CachedFrame> FrameCache::load(const std::string& label,
+                                            const std::string& key) const {
+  const std::string p = path(label, key);
+  auto ms = read_sidecar(p, key);
+  if (!ms) return std::nullopt;
+  try {
+    return CachedFrame{read_image(p), *ms};
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+void FrameCache::store(const std::string& label, const std::string& key, const Image& image,
+                       double ms) const {
+  const std::string p = path(label, key);
+  std::error_code ec;
+  fs::remove(p + ".json", ec);  // the old sidecar must not vouch for the new image
+  write_image(p, image);
+  write_file_atomic(p + ".json", nlohmann::json{{"key", key}, {"ms", ms}}.dump(1) + "\n");
+}
+
+}  // namespace sg

@@ -1,0 +1,68 @@
+// The frame cache of `sunglint compare`: every rendered frame (the reference's and every
+// method's) is kept on disk, so a second study reuses the references and a killed study
+// resumes where it stopped.
+//
+// A frame is keyed by the text of everything its pixels depend on: the scene as canonical
+// JSON (scene_to_json, at the study's image size), the frame number, the image size, the
+// method variant with its flags (samples and seed included, "reference --samples 12x12x8")
+// and, for a stateful method, the frame its history starts from. Thread counts, other
+// methods and output folders are not part of it. The file is
+//     CACHE/<slug of the variant>-<FNV-1a 64 of the key, hex>.exr
+// with a sidecar CACHE/...exr.json holding the key text and the frame's render time. Both
+// are written whole (temporary file + rename), the sidecar last, so a frame is trusted
+// only when its sidecar exists and holds the same key text (which also rules out hash
+// collisions); anything else is rendered again.
+//
+// The key does not hold the renderer's version: after changing a method's code, delete
+// its files (CACHE/<slug>-*) or the whole cache.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace sg {
+
+// Whitespace collapsed to single spaces and trimmed, so "supersample  --samples 6x6x1 "
+// and "supersample --samples 6x6x1" name one variant.
+std::string canonical_label(const std::string& label);
+
+// A file-name-safe form of a label: lower-case letters, digits and single dashes, at most
+// 48 characters ("supersample --samples 6x6x1" -> "supersample-samples-6x6x1").
+std::string file_slug(const std::string& label);
+
+// The key text of one frame (see the header). history_from < 0: stateless method.
+std::string frame_key(const Scene& scene, const std::string& label, int frame,
+                      int history_from = -1);
+
+// 64-bit FNV-1a (Fowler, Noll, Vo) of `bytes`.
+uint64_t fnv1a64(std::string_view bytes);
+
+struct CachedFrame {
+  Image image;
+  double ms = 0;  // render time recorded when the frame was rendered
+};
+
+class FrameCache {
+ public:
+  // Creates `dir` (and its parents) if needed.
+  explicit FrameCache(std::string dir);
+  const std::string& dir() const { return dir_; }
+
+  // CACHE/<slug(label)>-<hash(key)>.exr
+  std::string path(const std::string& label, const std::string& key) const;
+  // True when a complete frame with this key is stored.
+  bool has(const std::string& label, const std::string& key) const;
+  // The stored frame, or nothing when absent, incomplete or unreadable.
+  std::optional<CachedFrame> load(const std::string& label, const std::string& key) const;
+  void store(const std::string& label, const std::string& key, const Image& image, double ms) const;
+
+ private:
+  std::string dir_;
+};
+
+}  // namespace sg

@@ -1,0 +1,247 @@
+#include "report/html.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "base/atomic_file.h"
+#include "report/assets.h"
+#include "report/cache.h"
+#include "report/paper.h"
+
+namespace sg {
+namespace fs = std::filesystem;
+
+std::string html_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        o += "&amp;";
+        break;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      case '\'':
+        o += "&#39;";
+        break;
+      default:
+        o += c;
+    }
+  }
+  return o;
+}
+
+namespace {
+
+std::string fmt(const char* f, double v) {
+  if (std::isinf(v)) return v > 0 ? "&infin;" : "-&infin;";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+std::string code(const std::string& s) {
+  return "<code>" + html_escape(s) + "</code>";
+}
+
+// Equal-width labels above a picture or video whose columns are equal.
+std::string column_labels(const SceneResult& sc) {
+  std::string o = "<div class=\"cols\" style=\"--cols:" + std::to_string(sc.methods.size() + 1) +
+                  "\"><span>reference</span>";
+  for (const auto& v : sc.methods)
+    o += "<span>" + html_escape(v.label) + "</span>";
+  return o + "</div>\n";
+}
+
+std::string paper_table(const StudyResults& r) {
+  std::ostringstream o;
+  o << "<table class=\"num\"><thead><tr><th rowspan=\"2\">paper row</th><th rowspan=\"2\">our "
+       "variant</th>";
+  for (const char* s : kPaperScenes)
+    o << "<th colspan=\"2\">" << s << "</th>";
+  o << "</tr><tr>";
+  for (size_t k = 0; k < kPaperScenes.size(); ++k)
+    o << "<th>paper</th><th>ours</th>";
+  o << "</tr></thead><tbody>\n";
+  for (const PaperComparison& c : compare_with_paper(r)) {
+    o << "<tr><th>" << html_escape(c.method) << "</th><td>"
+      << (c.label.empty() ? "&ndash;" : code(c.label)) << "</td>";
+    for (size_t k = 0; k < kPaperScenes.size(); ++k) {
+      o << "<td>" << fmt("%.4f", c.paper[k]) << " <small>(" << fmt("%.2f", c.paper_ratio[k])
+        << ")</small></td><td>";
+      if (c.ours[k]) {
+        o << fmt("%.3g", *c.ours[k]);
+        if (c.ours_ratio[k]) o << " <small>(" << fmt("%.2f", *c.ours_ratio[k]) << ")</small>";
+      } else {
+        o << "&ndash;";
+      }
+      o << "</td>";
+    }
+    o << "</tr>\n";
+  }
+  o << "</tbody></table>\n";
+  return o.str();
+}
+
+std::string scene_table(const SceneResult& sc) {
+  std::ostringstream o;
+  o << "<table class=\"num\"><thead><tr><th rowspan=\"2\">variant</th><th colspan=\"4\">whole "
+       "image</th><th colspan=\"2\">near half of the water</th><th colspan=\"2\">far "
+       "half</th><th rowspan=\"2\">ms per frame</th></tr>"
+       "<tr><th>RMSE</th><th>PSNR (dB)</th><th>temporal error</th><th>flicker</th>"
+       "<th>RMSE</th><th>temporal error</th><th>RMSE</th><th>temporal error</th></tr></thead>"
+       "<tbody>\n";
+  auto row = [&](const VariantResult& v, bool reference) {
+    const RegionMetrics &a = v.at(Region::image), &n = v.at(Region::near), &f = v.at(Region::far);
+    o << "<tr" << (reference ? " class=\"ref\"" : "") << "><th>" << code(v.label) << "</th>";
+    if (reference) {
+      o << "<td>&ndash;</td><td>&ndash;</td><td>&ndash;</td><td>" << fmt("%.3g", a.flicker)
+        << "</td><td>&ndash;</td><td>&ndash;</td><td>&ndash;</td><td>&ndash;</td>";
+    } else {
+      o << "<td>" << fmt("%.3g", a.rmse) << "</td><td>" << fmt("%.2f", a.psnr) << "</td><td>"
+        << fmt("%.3g", a.temporal_error) << "</td><td>" << fmt("%.3g", a.flicker) << "</td><td>"
+        << fmt("%.3g", n.rmse) << "</td><td>" << fmt("%.3g", n.temporal_error) << "</td><td>"
+        << fmt("%.3g", f.rmse) << "</td><td>" << fmt("%.3g", f.temporal_error) << "</td>";
+    }
+    o << "<td>" << fmt("%.3g", v.ms_per_frame) << "</td></tr>\n";
+  };
+  row(sc.reference, true);
+  for (const auto& v : sc.methods)
+    row(v, false);
+  o << "</tbody></table>\n";
+  return o.str();
+}
+
+std::string scene_section(const SceneResult& sc, const StudyResults& r) {
+  const std::string id = "scene-" + file_slug(sc.name);
+  std::ostringstream o;
+  o << "<section id=\"" << id << "\"><h2>" << html_escape(sc.name) << "</h2>\n";
+  o << "<p>" << html_escape(sc.file) << ": " << sc.water_pixels
+    << " pixels see water; the near half reaches " << fmt("%.1f", sc.split_distance)
+    << " m from the camera. Reference flicker: whole image "
+    << fmt("%.3g", sc.reference.at(Region::image).flicker) << ", near "
+    << fmt("%.3g", sc.reference.at(Region::near).flicker) << ", far "
+    << fmt("%.3g", sc.reference.at(Region::far).flicker) << ".</p>\n";
+  o << scene_table(sc);
+  if (sc.equal_cost) {
+    o << "<p class=\"equal-cost\">"
+      << equal_cost_sentence(*sc.equal_cost, code(sc.equal_cost->target)) << "</p>\n";
+  }
+  if (!sc.budgets.empty()) {
+    o << "<div class=\"chart\"><canvas id=\"chart-cost-" << file_slug(sc.name) << "\" data-scene=\""
+      << html_escape(sc.name) << "\"></canvas></div>\n";
+  }
+  if (!sc.grid.empty()) {
+    o << "<h3>Frame " << sc.shown_frame << "</h3>\n<figure class=\"grid\">" << column_labels(sc)
+      << "<img src=\"" << html_escape(sc.grid) << "\" alt=\"" << html_escape(sc.name)
+      << ": every method side by side\">\n<figcaption>Rows: the frame after glare and tone "
+         "mapping (orange box: the near crop, blue box: the far crop); the near crop zoomed "
+         "and its difference to the reference; the far crop zoomed and its difference. "
+         "Differences are on linear values (blue: darker than the reference, red: brighter, "
+         "&plusmn;"
+      << fmt("%.3g", sc.error_range)
+      << " at the ends of the scale shown in the reference column).</figcaption></figure>\n";
+  }
+  if (!sc.reference.picture.empty() && !sc.methods.empty()) {
+    o << "<h3>Reference against a method</h3>\n<div class=\"slider\"><label>method <select>";
+    for (const auto& v : sc.methods) {
+      o << "<option value=\"" << html_escape(v.picture) << "\">" << html_escape(v.label)
+        << "</option>";
+    }
+    o << "</select></label><div class=\"compare\"><img class=\"under\" src=\""
+      << html_escape(sc.reference.picture) << "\" alt=\"reference\"><img class=\"over\" src=\""
+      << html_escape(sc.methods.front().picture)
+      << "\" alt=\"method\"><input type=\"range\" min=\"0\" max=\"100\" value=\"50\" "
+         "aria-label=\"split\"></div><p class=\"hint\">left: the method, right: the "
+         "reference; drag to move the split.</p></div>\n";
+  }
+  if (!sc.video.empty()) {
+    o << "<h3>Frames " << r.settings.first_frame << "&ndash;" << r.settings.last_frame
+      << "</h3>\n<figure class=\"video\">" << column_labels(sc) << "<video src=\""
+      << html_escape(sc.video)
+      << "\" controls autoplay muted loop playsinline preload=\"auto\"></video>"
+         "<figcaption>Top: the frames; bottom: the near crop zoomed. Flicker shows as pixels "
+         "that blink from frame to frame.</figcaption></figure>\n";
+  }
+  o << "</section>\n";
+  return o.str();
+}
+
+}  // namespace
+
+std::string report_html(const StudyResults& r) {
+  const StudySettings& s = r.settings;
+  std::ostringstream o;
+  o << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+    << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+    << "<title>sunglint study</title>\n<link rel=\"stylesheet\" href=\"report.css\">\n"
+    << "</head><body>\n<header><h1>sunglint study</h1>\n";
+  o << "<p>" << s.width << "&times;" << s.height << " pixels, frames " << s.first_frame << "&ndash;"
+    << s.last_frame << ", reference " << code(s.reference) << ". Methods:";
+  for (const auto& m : s.methods)
+    o << " " << code(m);
+  o << ".</p>\n";
+  if (!s.command.empty()) o << "<p class=\"cmd\">" << code(s.command) << "</p>\n";
+  o << "<nav>";
+  for (const auto& sc : r.scenes)
+    o << "<a href=\"#scene-" << file_slug(sc.name) << "\">" << html_escape(sc.name) << "</a> ";
+  o << "<a href=\"#notes\">definitions</a></nav></header>\n<main>\n";
+
+  o << "<section id=\"table1\"><h2>Table 1 of Podee et al. (2021) beside ours</h2>\n"
+    << "<p>RMSE, with the ratio to No AA in brackets. The paper measures pictures after "
+       "glare and tone mapping against its reference; we measure linear pixel values against "
+       "ours. Compare the ratios, not the absolute values.</p>\n"
+    << paper_table(r) << "</section>\n";
+
+  o << "<section id=\"charts\"><h2>Error per method and scene</h2>\n<div class=\"charts\">"
+    << "<div class=\"chart\"><canvas id=\"chart-rmse\"></canvas></div>"
+    << "<div class=\"chart\"><canvas id=\"chart-temporal\"></canvas></div>"
+    << "<div class=\"chart\"><canvas id=\"chart-nearfar\"></canvas></div>"
+    << "<div class=\"chart\"><canvas id=\"chart-time\"></canvas></div></div>\n"
+    << "<p>The quality&ndash;cost curve of supersampling (RMSE against time per frame, "
+       "both axes logarithmic) is drawn in each scene's section, with each method as a "
+       "point.</p></section>\n";
+
+  for (const auto& sc : r.scenes)
+    o << scene_section(sc, r);
+
+  o << "<section id=\"notes\"><h2>Definitions</h2><ul>\n"
+    << "<li>Metrics are computed on linear pixel values, never on the pictures: RMSE over "
+       "all pixels of all frames; PSNR = 20 log<sub>10</sub>(1 / RMSE); temporal error = RMS "
+       "over pixels and frame pairs of (I<sub>f</sub> &minus; I<sub>f&minus;1</sub>) &minus; "
+       "(R<sub>f</sub> &minus; R<sub>f&minus;1</sub>); flicker = mean |I<sub>f</sub> &minus; "
+       "I<sub>f&minus;1</sub>|.</li>\n"
+    << "<li>Near and far: the pixels whose centre ray meets the water, sorted by the "
+       "distance from the camera to that point; the nearer half and the farther half.</li>\n"
+    << "<li>Pictures and videos: value &times; 2<sup>" << fmt("%g", s.exposure)
+    << "</sup>, glare (a sum of Gaussian blurs and a six-point star of the part above 1), "
+       "ACES filmic curve (Narkowicz 2016), sRGB; identical for every method.</li>\n"
+    << "<li>Time per frame: wall time of one frame on all threads of this machine; frames "
+       "taken from the cache keep the time measured when they were rendered.</li>\n"
+    << "<li>Charts: <a href=\"chart.js-LICENSE.md\">Chart.js</a> (MIT).</li></ul></section>\n";
+  o << "</main>\n";
+
+  std::string data = results_to_json(r);
+  for (size_t p = 0; (p = data.find("</", p)) != std::string::npos; p += 3)
+    data.replace(p, 2, "<\\/");  // never close the script element early
+  o << "<script id=\"sg-results\" type=\"application/json\">\n"
+    << data << "</script>\n<script src=\"chart.umd.min.js\"></script>\n"
+    << "<script src=\"report.js\"></script>\n</body></html>\n";
+  return o.str();
+}
+
+void write_report_html(const StudyResults& r, const std::string& out_dir) {
+  const fs::path d(out_dir);
+  for (const EmbeddedFile& f : report_assets())
+    write_file_atomic((d / std::string(f.name)).string(), f.bytes);
+  write_file_atomic((d / "index.html").string(), report_html(r));
+}
+
+}  // namespace sg

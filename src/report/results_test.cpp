@@ -1,0 +1,230 @@
+// results.json and results.csv round-trip and hold every scene, variant, region and metric;
+// the Markdown and the README section are generated from them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "base/error.h"
+#include "report/paper.h"
+#include "report/results.h"
+
+namespace sg {
+namespace {
+
+VariantResult variant(const std::string& label, const std::string& name, double seed) {
+  VariantResult v;
+  v.label = label;
+  v.name = name;
+  v.stateful = seed > 2;
+  v.spp = name == "supersample" ? 4 : 0;
+  v.ms_per_frame = 1.0 / 3.0 + seed;
+  v.frames_rendered = 3;
+  v.frames_cached = 7;
+  for (int k = 0; k < 4; ++k) {
+    RegionMetrics& m = v.regions[k];
+    m.rmse = 0.01 * (seed + 1) / (k + 1) + 1e-17;
+    m.psnr = -20 * std::log10(m.rmse);
+    m.temporal_error = m.rmse / 7;
+    m.flicker = m.rmse / 11;
+    m.flicker_reference = m.rmse / 13;
+    m.pixels = 1000 - k;
+  }
+  v.picture = "img/x/" + name + ".png";
+  v.error_map = "img/x/" + name + "-error.png";
+  return v;
+}
+
+StudyResults sample() {
+  StudyResults r;
+  StudySettings& s = r.settings;
+  s.width = 32;
+  s.height = 18;
+  s.first_frame = 2;
+  s.last_frame = 5;
+  s.fps = 30;
+  s.reference = "reference --samples 4x4x2";
+  s.methods = {"point", "supersample --samples 2x2x1", "odd, \"label\""};
+  s.budgets = {"supersample --samples 1x1x1", "supersample --samples 2x2x1"};
+  s.equal_cost_target = "point";
+  s.exposure = 3;
+  s.paper_rows = {{"No AA", "point"}};
+  s.command = "sunglint compare ...";
+  for (const char* name : {"simple", "high"}) {
+    SceneResult sc;
+    sc.name = name;
+    sc.file = std::string("scenes/") + name + ".json";
+    sc.shown_frame = 5;
+    sc.water_pixels = 300;
+    sc.near_pixels = 150;
+    sc.far_pixels = 150;
+    sc.split_distance = 12.25;
+    sc.near_crop = {1, 2, 8, 4};
+    sc.far_crop = {3, 4, 8, 4};
+    sc.error_range = 0.125;
+    sc.reference = variant(s.reference, "reference", 0);
+    sc.reference.regions[0].rmse = 0;
+    sc.reference.regions[0].psnr = INFINITY;
+    sc.methods = {variant("point", "point", 1),
+                  variant("supersample --samples 2x2x1", "supersample", 2),
+                  variant("odd, \"label\"", "point", 3)};
+    sc.budgets = {variant("supersample --samples 1x1x1", "supersample", 4),
+                  variant("supersample --samples 2x2x1", "supersample", 5)};
+    EqualCost e;
+    e.target = "point";
+    e.target_ms = 1.5;
+    e.target_rmse = 0.02;
+    e.cost = {CurveStatus::interpolated, 2.5, 0.03};
+    e.rmse = {CurveStatus::above, 0, 0};
+    sc.equal_cost = e;
+    sc.grid = std::string("img/") + name + "-grid.png";
+    sc.video = std::string("video/") + name + ".mp4";
+    r.scenes.push_back(sc);
+  }
+  r.scenes[1].equal_cost.reset();
+  return r;
+}
+
+void expect_same(const VariantResult& a, const VariantResult& b) {
+  EXPECT_EQ(a.label, b.label);
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.stateful, b.stateful);
+  EXPECT_EQ(a.spp, b.spp);
+  EXPECT_EQ(a.ms_per_frame, b.ms_per_frame);
+  EXPECT_EQ(a.frames_rendered, b.frames_rendered);
+  EXPECT_EQ(a.frames_cached, b.frames_cached);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(a.regions[k].rmse, b.regions[k].rmse);
+    EXPECT_EQ(a.regions[k].psnr, b.regions[k].psnr);
+    EXPECT_EQ(a.regions[k].temporal_error, b.regions[k].temporal_error);
+    EXPECT_EQ(a.regions[k].flicker, b.regions[k].flicker);
+    EXPECT_EQ(a.regions[k].flicker_reference, b.regions[k].flicker_reference);
+    EXPECT_EQ(a.regions[k].pixels, b.regions[k].pixels);
+  }
+  EXPECT_EQ(a.picture, b.picture);
+  EXPECT_EQ(a.error_map, b.error_map);
+}
+
+TEST(Results, JsonRoundTrips) {
+  const StudyResults r = sample();
+  const std::string text = results_to_json(r);
+  const StudyResults b = results_from_json(text, "results.json");
+  EXPECT_EQ(results_to_json(b), text);
+  EXPECT_EQ(b.settings.methods, r.settings.methods);
+  EXPECT_EQ(b.settings.paper_rows, r.settings.paper_rows);
+  ASSERT_EQ(b.scenes.size(), 2u);
+  for (size_t s = 0; s < 2; ++s) {
+    const SceneResult &x = r.scenes[s], &y = b.scenes[s];
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.split_distance, y.split_distance);
+    EXPECT_EQ(x.far_crop.x, y.far_crop.x);
+    expect_same(x.reference, y.reference);
+    ASSERT_EQ(x.methods.size(), y.methods.size());
+    for (size_t m = 0; m < x.methods.size(); ++m)
+      expect_same(x.methods[m], y.methods[m]);
+    ASSERT_EQ(x.budgets.size(), y.budgets.size());
+    EXPECT_EQ(x.equal_cost.has_value(), y.equal_cost.has_value());
+  }
+  EXPECT_TRUE(std::isinf(b.scenes[0].reference.regions[0].psnr));
+  EXPECT_EQ(b.scenes[0].equal_cost->cost.spp, 2.5);
+  EXPECT_EQ(b.scenes[0].equal_cost->rmse.status, CurveStatus::above);
+  EXPECT_THROW(results_from_json("{}", "x.json"), Error);
+  EXPECT_THROW(results_from_json("not json", "x.json"), Error);
+}
+
+TEST(Results, CsvHoldsEverySceneVariantRegionAndMetric) {
+  const StudyResults r = sample();
+  const auto rows = parse_csv(results_to_csv(r));
+  ASSERT_FALSE(rows.empty());
+  const auto& head = rows.front();
+  ASSERT_EQ(head.size(), kCsvColumns.size());
+  for (size_t k = 0; k < kCsvColumns.size(); ++k)
+    EXPECT_EQ(head[k], kCsvColumns[k]);
+  // 2 scenes x (reference + 3 methods + 2 budgets) x 4 regions.
+  EXPECT_EQ(rows.size(), 1u + 2 * 6 * 4);
+  std::set<std::string> seen;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    ASSERT_EQ(row.size(), head.size());
+    seen.insert(row[0] + "|" + row[1] + "|" + row[2] + "|" + row[3]);
+    // Values round-trip exactly.
+    const SceneResult& sc = r.scenes[row[0] == "simple" ? 0 : 1];
+    const VariantResult* v = nullptr;
+    if (row[1] == "reference") v = &sc.reference;
+    for (const auto& m : row[1] == "budget" ? sc.budgets : sc.methods) {
+      if (row[1] != "reference" && m.label == row[2]) v = &m;
+    }
+    ASSERT_NE(v, nullptr) << row[2];
+    int region = -1;
+    for (int k = 0; k < 4; ++k) {
+      if (row[3] == kRegionNames[k]) region = k;
+    }
+    ASSERT_GE(region, 0);
+    const RegionMetrics& m = v->regions[region];
+    EXPECT_EQ(std::stod(row[4]), m.rmse);
+    EXPECT_EQ(std::stod(row[5]), m.psnr);
+    EXPECT_EQ(std::stod(row[6]), m.temporal_error);
+    EXPECT_EQ(std::stod(row[7]), m.flicker);
+    EXPECT_EQ(std::stod(row[8]), m.flicker_reference);
+    EXPECT_EQ(std::stod(row[9]), v->ms_per_frame);
+    EXPECT_EQ(std::stol(row[11]), m.pixels);
+  }
+  for (const auto& sc : r.scenes) {
+    for (const auto& v : sc.methods) {
+      for (const char* region : kRegionNames)
+        EXPECT_TRUE(seen.count(sc.name + "|method|" + v.label + "|" + region)) << v.label;
+    }
+  }
+  EXPECT_THROW(parse_csv("a,\"b"), Error);
+}
+
+TEST(Results, MarkdownAndReadmeSection) {
+  const StudyResults r = sample();
+  const std::string md = results_to_markdown(r, "../out/");
+  for (const auto& sc : r.scenes) {
+    EXPECT_NE(md.find("### " + sc.name), std::string::npos);
+    EXPECT_NE(md.find("](../out/" + sc.grid + ")"), std::string::npos);
+  }
+  EXPECT_NE(md.find("`supersample --samples 2x2x1`"), std::string::npos);
+  EXPECT_NE(md.find("| No AA | `point` | 0.0797 (1.00) |"), std::string::npos);
+  EXPECT_NE(md.find("reaches RMSE 0.03"), std::string::npos);
+
+  const std::string readme = "intro\n<!-- demo:begin -->\nold\nold\n<!-- demo:end -->\nrest\n";
+  const std::string filled = replace_marked_section(readme, "<!-- demo:begin -->",
+                                                    "<!-- demo:end -->", "new", "README.md");
+  EXPECT_EQ(filled, "intro\n<!-- demo:begin -->\nnew\n<!-- demo:end -->\nrest\n");
+  EXPECT_EQ(replace_marked_section(filled, "<!-- demo:begin -->", "<!-- demo:end -->", "new",
+                                   "README.md"),
+            filled);
+  EXPECT_THROW(replace_marked_section("x", "<!-- demo:begin -->", "<!-- demo:end -->", "", "R"),
+               Error);
+  const std::string summary = results_summary_markdown(r, "docs/img/simple-grid.png");
+  EXPECT_NE(summary.find("![simple"), std::string::npos);
+  EXPECT_NE(summary.find("| `point` |"), std::string::npos);
+}
+
+TEST(Paper, RowsMatchVariantsAndRatiosCompare) {
+  const auto m = match_paper_rows({"point", "supersample --samples 6x6x1", "staa"}, {});
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m[0], (std::pair<std::string, std::string>{"No AA", "point"}));
+  EXPECT_EQ(m[2], (std::pair<std::string, std::string>{"Ours (uniform)", "staa"}));
+  const auto o = match_paper_rows({"point", "lean --x 1"}, {{"LEAN", "lean  --x 1"}});
+  EXPECT_EQ(o[1], (std::pair<std::string, std::string>{"LEAN", "lean --x 1"}));
+  EXPECT_THROW(match_paper_rows({"point"}, {{"Nope", "point"}}), Error);
+  EXPECT_THROW(match_paper_rows({"point"}, {{"LEAN", "lean"}}), Error);
+
+  StudyResults r = sample();
+  r.settings.paper_rows = {{"No AA", "point"}, {"32x MSAA", "supersample --samples 2x2x1"}};
+  const auto c = compare_with_paper(r);
+  ASSERT_EQ(c.size(), paper_table1().size());
+  EXPECT_NEAR(c[1].paper_ratio[0], 0.0795 / 0.0797, 1e-12);
+  ASSERT_TRUE(c[1].ours[0] && c[1].ours_ratio[0]);
+  EXPECT_NEAR(*c[1].ours_ratio[0],
+              r.scenes[0].methods[1].regions[0].rmse / r.scenes[0].methods[0].regions[0].rmse,
+              1e-12);
+  EXPECT_FALSE(c[1].ours[1]);  // the study has no "smooth" scene
+  EXPECT_FALSE(c[2].ours[0]);  // nor a LEAN variant
+}
+
+}  // namespace
+}  // namespace sg

@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# The study as a user meets it: `sunglint compare` on two shared scenes at a tiny size
+# writes a report that opens in headless Chromium with no console error, every picture
+# and video decoded and every chart drawn (check_page.mjs, which also saves a
+# screenshot); a copy broken on purpose (a missing picture, a missing video, a script
+# error) is caught; bad options fail naming the option; without ffmpeg the error says
+# what to do.
+# Usage: report_test.sh SUNGLINT SOURCE_DIR WORK_DIR
+set -u
+bin=$1 src=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+fails=0 passes=0
+fail() { echo "FAIL $*"; fails=$((fails + 1)); }
+pass() { passes=$((passes + 1)); }
+
+if ! command -v node >/dev/null; then
+  echo "FAIL node is not installed (Debian package nodejs; scripts/install-deps.sh)"
+  exit 1
+fi
+chromium=${CHROMIUM:-/usr/bin/chromium}
+[ -x "$chromium" ] || { echo "FAIL $chromium is not installed (Debian package chromium)"; exit 1; }
+
+study=$work/study
+run_compare() {
+  "$bin" compare "$src/scenes/simple.json" "$src/scenes/high.json" -m point \
+    -m "supersample --samples 2x2x1" --frames 0-2 --width 48 --reference 2x2x2 \
+    --budgets 1x1x1,2x2x1 -q "$@"
+}
+if out=$(run_compare --out "$study" 2>&1); then pass; else fail "compare: $out"; fi
+for f in index.html results.json results.csv results.md chart.umd.min.js report.js report.css \
+  img/simple-grid.png img/high-grid.png video/simple.mp4 video/high.mp4; do
+  [ -s "$study/$f" ] && pass || fail "missing $study/$f"
+done
+grep -q "report: $study/index.html" <<<"$out" && pass || fail "compare does not say where the report is: $out"
+
+# The page as a reader opens it.
+if shot=$(node "$src/tests/report/check_page.mjs" "$study/index.html" "$work/screenshot.png" \
+  --chromium "$chromium" 2>&1); then
+  pass
+  grep -q "6 images, 2 videos, 6 charts" <<<"$shot" && pass || fail "unexpected page content: $shot"
+else
+  fail "report page: $shot"
+fi
+[ -s "$work/screenshot.png" ] && pass || fail "no screenshot"
+
+# A broken copy must be caught: the check can fail.
+broken=$work/broken
+cp -r "$study" "$broken"
+rm "$broken/img/simple-grid.png" "$broken/video/high.mp4"
+echo 'window.undefinedFunction();' >>"$broken/report.js"
+if bad=$(node "$src/tests/report/check_page.mjs" "$broken/index.html" "$work/broken.png" \
+  --chromium "$chromium" 2>&1); then
+  fail "a broken report passed the check: $bad"
+else
+  for want in "image does not load: img/simple-grid.png" "video/high.mp4" "undefinedFunction"; do
+    grep -qF "$want" <<<"$bad" && pass || fail "broken report: '$want' not reported: $bad"
+  done
+fi
+
+# Resume: a second run renders nothing and writes the same results.
+cp "$study/results.json" "$work/first.json"
+run_compare --out "$study" --no-video >/dev/null 2>&1 && pass || fail "second run"
+grep -q '"frames_rendered": 0' "$study/results.json" && pass || fail "second run rendered frames"
+if grep -q '"frames_rendered": [1-9]' "$study/results.json"; then fail "second run rendered frames"; else pass; fi
+
+# Bad options name themselves; a missing ffmpeg says what to do.
+expect_fail() {
+  local name=$1 pattern=$2
+  shift 2
+  local o
+  if o=$("$@" 2>&1); then
+    fail "$name: succeeded"
+  elif grep -qF -- "$pattern" <<<"$o"; then
+    pass
+  else
+    fail "$name: wanted '$pattern', got: $o"
+  fi
+}
+expect_fail "unknown method" "--method: unknown method 'nope'" \
+  "$bin" compare "$src/scenes/simple.json" -m nope --out "$work/x"
+expect_fail "bad variant flag" "--method: 'supersample --samples 6x6'" \
+  "$bin" compare "$src/scenes/simple.json" -m "supersample --samples 6x6" --out "$work/x"
+expect_fail "bad budgets" "--budgets: expected SxSxT" \
+  "$bin" compare "$src/scenes/simple.json" -m point --budgets 2x2 --out "$work/x"
+expect_fail "bad reference" "--reference: expected SxSxT" \
+  "$bin" compare "$src/scenes/simple.json" -m point --reference 8 --out "$work/x"
+expect_fail "frames" "--frames: frame 60 is outside" \
+  "$bin" compare "$src/scenes/simple.json" -m point --frames 0-60 --out "$work/x"
+expect_fail "target" "--equal-cost-target: 'staa' is not one of the methods" \
+  "$bin" compare "$src/scenes/simple.json" -m point --equal-cost-target staa --out "$work/x"
+expect_fail "no methods" "--method: give at least one" \
+  "$bin" compare "$src/scenes/simple.json" --out "$work/x"
+expect_fail "paper row" "--paper-row: unknown row 'Nope'" \
+  "$bin" compare "$src/scenes/simple.json" -m point --paper-row Nope=point --out "$work/x"
+[ -e "$work/x" ] && fail "a failed command left $work/x behind" || pass
+expect_fail "no ffmpeg" "ffmpeg: not found; install it" \
+  env PATH=/nonexistent "$bin" compare "$src/scenes/simple.json" -m point --frames 0-1 \
+  --width 16 --reference 1x1x1 --budgets none -q --out "$work/noff"
+if env PATH=/nonexistent "$bin" compare "$src/scenes/simple.json" -m point --frames 0-1 --width 16 \
+  --reference 1x1x1 --budgets none -q --no-video --out "$work/noff" >/dev/null 2>&1; then
+  pass
+else
+  fail "--no-video still needs ffmpeg"
+fi
+"$bin" compare --list-methods | grep -qx point && pass || fail "--list-methods"
+
+# `report` regenerates the Markdown and a README section from results.json.
+printf 'top\n<!-- demo:begin -->\nold\n<!-- demo:end -->\nend\n' >"$work/README.md"
+if o=$("$bin" report "$study/results.json" --markdown "$work/docs/results.md" \
+  --images "$work/docs/img" --readme "$work/README.md" 2>&1); then pass; else fail "report: $o"; fi
+grep -q '](img/simple-grid.png)' "$work/docs/results.md" && pass || fail "results.md links"
+grep -q '](docs/img/simple-grid.png)' "$work/README.md" && pass || fail "README picture"
+grep -q '^| `point` |' "$work/README.md" && pass || fail "README table"
+grep -q 'old' "$work/README.md" && fail "README section not replaced" || pass
+[ -s "$work/docs/img/high-grid.png" ] && pass || fail "grid not copied"
+
+echo "report_test: $passes passed, $fails failed (screenshot: $work/screenshot.png)"
+[ $fails -eq 0 ]
