@@ -83,6 +83,18 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->capture_default_str();
   choice(app, "--nyquist", s.nyquist_max_axis, {{"max", true}, {"norm", false}},
          "staa: projected frequency as the larger axis frequency (max) or the norm");
+  choice(app, "--footprint", s.footprint,
+         {{"none", FootprintMode::none},
+          {"gaussian", FootprintMode::gaussian},
+          {"exact", FootprintMode::exact}},
+         "staa: pixel-footprint term: none (the paper), gaussian (moment-matched, added to the "
+         "RDF) or exact (swept parallelogram against the disk where nothing aliases)");
+  app.add_option("--curvature-limit", s.curvature_limit,
+                 "staa with a footprint: hand a resolved wave to the aliasing set when its "
+                 "slope's departure from linear across the pixel exceeds this many disk radii "
+                 "of reflection (0: never)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e6));
 
   // lean (methods/lean.h)
   app.add_option("--lean-size", o.lean.size,

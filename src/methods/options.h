@@ -20,6 +20,10 @@ std::string to_string(const SampleCounts& s);
 
 enum class NdfMode { uniform, per_pixel };
 enum class FallbackMode { quadrature, riemann };
+// The pixel-footprint term (docs/method.md): none (the paper's method), the footprint as
+// a Gaussian added to the RDF, or the exact swept parallelogram for pixels without
+// aliasing waves.
+enum class FootprintMode { none, gaussian, exact };
 
 // The choices of the paper's method (Podee et al. 2021) that `staa` and `staa-temporal`
 // expose; defaults chosen by measurement (docs/results.md).
@@ -43,6 +47,11 @@ struct StaaOptions {
   double alias_start = 0.2;                          // --alias-start (cycles per pixel, Eq. 20)
   double alias_end = 0.5;                            // --alias-end
   bool nyquist_max_axis = true;                      // --nyquist max|norm (shading/aliasing.h)
+  FootprintMode footprint = FootprintMode::none;     // --footprint none|gaussian|exact
+  // --curvature-limit X: with a footprint term, a resolved wave whose slope departs from
+  // its linearisation across the pixel by more than X disk radii of reflection is handed
+  // to the aliasing set (0: never).
+  double curvature_limit = 0;
 };
 
 // `lean` (methods/lean.h): LEAN mapping of the waves' slopes.

@@ -6,12 +6,14 @@
 
 #include "scene/footprint.h"
 #include "shading/aliasing.h"
+#include "shading/swept_footprint.h"
 #include "shading/gaussian_disk.h"
 #include "shading/kernel_fit.h"
 #include "shading/ndf.h"
 #include "shading/path_table.h"
 #include "shading/radiance.h"
 #include "shading/rdf.h"
+#include "shading/reflection_footprint.h"
 #include "shading/reflection_path.h"
 
 namespace sg {
@@ -59,6 +61,20 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
   AliasingParams ap{o_.alias_start, o_.alias_end,
                     o_.nyquist_max_axis ? FrequencyNorm::max : FrequencyNorm::norm};
   alias_fractions(m.waves, J, ap, alpha);
+  const bool footprint = o_.footprint != FootprintMode::none;
+  if (footprint && o_.curvature_limit > 0) {
+    // Where the linearisation breaks: a resolved wave of phase half-width D across the
+    // pixel has a slope A |k| cos(theta) that departs from its tangent by up to
+    // A |k| D^2 / 2; the reflection moves twice as far. Past `curvature_limit` disk radii
+    // the wave goes to the aliasing set, ramping over a factor of two.
+    const double limit = o_.curvature_limit * m.light.radius;
+    for (size_t k = 0; k < alpha.size(); ++k) {
+      const vec2 kv(m.waves.a[k], m.waves.b[k]);
+      const double D = footprint_phase_half_width(kv, J);
+      const double dev = m.waves.A[k] * length(kv) * D * D;  // 2 * A |k| D^2 / 2
+      alpha[k] = std::max(alpha[k], std::clamp(dev / limit - 1.0, 0.0, 1.0));
+    }
+  }
   bool any = false;
   resolved.resize(alpha.size());
   for (size_t k = 0; k < alpha.size(); ++k) {
@@ -70,23 +86,23 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
   reflection_path(m, fp, ft, o_.segments, resolved, path);
   if (path_out) *path_out = &path;
   const FresnelMode fm = m.scene.surface.fresnel;
-  if (!any) {
+  if (!any && !footprint) {
     // Step 3: the temporal method, exactly (shade() returns temporal_value for these).
     const PathShares p = temporal_shares(m, path);
+    out.temporal = true;
     out.in_light = p.in_light;
     out.below = p.below;
     out.fresnel = p.fresnel;
     return out;
   }
-  out.aliasing = true;
+  out.aliasing = any;
 
-  // Step 4: the NDF of the aliasing waves.
-  const vec2 xz(fp.point.x, fp.point.z);
+  // Step 4: the NDF of the aliasing waves (none: a point at the resolved normal).
   PlaneGaussian ndf;
-  if (o_.ndf == NdfMode::uniform) {
+  if (any && o_.ndf == NdfMode::uniform) {
     ndf.cov = uniform_ndf_covariance(m.waves, alpha);
-  } else {
-    ndf = per_pixel_ndf(m.waves, alpha, xz, J, ft.end);
+  } else if (any) {
+    ndf = per_pixel_ndf(m.waves, alpha, path.phases, J);
     if (!o_.ndf_mean_shift) ndf.mean = vec2(0);
   }
   // The NDF's centre at each instant: minus the resolved slope, plus the mean shift.
@@ -110,8 +126,33 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
     return out;
   }
   const mat2 Jc = ndf_to_light_plane_jacobian(nc_now, path.view, m.light);
-  const mat2 cov_r = rdf_covariance(Jc, ndf.cov);
+  mat2 cov_r = rdf_covariance(Jc, ndf.cov);
   const double R = m.light.tan_radius;
+
+  // The pixel-footprint term: the pixel square mapped to the light plane by the resolved
+  // reflection's derivatives D (shading/reflection_footprint.h).
+  if (footprint) {
+    const ReflectionFootprint rf = reflection_footprint(m, fp, resolved, path.phases, ndf.mean);
+    if (rf.valid) {
+      if (o_.footprint == FootprintMode::exact && !any) {
+        out.in_light = swept_parallelogram_share(centre, valid, rf.D, R);
+        // The horizon: the parallelogram moment-matched, as for the Gaussian term.
+        const mat2 cov_fp = rf.D * glm::transpose(rf.D) / 12.0;
+        double below = 0;
+        int counted = 0;
+        for (int k = 0; k <= K; ++k) {
+          if (!valid[k]) continue;
+          below += below_horizon_share(m.light, centre[k], cov_fp);
+          ++counted;
+        }
+        out.below = below / counted;
+        out.in_light = std::clamp(out.in_light, 0.0, 1.0 - out.below);
+        return out;
+      }
+      // A unit box has variance 1/12 per axis: covariance D D^T / 12, added to the RDF's.
+      cov_r += rf.D * glm::transpose(rf.D) / 12.0;
+    }
+  }
 
   // The share below the horizon, averaged over the path's instants.
   double below = 0;
@@ -187,7 +228,7 @@ double StaaMethod::shade(const FrameContext& ctx, int i, int j) const {
   const Shares s = shares(ctx, i, j, &path);
   if (!s.hit)
     return miss_radiance(ctx.model, normalize(ctx.model.camera.direction(i + 0.5, j + 0.5)));
-  if (!s.aliasing) return temporal_value(ctx.model, *path);  // step 3, the temporal method
+  if (s.temporal) return temporal_value(ctx.model, *path);  // step 3, the temporal method
   return combine_radiance(ctx.model, s.fresnel, s.in_light, s.below);
 }
 

@@ -20,83 +20,94 @@ WaveField::WaveField(const std::vector<Wave>& waves) {
   }
 }
 
+void WaveField::phases(double x, double z, double t, WavePhases& out) const {
+  thread_local std::vector<double> theta;
+  const size_t n = size();
+  theta.resize(n);
+  out.s.resize(n);
+  out.c.resize(n);
+  for (size_t i = 0; i < n; ++i) theta[i] = a[i] * x + b[i] * z + c[i] * t + phi[i];
+  sincos_array(theta.data(), out.s.data(), out.c.data(), n);
+}
+
+void WaveField::rotation(double dt, std::vector<double>& rot_c, std::vector<double>& rot_s) const {
+  thread_local std::vector<double> arg;
+  arg.resize(size());
+  rot_c.resize(size());
+  rot_s.resize(size());
+  for (size_t i = 0; i < size(); ++i) arg[i] = c[i] * dt;
+  sincos_array(arg.data(), rot_s.data(), rot_c.data(), size());
+}
+
+void WaveField::shift_phases(const WavePhases& p, std::span<const double> rot_c,
+                             std::span<const double> rot_s, WavePhases& out) const {
+  // sin(theta - d) = sin(theta) cos(d) - cos(theta) sin(d); cos(theta - d) = cos cos + sin sin
+  const size_t n = size();
+  out.s.resize(n);
+  out.c.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double s = p.s[i], co = p.c[i];
+    out.s[i] = s * rot_c[i] - co * rot_s[i];
+    out.c[i] = co * rot_c[i] + s * rot_s[i];
+  }
+}
+
+vec2 WaveField::gradient(const WavePhases& p, std::span<const double> w) const {
+  assert(w.empty() || w.size() == size());
+  double gx = 0, gz = 0;
+  for (size_t i = 0; i < size(); ++i) {
+    const double k = (w.empty() ? 1.0 : w[i]) * A[i] * p.c[i];
+    gx += a[i] * k;
+    gz += b[i] * k;
+  }
+  return {gx, gz};
+}
+
+Hessian WaveField::hessian(const WavePhases& p, std::span<const double> w) const {
+  assert(w.empty() || w.size() == size());
+  Hessian H;
+  for (size_t i = 0; i < size(); ++i) {
+    const double s = -(w.empty() ? 1.0 : w[i]) * A[i] * p.s[i];
+    H.xx += a[i] * a[i] * s;
+    H.xz += a[i] * b[i] * s;
+    H.zz += b[i] * b[i] * s;
+  }
+  return H;
+}
+
 namespace {
 
-// The sines and cosines of every wave's phase a x + b z + c t + phi at one point and
-// time, vectorised (math/simd_trig.h). Per-thread scratch: the wave field is shared by
-// all threads.
-struct PhaseScratch {
-  std::vector<double> theta, s, c;
-};
-
-const PhaseScratch& phases(const WaveField& w, double x, double z, double t) {
-  thread_local PhaseScratch p;
-  const size_t n = w.size();
-  p.theta.resize(n);
-  p.s.resize(n);
-  p.c.resize(n);
-  for (size_t i = 0; i < n; ++i)
-    p.theta[i] = w.a[i] * x + w.b[i] * z + w.c[i] * t + w.phi[i];
-  sincos_array(p.theta.data(), p.s.data(), p.c.data(), n);
+const WavePhases& phases_at(const WaveField& w, double x, double z, double t) {
+  thread_local WavePhases p;
+  w.phases(x, z, t, p);
   return p;
 }
 
 }  // namespace
 
 double WaveField::height(double x, double z, double t) const {
-  const PhaseScratch& p = phases(*this, x, z, t);
+  const WavePhases& p = phases_at(*this, x, z, t);
   double h = 0;
-  for (size_t i = 0; i < size(); ++i)
-    h += A[i] * p.s[i];
+  for (size_t i = 0; i < size(); ++i) h += A[i] * p.s[i];
   return h;
 }
 
 vec2 WaveField::gradient(double x, double z, double t) const {
-  const PhaseScratch& p = phases(*this, x, z, t);
-  double gx = 0, gz = 0;
-  for (size_t i = 0; i < size(); ++i) {
-    const double k = A[i] * p.c[i];
-    gx += a[i] * k;
-    gz += b[i] * k;
-  }
-  return {gx, gz};
+  return gradient(phases_at(*this, x, z, t));
 }
 
 Hessian WaveField::hessian(double x, double z, double t) const {
-  const PhaseScratch& p = phases(*this, x, z, t);
-  Hessian H;
-  for (size_t i = 0; i < size(); ++i) {
-    const double s = -A[i] * p.s[i];
-    H.xx += a[i] * a[i] * s;
-    H.xz += a[i] * b[i] * s;
-    H.zz += b[i] * b[i] * s;
-  }
-  return H;
+  return hessian(phases_at(*this, x, z, t));
 }
 
-vec2 WaveField::gradient_weighted(double x, double z, double t, std::span<const double> w) const {
-  assert(w.size() == size());
-  const PhaseScratch& p = phases(*this, x, z, t);
-  double gx = 0, gz = 0;
-  for (size_t i = 0; i < size(); ++i) {
-    const double k = w[i] * A[i] * p.c[i];
-    gx += a[i] * k;
-    gz += b[i] * k;
-  }
-  return {gx, gz};
+vec2 WaveField::gradient_weighted(double x, double z, double t,
+                                  std::span<const double> w) const {
+  return gradient(phases_at(*this, x, z, t), w);
 }
 
-Hessian WaveField::hessian_weighted(double x, double z, double t, std::span<const double> w) const {
-  assert(w.size() == size());
-  const PhaseScratch& p = phases(*this, x, z, t);
-  Hessian H;
-  for (size_t i = 0; i < size(); ++i) {
-    const double s = -w[i] * A[i] * p.s[i];
-    H.xx += a[i] * a[i] * s;
-    H.xz += a[i] * b[i] * s;
-    H.zz += b[i] * b[i] * s;
-  }
-  return H;
+Hessian WaveField::hessian_weighted(double x, double z, double t,
+                                    std::span<const double> w) const {
+  return hessian(phases_at(*this, x, z, t), w);
 }
 
 }  // namespace sg

@@ -19,6 +19,13 @@ struct Hessian {
   double xx = 0, xz = 0, zz = 0;
 };
 
+// The sine and cosine of every wave's phase theta_i = a_i x + b_i z + c_i t + phi_i at one
+// point and time: height, gradient and Hessian are weighted sums of them, so one
+// (vectorised) evaluation serves all three, and the per-pixel NDF too (shading/ndf.h).
+struct WavePhases {
+  std::vector<double> s, c;  // sin(theta_i), cos(theta_i)
+};
+
 class WaveField {
  public:
   WaveField() = default;
@@ -34,6 +41,17 @@ class WaveField {
   // aliasing sets, Podee et al. 2021 Sec. 3.7). weights.size() == size().
   vec2 gradient_weighted(double x, double z, double t, std::span<const double> weights) const;
   Hessian hessian_weighted(double x, double z, double t, std::span<const double> weights) const;
+
+  // The phases at (x, z, t), vectorised (math/simd_trig.h).
+  void phases(double x, double z, double t, WavePhases& out) const;
+  // The phases dt earlier, by angle subtraction: rot_c[i] = cos(c_i dt), rot_s[i] =
+  // sin(c_i dt) (a table that depends on dt only; see rotation()).
+  void shift_phases(const WavePhases& p, std::span<const double> rot_c,
+                    std::span<const double> rot_s, WavePhases& out) const;
+  void rotation(double dt, std::vector<double>& rot_c, std::vector<double>& rot_s) const;
+  // Sums over precomputed phases; empty weights mean 1 for every wave.
+  vec2 gradient(const WavePhases& p, std::span<const double> weights = {}) const;
+  Hessian hessian(const WavePhases& p, std::span<const double> weights = {}) const;
 
   // Upper bounds over all x, z, t: |h| <= amplitude_bound, |grad h| <= slope_bound.
   double amplitude_bound() const { return amplitude_bound_; }

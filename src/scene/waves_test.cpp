@@ -79,6 +79,24 @@ TEST(Waves, NormalsAreUnitAndAlongMinusGradient) {
   }
 }
 
+TEST(Waves, ShiftedPhasesEqualDirectEvaluation) {
+  WaveField w = medium_field();
+  WavePhases now, earlier, direct;
+  std::vector<double> rc, rs;
+  w.phases(12.0, -40.0, 2.5, now);
+  w.rotation(1.0 / 30, rc, rs);
+  w.shift_phases(now, rc, rs, earlier);
+  w.phases(12.0, -40.0, 2.5 - 1.0 / 30, direct);
+  // The phases reach ~500 rad here; their own rounding is ~500 * 2^-53 = 6e-14.
+  for (size_t i = 0; i < w.size(); ++i) {
+    EXPECT_NEAR(earlier.s[i], direct.s[i], 2e-13);
+    EXPECT_NEAR(earlier.c[i], direct.c[i], 2e-13);
+  }
+  const vec2 g1 = w.gradient(earlier), g2 = w.gradient(12.0, -40.0, 2.5 - 1.0 / 30);
+  EXPECT_NEAR(g1.x, g2.x, 1e-13);
+  EXPECT_NEAR(g1.y, g2.y, 1e-13);
+}
+
 TEST(Waves, BoundsHold) {
   WaveField w = medium_field();
   Pcg32 rng(4, 1);

@@ -7,10 +7,17 @@ namespace sg {
 ReflectionFootprint reflection_footprint(const SceneModel& m, const PixelFootprint& fp,
                                          std::span<const double> weights, double t,
                                          const vec2& shift) {
+  thread_local WavePhases ph;
+  m.waves.phases(fp.point.x, fp.point.z, t, ph);
+  return reflection_footprint(m, fp, weights, ph, shift);
+}
+
+ReflectionFootprint reflection_footprint(const SceneModel& m, const PixelFootprint& fp,
+                                         std::span<const double> weights, const WavePhases& ph,
+                                         const vec2& shift) {
   ReflectionFootprint out;
-  const double x = fp.point.x, z = fp.point.z;
-  const vec2 g = weights.empty() ? m.waves.gradient(x, z, t) : m.waves.gradient_weighted(x, z, t, weights);
-  const Hessian H = weights.empty() ? m.waves.hessian(x, z, t) : m.waves.hessian_weighted(x, z, t, weights);
+  const vec2 g = m.waves.gradient(ph, weights);
+  const Hessian H = m.waves.hessian(ph, weights);
   const vec3 nm(-g.x + shift.x, 1.0, -g.y + shift.y);
   const vec3 v = fp.view;
   const vec3 r = (2.0 * dot(nm, v) / dot(nm, nm)) * nm - v;

@@ -32,5 +32,9 @@ struct ReflectionFootprint {
 ReflectionFootprint reflection_footprint(const SceneModel& m, const PixelFootprint& fp,
                                          std::span<const double> weights, double t,
                                          const vec2& ndf_shift = vec2(0));
+// The same with the waves' phases at the point and time already evaluated.
+ReflectionFootprint reflection_footprint(const SceneModel& m, const PixelFootprint& fp,
+                                         std::span<const double> weights,
+                                         const WavePhases& phases, const vec2& ndf_shift);
 
 }  // namespace sg

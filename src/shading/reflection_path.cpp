@@ -5,6 +5,32 @@
 
 namespace sg {
 
+namespace {
+
+// cos and sin of c_i (end - t_k) for the instants of a path: they depend only on the wave
+// field, the interval's duration and K, so each thread keeps the last table it made.
+struct Rotations {
+  const WaveField* waves = nullptr;
+  double duration = -1;
+  int K = 0;
+  std::vector<std::vector<double>> c, s;  // [k]
+};
+
+const Rotations& rotations(const WaveField& w, double duration, int K) {
+  thread_local Rotations r;
+  if (r.waves != &w || r.duration != duration || r.K != K || r.c.size() != size_t(K)) {
+    r.waves = &w;
+    r.duration = duration;
+    r.K = K;
+    r.c.assign(K, {});
+    r.s.assign(K, {});
+    for (int k = 0; k < K; ++k) w.rotation(duration * (K - k) / K, r.c[k], r.s[k]);
+  }
+  return r;
+}
+
+}  // namespace
+
 void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameTime& ft,
                      int segments, std::span<const double> weights, ReflectionPath& path) {
   const int K = std::max(1, segments);
@@ -14,10 +40,19 @@ void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameT
   path.gradients.resize(K + 1);
   path.normals.resize(K + 1);
   path.reflections.resize(K + 1);
+  // The phases at the display time, once; earlier instants by angle subtraction.
+  m.waves.phases(path.xz.x, path.xz.y, ft.end, path.phases);
+  const Rotations& rot = rotations(m.waves, ft.duration(), K);
+  thread_local WavePhases earlier;
   for (int k = 0; k <= K; ++k) {
     const double t = ft.start + ft.duration() * k / K;
-    const vec2 g = weights.empty() ? m.waves.gradient(path.xz.x, path.xz.y, t)
-                                   : m.waves.gradient_weighted(path.xz.x, path.xz.y, t, weights);
+    vec2 g;
+    if (k == K) {
+      g = m.waves.gradient(path.phases, weights);
+    } else {
+      m.waves.shift_phases(path.phases, rot.c[k], rot.s[k], earlier);
+      g = m.waves.gradient(earlier, weights);
+    }
     path.times[k] = t;
     path.gradients[k] = g;
     path.normals[k] = normal_from_gradient(g);
