@@ -2,7 +2,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <memory>
+#include <utility>
 
 #include "base/error.h"
 #include "cli/args.h"
@@ -22,7 +24,22 @@ struct RenderArgs {
   uint64_t seed = 0;
   double exposure = 0;
   bool quiet = false;
+  MethodOptions options;  // the method flags below fill its numbers directly
+  std::string microspec_area = "exact", specaa_derivatives = "quad", specaa_kernel = "rect",
+              bruneton_fresnel = "fit";
 };
+
+// The value of an enumerated flag: `names[k]` maps to `values[k]`.
+template <typename E>
+E parse_choice(const std::string& text, const std::string& flag,
+               std::initializer_list<std::pair<const char*, E>> choices) {
+  std::string list;
+  for (const auto& [name, value] : choices) {
+    if (text == name) return value;
+    list += (list.empty() ? "" : ", ") + std::string(name);
+  }
+  throw Error(flag + ": expected one of " + list + " (got '" + text + "')");
+}
 
 void run_render(const RenderArgs& a) {
   Scene scene = load_scene(a.scene_path);
@@ -44,9 +61,21 @@ void run_render(const RenderArgs& a) {
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
   image_format_of(out_path(range.first));  // fails early on a bad pattern or extension
 
-  MethodOptions opt;
+  MethodOptions opt = a.options;
   opt.samples = parse_sample_counts(a.samples, "--samples");
   opt.seed = a.seed;
+  opt.microspec.area = parse_choice<MicrospecArea>(
+      a.microspec_area, "--microspec-area",
+      {{"exact", MicrospecArea::exact}, {"approx", MicrospecArea::approx}});
+  opt.specaa.derivatives = parse_choice<SpecaaDerivatives>(
+      a.specaa_derivatives, "--specaa-derivatives",
+      {{"quad", SpecaaDerivatives::quad}, {"analytic", SpecaaDerivatives::analytic}});
+  opt.specaa.kernel =
+      parse_choice<KernelShape>(a.specaa_kernel, "--specaa-kernel",
+                                {{"rect", KernelShape::rect}, {"full", KernelShape::full}});
+  opt.bruneton.fresnel = parse_choice<BrunetonFresnel>(
+      a.bruneton_fresnel, "--bruneton-fresnel",
+      {{"fit", BrunetonFresnel::fit}, {"integral", BrunetonFresnel::integral}});
   std::unique_ptr<Method> method = make_method(a.method, opt);
   SceneModel model(scene);
 
@@ -103,6 +132,38 @@ void add_render_command(CLI::App& app) {
   c->add_option("--exposure", a->exposure, "Exposure in stops for .png output")
       ->capture_default_str();
   c->add_flag("--quiet,-q", a->quiet, "No progress bar");
+  // Method flags, --<method>-<option> (methods/options.h).
+  c->add_option("--microspec-area", a->microspec_area,
+                "microspec: disk-quad area, exact (circle against polygon) or approx (each "
+                "shape cut by one line where it meets the other)")
+      ->capture_default_str();
+  c->add_option("--specaa-sigma2", a->options.specaa.sigma2,
+                "specaa: variance of the pixel filter kernel, pixels^2 (Tokuyoshi-Kaplanyan)")
+      ->capture_default_str();
+  c->add_option("--specaa-kappa", a->options.specaa.kappa,
+                "specaa: clamp of the kernel roughness alpha^2 (Tokuyoshi-Kaplanyan)")
+      ->capture_default_str();
+  c->add_option("--specaa-derivatives", a->specaa_derivatives,
+                "specaa: half-vector derivatives, quad (2x2 finite differences, as a GPU) or "
+                "analytic (ray differentials and the wave Hessian)")
+      ->capture_default_str();
+  c->add_option("--specaa-kernel", a->specaa_kernel,
+                "specaa: kernel shape, rect (per-axis bounding rectangle) or full (2x2 "
+                "covariance)")
+      ->capture_default_str();
+  c->add_option("--bruneton-nmin", a->options.bruneton.n_min,
+                "bruneton: wavelengths below N_min pixel sizes go fully into the BRDF")
+      ->capture_default_str();
+  c->add_option("--bruneton-nmax", a->options.bruneton.n_max,
+                "bruneton: wavelengths above N_max pixel sizes stay fully in the geometry")
+      ->capture_default_str();
+  c->add_option("--bruneton-min-variance", a->options.bruneton.min_variance,
+                "bruneton: minimum slope variance of the sun's lobe (Sec. 5.1 clamp)")
+      ->capture_default_str();
+  c->add_option("--bruneton-fresnel", a->bruneton_fresnel,
+                "bruneton: effective Fresnel with fresnel schlick, fit (Eq. 26) or integral "
+                "(Eq. 24)")
+      ->capture_default_str();
   c->callback([a] { run_render(*a); });
 }
 

@@ -1,7 +1,10 @@
 // The list of methods and the factory behind `--method`.
 #include "base/error.h"
+#include "methods/bruneton.h"
 #include "methods/method.h"
+#include "methods/microspec.h"
 #include "methods/point.h"
+#include "methods/specaa.h"
 #include "methods/supersample.h"
 
 namespace sg {
@@ -18,11 +21,15 @@ const std::vector<MethodInfo>& method_catalog() {
       {"reference", "ground truth: stratified samples over pixel and shutter (--samples, 8x8x8)"},
       {"supersample", "stratified supersampling at a chosen budget (--samples; T=1 samples t_f)"},
       {"point", "one sample at the pixel centre at t_f (no anti-aliasing)"},
+      {"microspec", "micro-specular highlight: brightest corner-quad reflection x disk/quad area"},
+      {"specaa", "geometric specular AA: half-vector derivative kernel widens a mirror lobe"},
+      {"bruneton", "Bruneton et al. 2010: filtered waves, normals and Ross BRDF with Smith"},
   };
   return catalog;
 }
 
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
+  validate(o);
   if (name == "reference") {
     return std::make_unique<StratifiedMethod>(name, StratifiedSettings{o.samples, false});
   }
@@ -31,6 +38,9 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                               StratifiedSettings{o.samples, o.samples.st == 1});
   }
   if (name == "point") return std::make_unique<PointMethod>();
+  if (name == "microspec") return std::make_unique<MicrospecMethod>(o.microspec);
+  if (name == "specaa") return std::make_unique<SpecaaMethod>(o.specaa);
+  if (name == "bruneton") return std::make_unique<BrunetonMethod>(o.bruneton);
   std::string list;
   for (const auto& m : method_catalog())
     list += (list.empty() ? "" : ", ") + m.name;

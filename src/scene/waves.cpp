@@ -45,6 +45,18 @@ Hessian WaveField::hessian(double x, double z, double t) const {
   return H;
 }
 
+WaveField WaveField::weighted(std::span<const double> w) const {
+  assert(w.size() == size());
+  WaveField f = *this;
+  f.amplitude_bound_ = f.slope_bound_ = 0;
+  for (size_t i = 0; i < size(); ++i) {
+    f.A[i] = w[i] * A[i];
+    f.amplitude_bound_ += std::fabs(f.A[i]);
+    f.slope_bound_ += std::fabs(f.A[i]) * std::hypot(a[i], b[i]);
+  }
+  return f;
+}
+
 vec2 WaveField::gradient_weighted(double x, double z, double t, std::span<const double> w) const {
   assert(w.size() == size());
   double gx = 0, gz = 0;

@@ -89,4 +89,10 @@ double gaussian_disk_mass_riemann(const vec2& mean, const mat2& cov, double R, i
   return sum * norm * cell * cell;
 }
 
+double gaussian_half_plane_mass(const vec2& mean, const mat2& cov, const vec2& a, double c) {
+  const double m = dot(a, mean) + c, var = dot(a, cov * a);
+  if (!(var > 0)) return m <= 0 ? 1.0 : 0.0;
+  return 0.5 * std::erfc(m / std::sqrt(2 * var));
+}
+
 }  // namespace sg

@@ -23,6 +23,11 @@ namespace sg {
 double gaussian_disk_mass(const vec2& mean, const mat2& cov, double R);
 double gaussian_disk_mass_riemann(const vec2& mean, const mat2& cov, double R, int n);
 
+// The mass of N(mean, cov) in the half-plane dot(a, p) + c <= 0: a . p + c is normal with
+// mean a . mean + c and variance a^T cov a, so the mass is 0.5 erfc((a . mean + c) /
+// sqrt(2 a^T cov a)) (a step when that variance is 0).
+double gaussian_half_plane_mass(const vec2& mean, const mat2& cov, const vec2& a, double c);
+
 // Eigen-decomposition of a symmetric 2x2 covariance: major std s1 >= minor std s2 >= 0 and
 // the unit major axis u (minor axis: (-u.y, u.x)).
 struct PrincipalAxes {
