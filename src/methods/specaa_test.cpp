@@ -166,7 +166,7 @@ TEST(Specaa, ValueIsTheLobesMassInTheLightDisk) {
   // nearest the light, on water tilted by a single wave; the derivatives are scaled so that
   // the lobe's reflections spread over about twice the disk. Agreement within 4 standard
   // errors plus 3% of the mass for the light plane's linearisation (as rdf_test.cpp).
-  Scene s = testing::small_scene({Wave{0.05, {0.3, -1.2}, 3.4, 0.0}}, 320, 180);
+  Scene s = testing::small_scene({Wave{0.25, {0.9, -0.9}, 3.4, 0.0}}, 320, 180);
   SceneModel m(s);
   const double t = s.frame_time(0);
   SpecaaSample best;
