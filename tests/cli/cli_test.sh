@@ -67,6 +67,28 @@ expect_fail "sequence needs a pattern" "exactly one frame number conversion" \
 expect_fail "bad frame range" "--frames: expected a frame range A-B" \
   "$bin" render "$scene" -m point --frames 3-1 --out "$work/f_%02d.exr"
 expect_fail "no subcommand" "A subcommand is required" "$bin"
+# Method flags: enumerations and numbers, each error naming its flag, no file left.
+expect_fail "bad microspec area" "--microspec-area: expected one of exact, approx (got 'circle')" \
+  "$bin" render "$scene" -m microspec --microspec-area circle --out "$work/m.exr"
+expect_no_file "bad microspec area" "$work/m.exr"
+expect_fail "bad specaa derivatives" "--specaa-derivatives: expected one of quad, analytic" \
+  "$bin" render "$scene" -m specaa --specaa-derivatives fd --out "$work/m.exr"
+expect_fail "bad specaa kernel" "--specaa-kernel: expected one of rect, full" \
+  "$bin" render "$scene" -m specaa --specaa-kernel box --out "$work/m.exr"
+expect_fail "bad specaa sigma2" "--specaa-sigma2: must be > 0" \
+  "$bin" render "$scene" -m specaa --specaa-sigma2 0 --out "$work/m.exr"
+expect_fail "bad specaa kappa" "--specaa-kappa: must be >= 0" \
+  "$bin" render "$scene" -m specaa --specaa-kappa -1 --out "$work/m.exr"
+expect_fail "bad bruneton nmax" "--bruneton-nmax: must be > --bruneton-nmin" \
+  "$bin" render "$scene" -m bruneton --bruneton-nmin 2 --bruneton-nmax 1.5 --out "$work/m.exr"
+expect_fail "bad bruneton variance" "--bruneton-min-variance: must be > 0" \
+  "$bin" render "$scene" -m bruneton --bruneton-min-variance 0 --out "$work/m.exr"
+expect_fail "bad bruneton fresnel" "--bruneton-fresnel: expected one of fit, integral" \
+  "$bin" render "$scene" -m bruneton --bruneton-fresnel exact --out "$work/m.exr"
+expect_no_file "bad method flags" "$work/m.exr"
+for m in microspec specaa bruneton; do
+  expect_ok "render $m" "$bin" render "$scene" -m "$m" --width 48 -q --out "$work/$m.exr"
+done
 expect_fail "diff sizes" "image sizes differ" bash -c \
   "'$bin' render '$scene' -m point --width 16 -q --out '$work/s16.exr' && \
    '$bin' render '$scene' -m point --width 32 -q --out '$work/s32.exr' && \
@@ -77,6 +99,15 @@ expect_fail "diff png input" "PNG files are pictures" "$bin" diff "$work/x.png" 
 # Help exists for every subcommand.
 for sub in render diff info bench; do
   expect_ok "help $sub" "$bin" "$sub" --help
+done
+# The render help lists the baselines and their flags with their defaults.
+help=$("$bin" render --help 2>&1)
+for want in "microspec:" "specaa:" "bruneton:" "--specaa-sigma2" "0.25" "--bruneton-min-variance" \
+  "2e-05" "--microspec-area"; do
+  if grep -qF -- "$want" <<<"$help"; then passes=$((passes + 1)); else
+    echo "FAIL render help lacks '$want'"
+    fails=$((fails + 1))
+  fi
 done
 
 # Determinism: the same command twice gives the same bytes (two thread counts).
