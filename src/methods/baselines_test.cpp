@@ -170,8 +170,7 @@ TEST(Baselines, BrunetonMatchesTheReferenceOnUnresolvedWaves) {
   // on displaced water: the Ross BRDF counts each facet by its area projected towards the
   // viewer and masks and shadows it (Smith), which a displaced height field does too.
   // Within 4 standard errors of the reference's noise plus 8% for the model (Gaussian
-  // slopes for a sum of 16 sines, the BRDF constant over the light, the tangent frame);
-  // measured within 7% per band at 160 x 90 with 32x32 samples.
+  // slopes for a sum of 16 sines, the BRDF constant over the light, the tangent frame).
   std::vector<Wave> waves;
   Pcg32 rng(77, 7);
   for (int k = 0; k < 16; ++k) {
