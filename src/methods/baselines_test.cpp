@@ -197,8 +197,8 @@ TEST(Baselines, BrunetonMatchesTheReferenceOnUnresolvedWaves) {
   // projected-area weighting brightens Bruneton's glitter towards the horizon there.
   s.surface.geometry = Geometry::flat;
   for (const Band& band : glitter_bands(s, 16)) {
-    std::printf("flat rows %d-%d: bruneton %.3f, reference %.3f +- %.3f\n", band.row,
-                band.row + 4, band.bruneton, band.reference, band.se);
+    std::printf("flat rows %d-%d: bruneton %.3f, reference %.3f +- %.3f\n", band.row, band.row + 4,
+                band.bruneton, band.reference, band.se);
   }
 }
 
