@@ -15,6 +15,7 @@
 #include "shading/convex_polygon.h"
 #include "testing/calm_coverage.h"
 #include "testing/testing.h"
+#include "testing/tiles.h"
 
 namespace sg {
 namespace {
@@ -264,16 +265,7 @@ TEST(Microspec, TilesEqualPixels) {
   s.surface.geometry = Geometry::displaced;
   SceneModel m(s);
   MicrospecMethod method(MicrospecOptions{});
-  RenderSettings a, b;
-  a.tile = 16;
-  b.tile = 7;
-  const Image x = render_frame(m, method, 3, a), y = render_frame(m, method, 3, b);
-  EXPECT_EQ(x.data, y.data);
-  FrameContext ctx{m, frame_time(s, 3), 0};
-  for (int j = 0; j < s.height; j += 5) {
-    for (int i = 0; i < s.width; i += 3)
-      EXPECT_EQ(x.at(i, j), static_cast<float>(method.shade(ctx, i, j)));
-  }
+  testing::expect_tiles_equal_pixels(m, method, 3, 7);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "engine/render.h"
 #include "math/rng.h"
 #include "testing/testing.h"
+#include "testing/tiles.h"
 
 namespace sg {
 namespace {
@@ -108,16 +109,7 @@ TEST(Specaa, TilesEqualPixelsInBothDerivativeModes) {
     SpecaaOptions o;
     o.derivatives = d;
     SpecaaMethod method(o);
-    RenderSettings a, b;
-    a.tile = 16;
-    b.tile = 5;
-    const Image x = render_frame(m, method, 1, a), y = render_frame(m, method, 1, b);
-    EXPECT_EQ(x.data, y.data);
-    FrameContext ctx{m, frame_time(s, 1), 0};
-    for (int j = 0; j < s.height; j += 4) {
-      for (int i = 0; i < s.width; i += 3)
-        EXPECT_EQ(x.at(i, j), static_cast<float>(method.shade(ctx, i, j))) << i << "," << j;
-    }
+    testing::expect_tiles_equal_pixels(m, method, 1, 5);
   }
 }
 
