@@ -38,6 +38,8 @@ void choice(CLI::App& app, const std::string& flag, T& field, const std::map<std
 
 }  // namespace
 
+static void add_baseline_flags(CLI::App& app, MethodOptions& o);
+
 void add_method_flags(CLI::App& app, MethodFlags& f) {
   MethodOptions& o = f.options;
   app.add_option("--samples", f.samples, "Samples SxSxT for reference and supersample")
@@ -128,6 +130,42 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
   app.add_option("--taa-warmup", o.taa.warmup,
                  "taa: frames rendered (not written) before the first frame, to fill the history")
       ->capture_default_str();
+  add_baseline_flags(app, o);
+}
+
+static void add_baseline_flags(CLI::App& app, MethodOptions& o) {
+  // microspec (methods/microspec.h)
+  choice(app, "--microspec-area", o.microspec.area,
+         {{"exact", MicrospecArea::exact}, {"approx", MicrospecArea::approx}},
+         "microspec: disk-quad area, exact (circle against polygon) or approx (each shape cut "
+         "by one line where it meets the other)");
+  // specaa (methods/specaa.h)
+  app.add_option("--specaa-sigma2", o.specaa.sigma2,
+                 "specaa: variance of the pixel filter kernel, pixels^2 (Tokuyoshi-Kaplanyan)")
+      ->capture_default_str();
+  app.add_option("--specaa-kappa", o.specaa.kappa,
+                 "specaa: clamp of the kernel roughness alpha^2 (Tokuyoshi-Kaplanyan)")
+      ->capture_default_str();
+  choice(app, "--specaa-derivatives", o.specaa.derivatives,
+         {{"quad", SpecaaDerivatives::quad}, {"analytic", SpecaaDerivatives::analytic}},
+         "specaa: half-vector derivatives, quad (2x2 finite differences, as a GPU) or analytic "
+         "(ray differentials and the wave Hessian)");
+  choice(app, "--specaa-kernel", o.specaa.kernel,
+         {{"rect", KernelShape::rect}, {"full", KernelShape::full}},
+         "specaa: kernel shape, rect (per-axis bounding rectangle) or full (2x2 covariance)");
+  // bruneton (methods/bruneton.h)
+  app.add_option("--bruneton-nmin", o.bruneton.n_min,
+                 "bruneton: wavelengths below N_min pixel sizes go fully into the BRDF")
+      ->capture_default_str();
+  app.add_option("--bruneton-nmax", o.bruneton.n_max,
+                 "bruneton: wavelengths above N_max pixel sizes stay fully in the geometry")
+      ->capture_default_str();
+  app.add_option("--bruneton-min-variance", o.bruneton.min_variance,
+                 "bruneton: minimum slope variance of the sun's lobe (Sec. 5.1 clamp)")
+      ->capture_default_str();
+  choice(app, "--bruneton-fresnel", o.bruneton.fresnel,
+         {{"fit", BrunetonFresnel::fit}, {"integral", BrunetonFresnel::integral}},
+         "bruneton: effective Fresnel with fresnel schlick, fit (Eq. 26) or integral (Eq. 24)");
 }
 
 MethodVariant parse_method_variant(const std::string& text, const std::string& flag) {

@@ -1,8 +1,11 @@
 // The list of methods and the factory behind `--method`.
 #include "base/error.h"
+#include "methods/bruneton.h"
 #include "methods/lean.h"
 #include "methods/method.h"
+#include "methods/microspec.h"
 #include "methods/point.h"
+#include "methods/specaa.h"
 #include "methods/staa.h"
 #include "methods/staa_temporal.h"
 #include "methods/supersample.h"
@@ -22,17 +25,23 @@ const std::vector<MethodInfo>& method_catalog() {
       {"reference", "ground truth: stratified samples over pixel and shutter (--samples, 8x8x8)"},
       {"supersample", "stratified supersampling at a chosen budget (--samples; T=1 samples t_f)"},
       {"point", "one sample at the pixel centre at t_f (no anti-aliasing)"},
-      {"staa-temporal", "Podee et al. 2021 Sec. 3.3: time in the light along the reflection path "
-                        "(--segments)"},
-      {"staa", "Podee et al. 2021: temporal path + aliasing waves as a Gaussian RDF (--ndf, "
-               "--kernels, --segments, ...)"},
+      {"staa-temporal",
+       "Podee et al. 2021 Sec. 3.3: time in the light along the reflection path "
+       "(--segments)"},
+      {"staa",
+       "Podee et al. 2021: temporal path + aliasing waves as a Gaussian RDF (--ndf, "
+       "--kernels, --segments, ...)"},
       {"lean", "LEAN mapping (Olano & Baker 2010): MIP-mapped slope moments, Gaussian NDF at t_f"},
       {"taa", "temporal anti-aliasing: Halton jitter, reprojected history, variance clipping"},
+      {"microspec", "micro-specular highlight: brightest corner-quad reflection x disk/quad area"},
+      {"specaa", "geometric specular AA: half-vector derivative kernel widens a mirror lobe"},
+      {"bruneton", "Bruneton et al. 2010: filtered waves, normals and Ross BRDF with Smith"},
   };
   return catalog;
 }
 
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
+  validate(o);
   if (name == "reference") {
     return std::make_unique<StratifiedMethod>(name, StratifiedSettings{o.samples, false});
   }
@@ -45,6 +54,9 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
   if (name == "staa") return std::make_unique<StaaMethod>(o.staa);
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);
+  if (name == "microspec") return std::make_unique<MicrospecMethod>(o.microspec);
+  if (name == "specaa") return std::make_unique<SpecaaMethod>(o.specaa);
+  if (name == "bruneton") return std::make_unique<BrunetonMethod>(o.bruneton);
   std::string list;
   for (const auto& m : method_catalog())
     list += (list.empty() ? "" : ", ") + m.name;

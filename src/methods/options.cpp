@@ -1,6 +1,7 @@
 #include "methods/options.h"
 
 #include <charconv>
+#include <cmath>
 #include <vector>
 
 #include "base/error.h"
@@ -34,6 +35,21 @@ SampleCounts parse_sample_counts(const std::string& text, const std::string& fla
 
 std::string to_string(const SampleCounts& s) {
   return std::to_string(s.sx) + "x" + std::to_string(s.sy) + "x" + std::to_string(s.st);
+}
+
+void validate(const MethodOptions& o) {
+  auto require = [](bool ok, const std::string& flag, const std::string& rule) {
+    if (!ok) throw Error(flag + ": " + rule);
+  };
+  const SpecaaOptions& sa = o.specaa;
+  require(std::isfinite(sa.sigma2) && sa.sigma2 > 0, "--specaa-sigma2", "must be > 0");
+  require(std::isfinite(sa.kappa) && sa.kappa >= 0, "--specaa-kappa", "must be >= 0");
+  const BrunetonOptions& b = o.bruneton;
+  require(std::isfinite(b.n_min) && b.n_min > 0, "--bruneton-nmin", "must be > 0");
+  require(std::isfinite(b.n_max) && b.n_max > b.n_min, "--bruneton-nmax",
+          "must be > --bruneton-nmin");
+  require(std::isfinite(b.min_variance) && b.min_variance > 0, "--bruneton-min-variance",
+          "must be > 0");
 }
 
 }  // namespace sg

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <string>
 
+#include "shading/specular_aa.h"
+
 namespace sg {
 
 // --samples SxSxT: S_x by S_y stratified jittered positions in the pixel times T
@@ -43,11 +45,11 @@ struct StaaOptions {
   // --fallback-time path|current: the fallback averaged along the reflection path, or at
   // the display time only (the paper: "We ignore the temporal integration in our fallback").
   bool fallback_along_path = true;
-  int riemann_cells = 32;                            // --riemann-cells N (per disk diameter)
-  double alias_start = 0.2;                          // --alias-start (cycles per pixel, Eq. 20)
-  double alias_end = 0.5;                            // --alias-end
-  bool nyquist_max_axis = true;                      // --nyquist max|norm (shading/aliasing.h)
-  FootprintMode footprint = FootprintMode::none;     // --footprint none|gaussian|exact
+  int riemann_cells = 32;                         // --riemann-cells N (per disk diameter)
+  double alias_start = 0.2;                       // --alias-start (cycles per pixel, Eq. 20)
+  double alias_end = 0.5;                         // --alias-end
+  bool nyquist_max_axis = true;                   // --nyquist max|norm (shading/aliasing.h)
+  FootprintMode footprint = FootprintMode::none;  // --footprint none|gaussian|exact
   // --curvature-limit X: with a footprint term, a resolved wave whose slope departs from
   // its linearisation across the pixel by more than X disk radii of reflection is handed
   // to the aliasing set (0: never).
@@ -75,12 +77,51 @@ struct TaaOptions {
   int warmup = 16;                                        // --taa-warmup: frames before F
 };
 
+// microspec (methods/microspec.h).
+enum class MicrospecArea {
+  exact,   // the area the disk shares with the reflection space, exactly
+  approx,  // each shape cut by one line where it meets the other (microspec.h)
+};
+struct MicrospecOptions {
+  MicrospecArea area = MicrospecArea::exact;  // --microspec-area exact|approx
+};
+
+// specaa (methods/specaa.h).
+enum class SpecaaDerivatives {
+  quad,      // finite differences in 2x2 pixel quads, as ddx_fine/ddy_fine on a GPU
+  analytic,  // ray differentials and the Hessian of the height field
+};
+struct SpecaaOptions {
+  double sigma2 = 0.25;                                     // --specaa-sigma2: kernel variance
+  double kappa = 0.18;                                      // --specaa-kappa: clamp of 2 sigma^2
+  SpecaaDerivatives derivatives = SpecaaDerivatives::quad;  // --specaa-derivatives
+  KernelShape kernel = KernelShape::rect;                   // --specaa-kernel rect|full
+};
+
+// bruneton (methods/bruneton.h).
+enum class BrunetonFresnel {
+  fit,       // Eq. 26, the paper's fit
+  integral,  // Eq. 24 by quadrature
+};
+struct BrunetonOptions {
+  double n_min = 1.0, n_max = 2.5;  // --bruneton-nmin, --bruneton-nmax (Sec. 7.1)
+  double min_variance = 2e-5;       // --bruneton-min-variance: slope-variance clamp (Sec. 5.1)
+  BrunetonFresnel fresnel = BrunetonFresnel::fit;  // --bruneton-fresnel fit|integral
+};
+
 struct MethodOptions {
   SampleCounts samples{8, 8, 8};  // --samples, for reference and supersample
   uint64_t seed = 0;              // --seed: the sampling streams (rng.h)
   StaaOptions staa;
   LeanOptions lean;
   TaaOptions taa;
+  MicrospecOptions microspec;
+  SpecaaOptions specaa;
+  BrunetonOptions bruneton;
 };
+
+// Checks the values of the method flags; throws sg::Error naming the flag
+// ("--specaa-sigma2: must be > 0").
+void validate(const MethodOptions& options);
 
 }  // namespace sg

@@ -6,7 +6,6 @@
 
 #include "scene/footprint.h"
 #include "shading/aliasing.h"
-#include "shading/swept_footprint.h"
 #include "shading/gaussian_disk.h"
 #include "shading/kernel_fit.h"
 #include "shading/ndf.h"
@@ -15,6 +14,7 @@
 #include "shading/rdf.h"
 #include "shading/reflection_footprint.h"
 #include "shading/reflection_path.h"
+#include "shading/swept_footprint.h"
 
 namespace sg {
 namespace {

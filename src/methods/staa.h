@@ -48,7 +48,8 @@ class StaaMethod final : public Method {
   // The light, sky and sea shares of a pixel, for tests and diagnostics.
   struct Shares {
     bool hit = false;
-    bool aliasing = false;  // step 4 (some alpha > 0)
+    bool aliasing = false;  // some alpha > 0
+    bool temporal = false;  // step 3: the temporal method, exactly
     bool fallback = false;  // past the elongation threshold
     double in_light = 0, below = 0, fresnel = 1;
   };

@@ -30,4 +30,8 @@ struct PixelFootprint {
 // The footprint of image-plane point (px, py) (a pixel centre is (i + 1/2, j + 1/2)).
 PixelFootprint pixel_footprint(const SceneModel& m, double px, double py, double t);
 
+// The footprint on the water at rest (the plane y = 0) whatever the geometry: where a
+// projected grid (Bruneton et al. 2010, Sec. 3.2) places the pixel before displacing it.
+PixelFootprint rest_plane_footprint(const SceneModel& m, double px, double py);
+
 }  // namespace sg

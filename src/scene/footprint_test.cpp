@@ -49,5 +49,22 @@ TEST(Footprint, DisplacedMatchesNeighbouringRaysToFirstOrder) {
   }
 }
 
+TEST(Footprint, RestPlaneIsTheFlatFootprintWhateverTheGeometry) {
+  Scene s = testing::project_scene("simple");
+  SceneModel flat(s);
+  s.surface.geometry = Geometry::displaced;
+  SceneModel displaced(s);
+  for (double py : {200.5, 300.5}) {
+    const PixelFootprint a = rest_plane_footprint(displaced, 100.5, py);
+    const PixelFootprint b = pixel_footprint(flat, 100.5, py, 0.7);
+    ASSERT_TRUE(a.hit);
+    EXPECT_EQ(a.point, b.point);
+    EXPECT_EQ(a.dp_dpx, b.dp_dpx);
+    EXPECT_EQ(a.dp_dpy, b.dp_dpy);
+    EXPECT_EQ(a.point.y, 0.0);
+    EXPECT_NE(pixel_footprint(displaced, 100.5, py, 0.7).point.y, 0.0);
+  }
+}
+
 }  // namespace
 }  // namespace sg

@@ -36,6 +36,11 @@ struct LightModel {
   }
   // The unit direction through light-plane point p.
   vec3 from_plane(const vec2& p) const { return normalize(L + p.x * e1 + p.y * e2); }
+  // The height (y) of L + p.x e1 + p.y e2, the direction through p scaled to r . L = 1. Its
+  // sign is that of r.y, so the horizon is the straight line elevation_on_plane(p) = 0 of
+  // the light plane (a great circle maps to a line) and reflections with
+  // elevation_on_plane(p) <= 0 point below it.
+  double elevation_on_plane(const vec2& p) const { return L.y + p.x * e1.y + p.y * e2.y; }
 };
 
 }  // namespace sg

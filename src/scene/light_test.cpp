@@ -56,5 +56,20 @@ TEST(Light, GreatCirclesMapToLines) {
   }
 }
 
+TEST(Light, ElevationOnPlaneIsTheHeightOfTheDirectionScaledToUnitL) {
+  // elevation_on_plane(p) = r.y / (r . L) for the direction r through p: its sign is r's
+  // elevation's, and the horizon is the line where it vanishes.
+  LightModel l(LightDesc{{0.3, 0.15, -1}, 0.27, 1, false});
+  Pcg32 rng(5, 5);
+  int below = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const vec2 p(2 * rng.uniform() - 1, 2 * rng.uniform() - 1);
+    const vec3 r = l.from_plane(p);
+    EXPECT_NEAR(l.elevation_on_plane(p), r.y / dot(r, l.L), 1e-14);
+    below += l.elevation_on_plane(p) <= 0;
+  }
+  EXPECT_GT(below, 100);  // the square reaches below the horizon
+}
+
 }  // namespace
 }  // namespace sg

@@ -26,7 +26,8 @@ void WaveField::phases(double x, double z, double t, WavePhases& out) const {
   theta.resize(n);
   out.s.resize(n);
   out.c.resize(n);
-  for (size_t i = 0; i < n; ++i) theta[i] = a[i] * x + b[i] * z + c[i] * t + phi[i];
+  for (size_t i = 0; i < n; ++i)
+    theta[i] = a[i] * x + b[i] * z + c[i] * t + phi[i];
   sincos_array(theta.data(), out.s.data(), out.c.data(), n);
 }
 
@@ -35,7 +36,8 @@ void WaveField::rotation(double dt, std::vector<double>& rot_c, std::vector<doub
   arg.resize(size());
   rot_c.resize(size());
   rot_s.resize(size());
-  for (size_t i = 0; i < size(); ++i) arg[i] = c[i] * dt;
+  for (size_t i = 0; i < size(); ++i)
+    arg[i] = c[i] * dt;
   sincos_array(arg.data(), rot_s.data(), rot_c.data(), size());
 }
 
@@ -88,7 +90,8 @@ const WavePhases& phases_at(const WaveField& w, double x, double z, double t) {
 double WaveField::height(double x, double z, double t) const {
   const WavePhases& p = phases_at(*this, x, z, t);
   double h = 0;
-  for (size_t i = 0; i < size(); ++i) h += A[i] * p.s[i];
+  for (size_t i = 0; i < size(); ++i)
+    h += A[i] * p.s[i];
   return h;
 }
 
@@ -100,13 +103,23 @@ Hessian WaveField::hessian(double x, double z, double t) const {
   return hessian(phases_at(*this, x, z, t));
 }
 
-vec2 WaveField::gradient_weighted(double x, double z, double t,
-                                  std::span<const double> w) const {
+WaveField WaveField::weighted(std::span<const double> w) const {
+  assert(w.size() == size());
+  WaveField f = *this;
+  f.amplitude_bound_ = f.slope_bound_ = 0;
+  for (size_t i = 0; i < size(); ++i) {
+    f.A[i] = w[i] * A[i];
+    f.amplitude_bound_ += std::fabs(f.A[i]);
+    f.slope_bound_ += std::fabs(f.A[i]) * std::hypot(a[i], b[i]);
+  }
+  return f;
+}
+
+vec2 WaveField::gradient_weighted(double x, double z, double t, std::span<const double> w) const {
   return gradient(phases_at(*this, x, z, t), w);
 }
 
-Hessian WaveField::hessian_weighted(double x, double z, double t,
-                                    std::span<const double> w) const {
+Hessian WaveField::hessian_weighted(double x, double z, double t, std::span<const double> w) const {
   return hessian(phases_at(*this, x, z, t), w);
 }
 

@@ -41,6 +41,8 @@ class WaveField {
   // aliasing sets, Podee et al. 2021 Sec. 3.7). weights.size() == size().
   vec2 gradient_weighted(double x, double z, double t, std::span<const double> weights) const;
   Hessian hessian_weighted(double x, double z, double t, std::span<const double> weights) const;
+  // The field with amplitudes A_i w_i (bounds recomputed): a filtered surface to intersect.
+  WaveField weighted(std::span<const double> weights) const;
 
   // The phases at (x, z, t), vectorised (math/simd_trig.h).
   void phases(double x, double z, double t, WavePhases& out) const;

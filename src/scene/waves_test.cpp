@@ -111,5 +111,19 @@ TEST(Waves, BoundsHold) {
   EXPECT_GT(hmax, 0.3 * w.amplitude_bound());  // the bounds are not absurdly loose here
 }
 
+TEST(Waves, WeightedFieldScalesAmplitudesAndBounds) {
+  WaveField w({Wave{0.3, {0.5, -1.0}, 2.0, 0.1}, Wave{0.1, {2.0, 0.5}, 3.0, 0.7},
+               Wave{0.05, {-3.0, 1.0}, 4.0, 2.0}});
+  const std::vector<double> k = {0.5, 0.0, 1.0};
+  const WaveField f = w.weighted(k);
+  for (double x : {-3.0, 0.4, 7.0}) {
+    const vec2 g = f.gradient(x, -2 * x, 0.3), gw = w.gradient_weighted(x, -2 * x, 0.3, k);
+    EXPECT_NEAR(g.x, gw.x, 1e-15);
+    EXPECT_NEAR(g.y, gw.y, 1e-15);
+  }
+  EXPECT_NEAR(f.amplitude_bound(), 0.15 + 0.05, 1e-15);
+  EXPECT_NEAR(f.slope_bound(), 0.15 * std::sqrt(1.25) + 0.05 * std::sqrt(10.0), 1e-15);
+}
+
 }  // namespace
 }  // namespace sg

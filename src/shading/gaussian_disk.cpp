@@ -44,6 +44,12 @@ double gaussian_disk_mass(const vec2& mean, const mat2& cov, double R) {
   const vec2 c = -mean;  // the disk centre relative to the mean
   const double cs = dot(c, p.u), cw = dot(c, w);
   if (p.s1 <= 0) return dot(mean, mean) <= R * R ? 1.0 : 0.0;
+  // Beyond 9 major standard deviations the mass is below 3e-18 (the chi distribution's tail
+  // with 2 degrees of freedom, exp(-81/2)): a disk that far away holds nothing, one that
+  // holds that whole ball holds everything.
+  const double dm = length(mean);
+  if (dm >= R + 9 * p.s1) return 0.0;
+  if (dm + 9 * p.s1 <= R) return 1.0;
   // s range: the disk's extent along u, clipped to +-9 s1 about the mean.
   const double lo = std::max(cs - R, -9 * p.s1), hi = std::min(cs + R, 9 * p.s1);
   if (hi <= lo) return 0.0;
@@ -87,6 +93,12 @@ double gaussian_disk_mass_riemann(const vec2& mean, const mat2& cov, double R, i
     }
   }
   return sum * norm * cell * cell;
+}
+
+double gaussian_half_plane_mass(const vec2& mean, const mat2& cov, const vec2& a, double c) {
+  const double m = dot(a, mean) + c, var = dot(a, cov * a);
+  if (!(var > 0)) return m <= 0 ? 1.0 : 0.0;
+  return 0.5 * std::erfc(m / std::sqrt(2 * var));
 }
 
 }  // namespace sg

@@ -10,7 +10,9 @@
 // with (c_s, c_w) the disk centre relative to the mean. The substitution s = c_s + R sin(u)
 // removes the chord's square-root ends, and the range is clipped to +-9 s1 about the
 // mean; 48-point Gauss-Legendre then gives ~1e-9 for any elongation, degenerate (s2 = 0)
-// distributions included. This is the accurate fallback.
+// distributions included. This is the accurate fallback. A disk further than 9 major
+// standard deviations from the mean gives 0, one that holds the 9-sigma ball about the mean
+// gives 1 (both within 3e-18), without quadrature.
 //
 // gaussian_disk_mass_riemann: the paper's fallback, a Riemann sum of the density over an
 // n x n grid of cells covering the disk (cell centres inside the disk).
@@ -22,6 +24,11 @@ namespace sg {
 
 double gaussian_disk_mass(const vec2& mean, const mat2& cov, double R);
 double gaussian_disk_mass_riemann(const vec2& mean, const mat2& cov, double R, int n);
+
+// The mass of N(mean, cov) in the half-plane dot(a, p) + c <= 0: a . p + c is normal with
+// mean a . mean + c and variance a^T cov a, so the mass is 0.5 erfc((a . mean + c) /
+// sqrt(2 a^T cov a)) (a step when that variance is 0).
+double gaussian_half_plane_mass(const vec2& mean, const mat2& cov, const vec2& a, double c);
 
 // Eigen-decomposition of a symmetric 2x2 covariance: major std s1 >= minor std s2 >= 0 and
 // the unit major axis u (minor axis: (-u.y, u.x)).

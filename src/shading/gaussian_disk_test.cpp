@@ -90,5 +90,48 @@ TEST(GaussianDisk, RiemannSumConvergesToTheQuadrature) {
   EXPECT_LT(e64, e16);
 }
 
+TEST(GaussianDisk, FarAndDeepCasesAgreeWithQuadratureAtTheNineSigmaEdge) {
+  // The early outs (nothing beyond 9 major standard deviations, everything when the disk
+  // holds the 9-sigma ball) against direct quadrature just inside those limits.
+  const mat2 cov(vec2(0.04, 0.01), vec2(0.01, 0.02));
+  const double s1 = principal_axes(cov).s1, R = 0.5;
+  const vec2 u = normalize(vec2(1, 0.4));
+  EXPECT_EQ(gaussian_disk_mass(u * (R + 9.001 * s1), cov, R), 0.0);
+  EXPECT_LT(brute_mass(u * (R + 8.9 * s1), cov, R), 1e-16);
+  // Short of the limits the quadrature still runs, tails included.
+  for (double k : {2.0, 4.0, 6.0}) {
+    const double m = gaussian_disk_mass(u * (R + k * s1), cov, R);
+    EXPECT_NEAR(m, brute_mass(u * (R + k * s1), cov, R), 1e-6 * m) << k;
+    EXPECT_GT(m, 0.0);
+  }
+  const double big = 9 * s1 + 0.3;
+  EXPECT_EQ(gaussian_disk_mass(u * 0.3, cov, big), 1.0);
+  EXPECT_NEAR(gaussian_disk_mass(u * 0.29, cov, big), 1.0, 1e-15);
+}
+
+TEST(GaussianDisk, HalfPlaneMassMatchesMonteCarlo) {
+  Pcg32 rng(2, 9);
+  const mat2 cov(vec2(0.04, 0.015), vec2(0.015, 0.02));
+  const vec2 mean(0.1, -0.05);
+  // Cholesky factor of cov.
+  const double a = std::sqrt(cov[0][0]), b = cov[0][1] / a, c = std::sqrt(cov[1][1] - b * b);
+  for (const vec3 line : {vec3(1, 0, -0.1), vec3(0.6, -0.8, 0.05), vec3(0, 1, 0.3)}) {
+    const vec2 n(line.x, line.y);
+    long in = 0;
+    const int N = 100000;
+    for (int k = 0; k < N; ++k) {
+      const double r = std::sqrt(-2 * std::log(1 - rng.uniform())), t = kTwoPi * rng.uniform();
+      const double z1 = r * std::cos(t), z2 = r * std::sin(t);
+      const vec2 p = mean + vec2(a * z1, b * z1 + c * z2);
+      in += dot(n, p) + line.z <= 0;
+    }
+    const double f = double(in) / N;
+    EXPECT_NEAR(gaussian_half_plane_mass(mean, cov, n, line.z), f,
+                5 * std::sqrt(f * (1 - f) / N) + 1e-12);
+  }
+  EXPECT_EQ(gaussian_half_plane_mass(mean, mat2(0.0), vec2(1, 0), -0.2), 1.0);
+  EXPECT_EQ(gaussian_half_plane_mass(mean, mat2(0.0), vec2(1, 0), 0.0), 0.0);
+}
+
 }  // namespace
 }  // namespace sg

@@ -51,7 +51,9 @@ double half_width(const vec2& k, const mat2& Jinv) {
   return m > 0 ? 0.5 / m * kk : 0.0;
 }
 
-bool invertible(const mat2& J) { return std::fabs(glm::determinant(J)) >= 1e-300; }
+bool invertible(const mat2& J) {
+  return std::fabs(glm::determinant(J)) >= 1e-300;
+}
 
 }  // namespace
 

@@ -34,7 +34,7 @@ ReflectionFootprint reflection_footprint(const SceneModel& m, const PixelFootpri
                                          const vec2& ndf_shift = vec2(0));
 // The same with the waves' phases at the point and time already evaluated.
 ReflectionFootprint reflection_footprint(const SceneModel& m, const PixelFootprint& fp,
-                                         std::span<const double> weights,
-                                         const WavePhases& phases, const vec2& ndf_shift);
+                                         std::span<const double> weights, const WavePhases& phases,
+                                         const vec2& ndf_shift);
 
 }  // namespace sg

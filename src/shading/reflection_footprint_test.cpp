@@ -13,7 +13,8 @@ TEST(ReflectionFootprint, MatchesFiniteDifferences) {
   for (const char* name : {"simple", "medium"}) {
     SceneModel m(testing::project_scene(name));
     std::vector<double> w(m.waves.size(), 1.0);
-    for (size_t k = 0; k < w.size(); k += 3) w[k] = 0.5;  // weighted waves
+    for (size_t k = 0; k < w.size(); k += 3)
+      w[k] = 0.5;  // weighted waves
     int tested = 0;
     for (double py : {220.5, 270.5, 330.5}) {
       for (double px : {280.5, 320.5, 350.5}) {

@@ -24,7 +24,8 @@ const Rotations& rotations(const WaveField& w, double duration, int K) {
     r.K = K;
     r.c.assign(K, {});
     r.s.assign(K, {});
-    for (int k = 0; k < K; ++k) w.rotation(duration * (K - k) / K, r.c[k], r.s[k]);
+    for (int k = 0; k < K; ++k)
+      w.rotation(duration * (K - k) / K, r.c[k], r.s[k]);
   }
   return r;
 }

@@ -26,6 +26,7 @@
 namespace sg {
 
 struct ReflectionPath {
+  WavePhases phases;              // the waves' phases at the point at the display time
   vec3 view{0};                   // unit, towards the camera
   vec2 xz{0};                     // the surface point
   std::vector<double> times;      // K + 1 instants

@@ -34,7 +34,8 @@ TEST(SweptFootprint, MatchesMonteCarlo) {
                  vec2(2 * rng.uniform() - 1, 0.1 + 3 * rng.uniform()));
     const int K = 1 + trial % 3;
     std::vector<vec2> c(K + 1);
-    for (auto& p : c) p = vec2(6 * rng.uniform() - 3, 6 * rng.uniform() - 3);
+    for (auto& p : c)
+      p = vec2(6 * rng.uniform() - 3, 6 * rng.uniform() - 3);
     if (trial % 7 == 0) c.assign(K + 1, c[0]);  // no motion
     std::vector<char> valid(K + 1, 1);
     const double exact = swept_parallelogram_share(c, valid, D, R);
@@ -57,8 +58,7 @@ TEST(SweptFootprint, LimitsAndInvalidSegments) {
   EXPECT_NEAR(swept_parallelogram_share({vec2(2, 0), vec2(2, 0)}, valid, mat2(1e-3), R), 0.0,
               1e-12);
   // A point crossing the disk's diameter from -1 to 1 spends half its time inside.
-  EXPECT_NEAR(swept_parallelogram_share({vec2(-1, 0), vec2(1, 0)}, valid, mat2(0.0), R), 0.5,
-              1e-3);
+  EXPECT_NEAR(swept_parallelogram_share({vec2(-1, 0), vec2(1, 0)}, valid, mat2(0.0), R), 0.5, 1e-3);
   // A sub-segment with an invalid end contributes nothing.
   std::vector<char> half = {1, 1, 0};
   EXPECT_NEAR(swept_parallelogram_share({vec2(0, 0), vec2(0, 0), vec2(0, 0)}, half, mat2(0.1), R),

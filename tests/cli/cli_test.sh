@@ -78,6 +78,28 @@ expect_fail "taa clamp" "--taa-clamp" \
   "$bin" render "$scene" -m taa --taa-clamp clip --out "$work/a.exr"
 expect_fail "bench taa alpha" "--taa-alpha: must be in (0, 1]" \
   "$bin" bench "$scene" --methods point,taa --taa-alpha 2 --width 16 --height 9
+# Method flags: enumerations and numbers, each error naming its flag, no file left.
+expect_fail "bad microspec area" "--microspec-area: circle not in {approx,exact}" \
+  "$bin" render "$scene" -m microspec --microspec-area circle --out "$work/m.exr"
+expect_no_file "bad microspec area" "$work/m.exr"
+expect_fail "bad specaa derivatives" "--specaa-derivatives: fd not in {analytic,quad}" \
+  "$bin" render "$scene" -m specaa --specaa-derivatives fd --out "$work/m.exr"
+expect_fail "bad specaa kernel" "--specaa-kernel: box not in {full,rect}" \
+  "$bin" render "$scene" -m specaa --specaa-kernel box --out "$work/m.exr"
+expect_fail "bad specaa sigma2" "--specaa-sigma2: must be > 0" \
+  "$bin" render "$scene" -m specaa --specaa-sigma2 0 --out "$work/m.exr"
+expect_fail "bad specaa kappa" "--specaa-kappa: must be >= 0" \
+  "$bin" render "$scene" -m specaa --specaa-kappa -1 --out "$work/m.exr"
+expect_fail "bad bruneton nmax" "--bruneton-nmax: must be > --bruneton-nmin" \
+  "$bin" render "$scene" -m bruneton --bruneton-nmin 2 --bruneton-nmax 1.5 --out "$work/m.exr"
+expect_fail "bad bruneton variance" "--bruneton-min-variance: must be > 0" \
+  "$bin" render "$scene" -m bruneton --bruneton-min-variance 0 --out "$work/m.exr"
+expect_fail "bad bruneton fresnel" "--bruneton-fresnel: exact not in {fit,integral}" \
+  "$bin" render "$scene" -m bruneton --bruneton-fresnel exact --out "$work/m.exr"
+expect_no_file "bad method flags" "$work/m.exr"
+for m in microspec specaa bruneton; do
+  expect_ok "render $m" "$bin" render "$scene" -m "$m" --width 48 -q --out "$work/$m.exr"
+done
 expect_fail "diff sizes" "image sizes differ" bash -c \
   "'$bin' render '$scene' -m point --width 16 -q --out '$work/s16.exr' && \
    '$bin' render '$scene' -m point --width 32 -q --out '$work/s32.exr' && \
@@ -88,6 +110,15 @@ expect_fail "diff png input" "PNG files are pictures" "$bin" diff "$work/x.png" 
 # Help exists for every subcommand.
 for sub in render diff info bench; do
   expect_ok "help $sub" "$bin" "$sub" --help
+done
+# The render help lists the baselines and their flags with their defaults.
+help=$("$bin" render --help 2>&1)
+for want in "microspec:" "specaa:" "bruneton:" "--specaa-sigma2" "0.25" "--bruneton-min-variance" \
+  "2e-05" "--microspec-area"; do
+  if grep -qF -- "$want" <<<"$help"; then passes=$((passes + 1)); else
+    echo "FAIL render help lacks '$want'"
+    fails=$((fails + 1))
+  fi
 done
 
 # Determinism: the same command twice gives the same bytes (two thread counts).
