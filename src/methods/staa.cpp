@@ -90,6 +90,7 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
     // Step 3: the temporal method, exactly (shade() returns temporal_value for these).
     const PathShares p = temporal_shares(m, path);
     out.temporal = true;
+    out.temporal_value = p.value;
     out.in_light = p.in_light;
     out.below = p.below;
     out.fresnel = p.fresnel;
@@ -224,11 +225,10 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
 }
 
 double StaaMethod::shade(const FrameContext& ctx, int i, int j) const {
-  ReflectionPath* path = nullptr;
-  const Shares s = shares(ctx, i, j, &path);
+  const Shares s = shares(ctx, i, j);
   if (!s.hit)
     return miss_radiance(ctx.model, normalize(ctx.model.camera.direction(i + 0.5, j + 0.5)));
-  if (s.temporal) return temporal_value(ctx.model, *path);  // step 3, the temporal method
+  if (s.temporal) return s.temporal_value;  // step 3, the temporal method
   return combine_radiance(ctx.model, s.fresnel, s.in_light, s.below);
 }
 

@@ -48,9 +48,10 @@ class StaaMethod final : public Method {
   // The light, sky and sea shares of a pixel, for tests and diagnostics.
   struct Shares {
     bool hit = false;
-    bool aliasing = false;  // some alpha > 0
-    bool temporal = false;  // step 3: the temporal method, exactly
-    bool fallback = false;  // past the elongation threshold
+    bool aliasing = false;      // some alpha > 0
+    bool temporal = false;      // step 3: the temporal method, exactly
+    double temporal_value = 0;  // its value (step 3 only)
+    bool fallback = false;      // past the elongation threshold
     double in_light = 0, below = 0, fresnel = 1;
   };
   // `path`, when given, receives the pixel's reflection path (per-thread storage, valid

@@ -22,9 +22,10 @@ namespace {
 //            -o staa_S_96x54_f4.pfm
 //   sunglint render scenes/S.json -m staa --footprint none --ndf uniform --kernels 3
 //            --segments 2 --width 96 --frame 7 -o staa_uniform_k3_s2_S_96x54_f7.pfm
-// They were first made by the commit before the footprint term; the phase-sharing speed-up
-// that followed changed pixels by at most 3.5e-18 (rounding), and the images were
-// regenerated then. Any later change to the `none` path fails here.
+// They were first made by the commit before the footprint term. The speed-ups that followed
+// (shared wave phases, vectorised sums, the fallback's 30-node quadrature) moved pixels by
+// rounding or by the quadrature's stated 4e-6, and the images were regenerated with them.
+// Any later change to the `none` path fails here: regenerate only for a deliberate change.
 TEST(StaaFootprint, NoneIsThePaperMethodBitForBit) {
   for (const char* scene : {"simple", "high"}) {
     Scene s = testing::project_scene(scene);

@@ -57,24 +57,37 @@ void WaveField::shift_phases(const WavePhases& p, std::span<const double> rot_c,
 vec2 WaveField::gradient(const WavePhases& p, std::span<const double> w) const {
   assert(w.empty() || w.size() == size());
   double gx = 0, gz = 0;
-  for (size_t i = 0; i < size(); ++i) {
-    const double k = (w.empty() ? 1.0 : w[i]) * A[i] * p.c[i];
-    gx += a[i] * k;
-    gz += b[i] * k;
+  // The sums may be vectorised (reassociated): deterministic for a given build.
+  const double* wi = w.empty() ? nullptr : w.data();
+  if (wi) {
+#pragma omp simd reduction(+ : gx, gz)
+    for (size_t i = 0; i < size(); ++i) {
+      const double k = wi[i] * A[i] * p.c[i];
+      gx += a[i] * k;
+      gz += b[i] * k;
+    }
+  } else {
+#pragma omp simd reduction(+ : gx, gz)
+    for (size_t i = 0; i < size(); ++i) {
+      const double k = A[i] * p.c[i];
+      gx += a[i] * k;
+      gz += b[i] * k;
+    }
   }
   return {gx, gz};
 }
 
 Hessian WaveField::hessian(const WavePhases& p, std::span<const double> w) const {
   assert(w.empty() || w.size() == size());
-  Hessian H;
+  double xx = 0, xz = 0, zz = 0;
+#pragma omp simd reduction(+ : xx, xz, zz)
   for (size_t i = 0; i < size(); ++i) {
     const double s = -(w.empty() ? 1.0 : w[i]) * A[i] * p.s[i];
-    H.xx += a[i] * a[i] * s;
-    H.xz += a[i] * b[i] * s;
-    H.zz += b[i] * b[i] * s;
+    xx += a[i] * a[i] * s;
+    xz += a[i] * b[i] * s;
+    zz += b[i] * b[i] * s;
   }
-  return H;
+  return Hessian{xx, xz, zz};
 }
 
 namespace {

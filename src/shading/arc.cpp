@@ -105,6 +105,19 @@ ArcFractions still(const vec3& r, const LightModel& light) {
 ArcFractions arc_fractions(const vec3& r0_in, const vec3& r1_in, const LightModel& light) {
   const vec3 r0 = checked_unit(r0_in, "r0");
   const vec3 r1 = checked_unit(r1_in, "r1");
+  // Early outs, exact: every point of the arc lies within theta/2 of an endpoint, so when
+  // both endpoints are further than rho + theta/2 from L the arc misses the light's cone,
+  // and when both lie above the horizon by more than theta/2 it never dips below it.
+  // Half the arc's angle from chord lengths, without inverse trigonometry:
+  // sin(theta/2) = |r1 - r0| / 2, cos(theta/2) = |r1 + r0| / 2; then
+  // cos(rho + theta/2) = cos(rho) cos(theta/2) - sin(rho) sin(theta/2).
+  const double sh = 0.5 * length(r1 - r0), ch = 0.5 * length(r1 + r0);
+  const double cos_reach = light.cos_radius * ch - std::sin(light.radius) * sh;
+  const bool misses_light =
+      light.radius < kPi / 2 && ch > 0 && std::max(dot(r0, light.L), dot(r1, light.L)) < cos_reach;
+  const bool stays_above = std::min(r0.y, r1.y) > sh;
+  if (misses_light && stays_above) return ArcFractions{};
+
   const vec3 cr = cross(r0, r1);
   const double s = length(cr);
   const double c = dot(r0, r1);
@@ -130,8 +143,10 @@ ArcFractions arc_fractions(const vec3& r0_in, const vec3& r1_in, const LightMode
     arc.theta = kPi;
   }
 
-  const Intervals cone = cap_on_arc(arc, light.L, std::sin(light.radius), light.cos_radius);
-  const Intervals below = cap_on_arc(arc, vec3(0, -1, 0), 1.0, 0.0);
+  const Intervals cone = misses_light
+                             ? Intervals{}
+                             : cap_on_arc(arc, light.L, std::sin(light.radius), light.cos_radius);
+  const Intervals below = stays_above ? Intervals{} : cap_on_arc(arc, vec3(0, -1, 0), 1.0, 0.0);
   ArcFractions f;
   f.below = std::clamp(below.measure() / arc.theta, 0.0, 1.0);
   f.in_light = std::clamp((cone.measure() - overlap(cone, below)) / arc.theta, 0.0, 1.0 - f.below);

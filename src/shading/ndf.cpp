@@ -69,32 +69,45 @@ PlaneGaussian per_pixel_ndf(const WaveField& w, std::span<const double> weights,
   thread_local std::vector<double> D, sD, cD;
   const size_t n = w.size();
   D.assign(n, 0.0);
-  const bool inv = invertible(J);
-  const mat2 Jinv = inv ? glm::inverse(J) : mat2(0.0);
-  for (size_t i = 0; i < n; ++i) {
-    if (inv && weights[i] != 0 && w.A[i] != 0) D[i] = half_width(vec2(w.a[i], w.b[i]), Jinv);
+  if (invertible(J)) {
+    // half_width without its square root and branches, so that it vectorises: with
+    // q = J^-1 k, D = |k| / (2 max(|q|) / |k|) = |k|^2 / (2 max(|q.x|, |q.y|)).
+    const mat2 Ji = glm::inverse(J);
+    const double i00 = Ji[0][0], i01 = Ji[1][0], i10 = Ji[0][1], i11 = Ji[1][1];
+    const double* a = w.a.data();
+    const double* b = w.b.data();
+    double* d = D.data();
+    for (size_t i = 0; i < n; ++i) {
+      const double qx = std::fabs(i00 * a[i] + i01 * b[i]), qy = std::fabs(i10 * a[i] + i11 * b[i]);
+      d[i] = 0.5 * (a[i] * a[i] + b[i] * b[i]) / std::max(std::max(qx, qy), 1e-300);
+    }
   }
   sD.resize(n);
   cD.resize(n);
   sincos_array(D.data(), sD.data(), cD.data(), n);
-  PlaneGaussian g;
-  double xx = 0, xz = 0, zz = 0;
+  // A wave of weight or amplitude 0 has A = 0 and adds nothing, so the loop needs no
+  // branch and its sums may be vectorised (reassociated; deterministic for a given build).
+  double xx = 0, xz = 0, zz = 0, mx = 0, mz = 0;
+#pragma omp simd reduction(+ : xx, xz, zz, mx, mz)
   for (size_t i = 0; i < n; ++i) {
-    if (weights[i] == 0 || w.A[i] == 0) continue;
     const double A = weights[i] * w.A[i], d = D[i];
-    const double sinc1 = d < 1e-4 ? 1.0 - d * d / 6.0 : sD[i] / d;
-    const double sinc2 = d < 1e-4 ? 1.0 - 2.0 * d * d / 3.0 : sD[i] * cD[i] / d;
+    const double inv_d = 1.0 / std::max(d, 1e-4);  // one division per wave
+    const double sinc1 = d < 1e-4 ? 1.0 - d * d / 6.0 : sD[i] * inv_d;
+    const double sinc2 = d < 1e-4 ? 1.0 - 2.0 * d * d / 3.0 : sD[i] * cD[i] * inv_d;
     const double cos_t = ph.c[i], cos_2t = 2 * cos_t * cos_t - 1;
     const double K = A * cos_t * sinc1;
     const double JJ = 0.5 * A * A * (1.0 + cos_2t * sinc2);
     const double a = w.a[i], b = w.b[i];
-    g.mean -= K * vec2(a, b);  // NDF-plane coordinates are minus the slope
+    mx -= K * a;  // NDF-plane coordinates are minus the slope
+    mz -= K * b;
     // M - B B^T (Eq. 4) for this wave: (JJ - K^2) times (a^2, ab, b^2).
     const double v = JJ - K * K;
     xx += v * a * a;
     xz += v * a * b;
     zz += v * b * b;
   }
+  PlaneGaussian g;
+  g.mean = vec2(mx, mz);
   g.cov = mat2(vec2(xx, xz), vec2(xz, zz));
   return g;
 }

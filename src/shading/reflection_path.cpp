@@ -83,18 +83,13 @@ PathShares temporal_shares(const SceneModel& m, const ReflectionPath& path) {
     s.in_light += f.in_light / K;
     s.below += f.below / K;
     s.fresnel += F / K;
+    s.value += combine_radiance(m, F, f.in_light, f.below) / K;
   }
   return s;
 }
 
 double temporal_value(const SceneModel& m, const ReflectionPath& path) {
-  double sum = 0;
-  for (int k = 0; k < path.segments(); ++k) {
-    double F;
-    ArcFractions f = sub_arc(m, path, k, F);
-    sum += combine_radiance(m, F, f.in_light, f.below);
-  }
-  return sum / path.segments();
+  return temporal_shares(m, path).value;
 }
 
 }  // namespace sg

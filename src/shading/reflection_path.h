@@ -44,6 +44,7 @@ void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameT
 // the light and below the horizon, and the mean Fresnel factor, over all sub-arcs.
 struct PathShares {
   double in_light = 0, below = 0, fresnel = 1;
+  double value = 0;  // temporal_value of the path (its sub-arcs combined one by one)
 };
 PathShares temporal_shares(const SceneModel& m, const ReflectionPath& path);
 
