@@ -37,10 +37,18 @@ void run_bench(BenchArgs& a) {
   if (a.scenes.empty()) throw Error("bench: give at least one scene file");
   a.flags.finish();
   const MethodOptions& opt = a.flags.options;
-  std::vector<std::string> names = split(a.methods);
-  if (names.empty()) throw Error("--methods: give at least one method");
-  for (const auto& n : names)
-    make_method(n, opt);  // validate names first
+  // Each item is a method name, run with the command's method flags, or a variant with
+  // its own flags ("staa --footprint gaussian"), parsed as `compare` parses it.
+  std::vector<MethodVariant> variants;
+  for (const auto& item : split(a.methods)) {
+    if (item.find(' ') == std::string::npos) {
+      make_method(item, opt);  // validate the name first
+      variants.push_back(MethodVariant{item, item, opt});
+    } else {
+      variants.push_back(parse_method_variant(item, "--methods"));
+    }
+  }
+  if (variants.empty()) throw Error("--methods: give at least one method");
   RenderSettings rs;
   rs.threads = a.threads;
   std::printf("| scene | method | ms/frame | x point | samples/s | wave evals/s |\n");
@@ -50,8 +58,10 @@ void run_bench(BenchArgs& a) {
     set_image_size(s, a.width, a.height);
     SceneModel model(s);
     double point_ms = 0;
-    for (const auto& n : names) {
-      auto m = make_method(n, opt);
+    for (const MethodVariant& v : variants) {
+      const std::string& n = v.name;
+      const MethodOptions& vo = v.options;
+      auto m = make_method(n, vo);
       double best = 1e300;
       // A stateful method is timed on a frame that has history to resolve.
       if (m->stateful()) render_frame(model, *m, a.frame - 1, rs);
@@ -66,18 +76,18 @@ void run_bench(BenchArgs& a) {
             best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                       .count());
       }
-      if (n == "point") point_ms = best;
+      if (v.label == "point") point_ms = best;
       std::string sps = "", wps = "";
       if (n == "reference" || n == "supersample") {
-        StratifiedSettings st{opt.samples, n == "supersample" && opt.samples.st == 1};
+        StratifiedSettings st{vo.samples, n == "supersample" && vo.samples.st == 1};
         FrameContext ctx{model, frame_time(s, a.frame), 0};
         long evals = 0;
         for (int j = 0; j < s.height; ++j) {
           for (int i = 0; i < s.width; ++i)
             evals += stratified_pixel_wave_evaluations(ctx, i, j, st);
         }
-        const double samples = double(s.width) * s.height * opt.samples.sx * opt.samples.sy *
-                               (st.time_at_frame ? 1 : opt.samples.st);
+        const double samples = double(s.width) * s.height * vo.samples.sx * vo.samples.sy *
+                               (st.time_at_frame ? 1 : vo.samples.st);
         char buf[64];
         std::snprintf(buf, sizeof buf, "%.3g", samples / (best / 1000));
         sps = buf;
@@ -86,7 +96,7 @@ void run_bench(BenchArgs& a) {
       }
       char ratio[32] = "";
       if (point_ms > 0) std::snprintf(ratio, sizeof ratio, "%.2f", best / point_ms);
-      std::printf("| %s | %s | %.1f | %s | %s | %s |\n", s.name.c_str(), n.c_str(), best, ratio,
+      std::printf("| %s | %s | %.1f | %s | %s | %s |\n", s.name.c_str(), v.label.c_str(), best, ratio,
                   sps.c_str(), wps.c_str());
       std::fflush(stdout);
     }
@@ -99,7 +109,9 @@ void add_bench_command(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* c = app.add_subcommand("bench", "Time methods on scenes (Markdown table)");
   c->add_option("scenes", a->scenes, "Scene files")->required();
-  c->add_option("--methods", a->methods, "Comma-separated methods (put point first for ratios)")
+  c->add_option("--methods", a->methods,
+                "Comma-separated methods or variants with their own flags, e.g. "
+                "\"point,staa,staa --footprint gaussian\" (put point first for ratios)")
       ->capture_default_str();
   c->add_option("--width", a->width, "Image width")
       ->capture_default_str()

@@ -49,7 +49,7 @@ struct StaaOptions {
   double alias_start = 0.2;                       // --alias-start (cycles per pixel, Eq. 20)
   double alias_end = 0.5;                         // --alias-end
   bool nyquist_max_axis = true;                   // --nyquist max|norm (shading/aliasing.h)
-  FootprintMode footprint = FootprintMode::none;  // --footprint none|gaussian|exact
+  FootprintMode footprint = FootprintMode::gaussian;  // --footprint none|gaussian|exact
   // --curvature-limit X: with a footprint term, a resolved wave whose slope departs from
   // its linearisation across the pixel by more than X disk radii of reflection is handed
   // to the aliasing set (0: never).
