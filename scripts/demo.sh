@@ -14,7 +14,9 @@
 #
 # Methods: every catalogue method at its defaults, except `reference` (the ground truth
 # column) and `supersample`, which appears as `supersample --samples 6x6x1` (the paper's
-# MSAA-like baseline); the quality-cost curve covers its other budgets.
+# MSAA-like baseline; the quality-cost curve covers its other budgets); `staa` appears
+# three times: sunglint's default and the paper's method (`--footprint none`) with the
+# uniform and the per-pixel NDF.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 full=0 docs=0 bin=$root/build/sunglint
@@ -38,13 +40,18 @@ while read -r m; do
   case $m in
     reference) ;;
     supersample) methods+=(-m "supersample --samples 6x6x1") ;;
+    staa)
+      # sunglint's default (with the pixel-footprint term) and the paper's method with
+      # either NDF (the rows of its Table 1).
+      methods+=(-m "staa" -m "staa --footprint none --ndf uniform"
+        -m "staa --footprint none --ndf per-pixel") ;;
     *) methods+=(-m "$m") ;;
   esac
 done < <("$bin" compare --list-methods)
 
 start=$(date +%s)
 (cd "$root" && "$bin" compare scenes/simple.json scenes/smooth.json scenes/medium.json scenes/high.json \
-  "${methods[@]}" "${size[@]}" --frames $frames --reference 12x12x8 --out "$out")
+  "${methods[@]}" "${size[@]}" --frames $frames --reference 12x12x8 --cache out/cache --out "$out")
 echo "demo: $(($(date +%s) - start)) s"
 if [ $docs -eq 1 ]; then
   (cd "$root" && "$bin" report "$out/results.json" --markdown docs/results.md \

@@ -96,8 +96,8 @@ void run_bench(BenchArgs& a) {
       }
       char ratio[32] = "";
       if (point_ms > 0) std::snprintf(ratio, sizeof ratio, "%.2f", best / point_ms);
-      std::printf("| %s | %s | %.1f | %s | %s | %s |\n", s.name.c_str(), v.label.c_str(), best, ratio,
-                  sps.c_str(), wps.c_str());
+      std::printf("| %s | %s | %.1f | %s | %s | %s |\n", s.name.c_str(), v.label.c_str(), best,
+                  ratio, sps.c_str(), wps.c_str());
       std::fflush(stdout);
     }
   }
