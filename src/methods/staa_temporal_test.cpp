@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <new>
 
 #include "methods/stratified.h"
 #include "scene/footprint.h"
@@ -98,6 +99,30 @@ TEST(StaaTemporal, SegmentsConvergeToTheTimeIntegral) {
     }
   }
   EXPECT_GT(tested, 2);
+}
+
+TEST(StaaTemporal, PathOfASecondSceneAtTheSameAddressIsItsOwn) {
+  // Two scenes built one after the other in the same storage (as a study over several
+  // scenes may): the path of the second must use the second's wave frequencies, not a
+  // table this thread kept from the first.
+  Scene a = one_wave_telephoto(), b = one_wave_telephoto();
+  b.surface.waves[0].angular_frequency *= 2.7;
+  alignas(SceneModel) unsigned char storage[sizeof(SceneModel)];
+  ReflectionPath path;
+  SceneModel* m = new (storage) SceneModel(a);
+  const FrameTime fta = frame_time(a, 5);
+  reflection_path(*m, pixel_footprint(*m, 24.5, 13.5, fta.end), fta, 2, {}, path);
+  m->~SceneModel();
+  m = new (storage) SceneModel(b);
+  const FrameTime ft = frame_time(b, 5);
+  const PixelFootprint fp = pixel_footprint(*m, 24.5, 13.5, ft.end);
+  reflection_path(*m, fp, ft, 2, {}, path);
+  for (int k = 0; k < 2; ++k) {
+    const vec2 g = m->waves.gradient(fp.point.x, fp.point.z, path.times[k]);
+    EXPECT_NEAR(path.gradients[k].x, g.x, 1e-12) << k;
+    EXPECT_NEAR(path.gradients[k].y, g.y, 1e-12) << k;
+  }
+  m->~SceneModel();
 }
 
 }  // namespace

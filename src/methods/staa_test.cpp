@@ -25,6 +25,7 @@ namespace sg {
 namespace {
 
 TEST(Staa, EqualsTheTemporalMethodWhereNothingAliases) {
+  // The paper's method (no footprint term): with no aliasing wave, Sec. 3.3 exactly.
   Scene s = testing::small_scene({Wave{0.1, {0.0, -0.5}, 10.0, 0.3}}, 48, 27);
   s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -15}, {0, 1, 0}, 2.0};
   s.light =
@@ -32,6 +33,7 @@ TEST(Staa, EqualsTheTemporalMethodWhereNothingAliases) {
   SceneModel m(s);
   StaaOptions o;
   o.segments = 4;
+  o.footprint = FootprintMode::none;
   StaaMethod staa(o);
   StaaTemporalMethod temporal(4);
   int lit = 0;

@@ -8,9 +8,11 @@ namespace sg {
 namespace {
 
 // cos and sin of c_i (end - t_k) for the instants of a path: they depend only on the wave
-// field, the interval's duration and K, so each thread keeps the last table it made.
+// frequencies, the interval's duration and K, so each thread keeps the last table it made.
+// The key is the frequencies themselves, not the field's address: a field built later at
+// the address of a destroyed one (a second scene in the same process) must not reuse it.
 struct Rotations {
-  const WaveField* waves = nullptr;
+  std::vector<double> freq;
   double duration = -1;
   int K = 0;
   std::vector<std::vector<double>> c, s;  // [k]
@@ -18,8 +20,8 @@ struct Rotations {
 
 const Rotations& rotations(const WaveField& w, double duration, int K) {
   thread_local Rotations r;
-  if (r.waves != &w || r.duration != duration || r.K != K || r.c.size() != size_t(K)) {
-    r.waves = &w;
+  if (r.duration != duration || r.K != K || r.c.size() != size_t(K) || r.freq != w.c) {
+    r.freq = w.c;
     r.duration = duration;
     r.K = K;
     r.c.assign(K, {});
