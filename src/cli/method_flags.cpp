@@ -11,10 +11,10 @@ namespace sg {
 
 void MethodFlags::finish(const std::string& context) {
   options.samples = parse_sample_counts(samples, context + "--samples");
-  const StaaOptions& s = options.staa;
-  if (!(s.alias_start >= 0 && s.alias_end > s.alias_start)) {
+  const AliasRange r = alias_range(options.staa);
+  if (!(r.start >= 0 && r.end > r.start)) {
     throw Error(context + "--alias-start, --alias-end: need 0 <= start < end (got " +
-                std::to_string(s.alias_start) + ", " + std::to_string(s.alias_end) + ")");
+                std::to_string(r.start) + ", " + std::to_string(r.end) + ")");
   }
 }
 
@@ -78,11 +78,13 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->capture_default_str()
       ->check(CLI::Range(2, 1024));
   app.add_option("--alias-start", s.alias_start,
-                 "staa: projected frequency (cycles/pixel) where aliasing begins (Eq. 20)")
-      ->capture_default_str();
+                 "staa: projected frequency (cycles/pixel) where aliasing begins (Eq. 20); "
+                 "default 0.2 with --footprint none (the paper), else 0.3")
+      ->check(CLI::Range(0.0, 100.0));
   app.add_option("--alias-end", s.alias_end,
-                 "staa: projected frequency (cycles/pixel) where a wave fully aliases (Eq. 20)")
-      ->capture_default_str();
+                 "staa: projected frequency (cycles/pixel) where a wave fully aliases (Eq. 20); "
+                 "default 0.5 with --footprint none (the paper), else 0.8")
+      ->check(CLI::Range(0.0, 100.0));
   choice(app, "--nyquist", s.nyquist_max_axis, {{"max", true}, {"norm", false}},
          "staa: projected frequency as the larger axis frequency (max) or the norm");
   choice(app, "--footprint", s.footprint,

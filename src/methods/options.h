@@ -46,8 +46,10 @@ struct StaaOptions {
   // the display time only (the paper: "We ignore the temporal integration in our fallback").
   bool fallback_along_path = true;
   int riemann_cells = 32;                         // --riemann-cells N (per disk diameter)
-  double alias_start = 0.2;                       // --alias-start (cycles per pixel, Eq. 20)
-  double alias_end = 0.5;                         // --alias-end
+  // --alias-start, --alias-end: the transition region of Eq. 20 in cycles per pixel;
+  // negative: the default of the footprint mode (alias_range below).
+  double alias_start = -1;
+  double alias_end = -1;
   bool nyquist_max_axis = true;                   // --nyquist max|norm (shading/aliasing.h)
   FootprintMode footprint = FootprintMode::gaussian;  // --footprint none|gaussian|exact
   // --curvature-limit X: with a footprint term, a resolved wave whose slope departs from
@@ -55,6 +57,21 @@ struct StaaOptions {
   // to the aliasing set (0: never).
   double curvature_limit = 0;
 };
+
+// The transition region of Eq. 20 that a `staa` variant uses. Defaults by measurement
+// (docs/method.md, "Defaults"): the paper's 0.2 to 0.5 cycles per pixel (Sec. 4) for
+// `--footprint none`, which is the paper's method; 0.3 to 0.8 with a footprint term, which
+// integrates a resolved wave over the pixel and so can keep it longer.
+struct AliasRange {
+  double start, end;
+};
+inline constexpr AliasRange kPaperAliasRange{0.2, 0.5};
+inline constexpr AliasRange kFootprintAliasRange{0.3, 0.8};
+inline AliasRange alias_range(const StaaOptions& o) {
+  const AliasRange d =
+      o.footprint == FootprintMode::none ? kPaperAliasRange : kFootprintAliasRange;
+  return {o.alias_start >= 0 ? o.alias_start : d.start, o.alias_end >= 0 ? o.alias_end : d.end};
+}
 
 // `lean` (methods/lean.h): LEAN mapping of the waves' slopes.
 enum class LeanFilter { trilinear, aniso };

@@ -60,7 +60,8 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
 
   thread_local std::vector<double> alpha, resolved;
   const mat2 J = fp.xz_jacobian();
-  AliasingParams ap{o_.alias_start, o_.alias_end,
+  const AliasRange range = alias_range(o_);
+  AliasingParams ap{range.start, range.end,
                     o_.nyquist_max_axis ? FrequencyNorm::max : FrequencyNorm::norm};
   alias_fractions(m.waves, J, ap, alpha);
   const bool footprint = o_.footprint != FootprintMode::none;
