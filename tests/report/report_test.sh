@@ -113,6 +113,11 @@ grep -q '](docs/img/simple-grid.png)' "$work/README.md" && pass || fail "README 
 grep -q '^| `point` |' "$work/README.md" && pass || fail "README table"
 grep -q 'old' "$work/README.md" && fail "README section not replaced" || pass
 [ -s "$work/docs/img/high-grid.png" ] && pass || fail "grid not copied"
+# Tables only, under a title of one's own.
+if o=$("$bin" report "$study/results.json" --markdown "$work/docs/tables.md" --no-images \
+  --title "Options study" 2>&1); then pass; else fail "report --no-images: $o"; fi
+head -1 "$work/docs/tables.md" | grep -qx '# Options study' && pass || fail "report --title"
+grep -q 'grid.png' "$work/docs/tables.md" && fail "report --no-images links a picture" || pass
 
 echo "report_test: $passes passed, $fails failed (screenshot: $work/screenshot.png)"
 [ $fails -eq 0 ]
