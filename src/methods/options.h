@@ -45,12 +45,12 @@ struct StaaOptions {
   // --fallback-time path|current: the fallback averaged along the reflection path, or at
   // the display time only (the paper: "We ignore the temporal integration in our fallback").
   bool fallback_along_path = true;
-  int riemann_cells = 32;                         // --riemann-cells N (per disk diameter)
+  int riemann_cells = 32;  // --riemann-cells N (per disk diameter)
   // --alias-start, --alias-end: the transition region of Eq. 20 in cycles per pixel;
   // negative: the default of the footprint mode (alias_range below).
   double alias_start = -1;
   double alias_end = -1;
-  bool nyquist_max_axis = true;                   // --nyquist max|norm (shading/aliasing.h)
+  bool nyquist_max_axis = true;                       // --nyquist max|norm (shading/aliasing.h)
   FootprintMode footprint = FootprintMode::gaussian;  // --footprint none|gaussian|exact
   // --curvature-limit X: with a footprint term, a resolved wave whose slope departs from
   // its linearisation across the pixel by more than X disk radii of reflection is handed
@@ -68,8 +68,7 @@ struct AliasRange {
 inline constexpr AliasRange kPaperAliasRange{0.2, 0.5};
 inline constexpr AliasRange kFootprintAliasRange{0.3, 0.8};
 inline AliasRange alias_range(const StaaOptions& o) {
-  const AliasRange d =
-      o.footprint == FootprintMode::none ? kPaperAliasRange : kFootprintAliasRange;
+  const AliasRange d = o.footprint == FootprintMode::none ? kPaperAliasRange : kFootprintAliasRange;
   return {o.alias_start >= 0 ? o.alias_start : d.start, o.alias_end >= 0 ? o.alias_end : d.end};
 }
 
