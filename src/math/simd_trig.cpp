@@ -85,5 +85,9 @@ void shifted_cosine_sums(const double* ac, const double* as, const double* bc, c
 void sincos_array(const double* x, double* s, double* c, size_t n) {
   HWY_DYNAMIC_DISPATCH(SinCosArray)(x, s, c, n);
 }
+const char* simd_trig_target() {
+  const int64_t targets = hwy::SupportedTargets() & HWY_TARGETS;
+  return targets ? hwy::TargetName(targets & -targets) : "none";  // lowest bit: the best
+}
 }  // namespace sg
 #endif

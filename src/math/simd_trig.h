@@ -15,6 +15,10 @@ namespace sg {
 // s[k] = sin(x[k]), c[k] = cos(x[k]) for k < n. The arrays may not overlap.
 void sincos_array(const double* x, double* s, double* c, size_t n);
 
+// The instruction set the two functions here run on, as Highway names it ("AVX3", "AVX2",
+// ...). Their last bits may differ between instruction sets.
+const char* simd_trig_target();
+
 // Sums of shifted cosines by angle addition, for the gradient of a sum of sines at many
 // times: for q < nt,
 //   gx[q] = sum_k (ac[k] cos_t[k*nt + q] - as[k] sin_t[k*nt + q])
