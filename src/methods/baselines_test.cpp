@@ -103,13 +103,8 @@ TEST(Baselines, DisplacedSchlickSkyAndSeaVariant) {
   // values are finite, and its mean, which sky and sea dominate, is within 0.01 of the
   // reference's (3x3x2 samples; the reference's own noise in the mean is ~1e-4). (The
   // other scenes' displaced intersections are 10-30 times slower to march.)
-  Scene s = testing::project_scene("simple");
+  Scene s = testing::displaced_variant(testing::project_scene("simple"), 0.1);
   set_image_size(s, 160, 90);
-  s.surface.geometry = Geometry::displaced;
-  s.surface.fresnel = FresnelMode::schlick;
-  s.sky_radiance = 0.3;
-  s.surface.sea_radiance = 0.1;
-  s.light.radiance = 20;
   SceneModel m(s);
   MethodOptions ref_opt;
   ref_opt.samples = {3, 3, 2};

@@ -397,21 +397,11 @@ TEST(Lean, LongWavesAgreeWithSupersamplingAtTheFrameTime) {
   EXPECT_LT(rmse[1], 0.35 * point_rmse);
 }
 
-// A displaced, Schlick, sky-and-sea variant of a shared scene.
-Scene variant(Scene s) {
-  s.surface.geometry = Geometry::displaced;
-  s.surface.fresnel = FresnelMode::schlick;
-  s.sky_radiance = 0.3;
-  s.surface.sea_radiance = 0.05;
-  s.light.radiance = 20;
-  return s;
-}
-
 TEST(Lean, SharedScenesRenderWithoutNanOrInf) {
   for (const char* name : {"simple", "smooth", "medium", "high"}) {
     for (bool displaced : {false, true}) {
       Scene s = testing::project_scene(name);
-      if (displaced) s = variant(s);
+      if (displaced) s = testing::displaced_variant(s);
       // Displaced high-frequency water is slow to intersect: a smaller image.
       set_image_size(s, displaced ? 64 : 160, displaced ? 36 : 90);
       SceneModel m(s);

@@ -49,6 +49,41 @@ TEST(Staa, EqualsTheTemporalMethodWhereNothingAliases) {
   EXPECT_GT(lit, 10);
 }
 
+TEST(Staa, AliasRangeDefaultsFollowTheFootprintMode) {
+  // The paper's 0.2-0.5 (Sec. 4) without a footprint term, 0.3-0.8 with one; a value
+  // given explicitly wins. The method renders with exactly these values.
+  StaaOptions o;
+  o.footprint = FootprintMode::none;
+  EXPECT_EQ(alias_range(o).start, 0.2);
+  EXPECT_EQ(alias_range(o).end, 0.5);
+  for (FootprintMode f : {FootprintMode::gaussian, FootprintMode::exact}) {
+    o.footprint = f;
+    EXPECT_EQ(alias_range(o).start, 0.3);
+    EXPECT_EQ(alias_range(o).end, 0.8);
+  }
+  o.alias_end = 2.0;
+  EXPECT_EQ(alias_range(o).start, 0.3);
+  EXPECT_EQ(alias_range(o).end, 2.0);
+
+  Scene s = testing::project_scene("high");
+  s.width = 48;
+  s.height = 27;
+  SceneModel m(s);
+  for (FootprintMode f : {FootprintMode::none, FootprintMode::gaussian}) {
+    StaaOptions def, given;
+    def.footprint = given.footprint = f;
+    given.alias_start = alias_range(def).start;
+    given.alias_end = alias_range(def).end;
+    StaaOptions other = given;
+    other.alias_start = 0.25;
+    StaaMethod a(def), b(given), c(other);
+    const Image ia = render_frame(m, a, 3, {}), ib = render_frame(m, b, 3, {}),
+                ic = render_frame(m, c, 3, {});
+    EXPECT_EQ(ia.data, ib.data);
+    EXPECT_NE(ia.data, ic.data);  // the range matters on this scene
+  }
+}
+
 TEST(Staa, ContinuousWhereAWaveStartsToAlias) {
   // One pixel of the high scene; move the start of the transition region across the
   // projected frequency of its highest resolved wave: the value must not jump when that

@@ -335,20 +335,11 @@ TEST(Taa, CalmWaterAgainstTheAnalyticMirroredDisk) {
   }
 }
 
-Scene variant(Scene s) {
-  s.surface.geometry = Geometry::displaced;
-  s.surface.fresnel = FresnelMode::schlick;
-  s.sky_radiance = 0.3;
-  s.surface.sea_radiance = 0.05;
-  s.light.radiance = 20;
-  return s;
-}
-
 TEST(Taa, SharedScenesRenderWithoutNanOrInf) {
   for (const char* name : {"simple", "smooth", "medium", "high"}) {
     for (bool displaced : {false, true}) {
       Scene s = testing::project_scene(name);
-      if (displaced) s = variant(s);
+      if (displaced) s = testing::displaced_variant(s);
       // Displaced high-frequency water is slow to intersect: a smaller image.
       set_image_size(s, displaced ? 48 : 160, displaced ? 27 : 90);
       SceneModel m(s);

@@ -9,6 +9,7 @@
 #include "report/assets.h"
 #include "report/cache.h"
 #include "report/paper.h"
+#include "report/results.h"
 
 namespace sg {
 namespace fs = std::filesystem;
@@ -42,10 +43,7 @@ std::string html_escape(const std::string& s) {
 namespace {
 
 std::string fmt(const char* f, double v) {
-  if (std::isinf(v)) return v > 0 ? "&infin;" : "-&infin;";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
+  return format_number(f, v, "&infin;");
 }
 std::string code(const std::string& s) {
   return "<code>" + html_escape(s) + "</code>";

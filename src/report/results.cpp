@@ -318,13 +318,17 @@ std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
 }
 
 // -------------------------------------------------------------------------- Markdown
+std::string format_number(const char* format, double v, const std::string& inf_text) {
+  if (std::isinf(v)) return v > 0 ? inf_text : "-" + inf_text;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
 namespace {
 
 std::string fmt(const char* f, double v) {
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
+  return format_number(f, v);
 }
 std::string md_code(const std::string& s) {
   return "`" + s + "`";

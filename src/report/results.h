@@ -103,6 +103,10 @@ std::vector<std::vector<std::string>> parse_csv(const std::string& text);
 // study folder).
 std::string results_to_markdown(const StudyResults& r, const std::string& image_prefix = "");
 
+// printf-style `format` of one number for the documents; infinities as `inf_text` with a
+// minus for -inf ("inf" in Markdown, "&infin;" in HTML).
+std::string format_number(const char* format, double v, const std::string& inf_text = "inf");
+
 // The equal-cost comparison in words; `target_markup` is the target's label as the
 // document writes it (Markdown code, escaped HTML).
 std::string equal_cost_sentence(const EqualCost& e, const std::string& target_markup);

@@ -35,4 +35,15 @@ inline Scene small_scene(std::vector<Wave> waves, int width = 64, int height = 3
   return s;
 }
 
+// A displaced, Schlick, sky-and-sea variant of a scene: the spec's other options at once,
+// with a bright light (radiance 20) so the sun term stands out of sky and sea.
+inline Scene displaced_variant(Scene s, double sea_radiance = 0.05) {
+  s.surface.geometry = Geometry::displaced;
+  s.surface.fresnel = FresnelMode::schlick;
+  s.sky_radiance = 0.3;
+  s.surface.sea_radiance = sea_radiance;
+  s.light.radiance = 20;
+  return s;
+}
+
 }  // namespace sg::testing

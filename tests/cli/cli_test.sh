@@ -61,6 +61,14 @@ expect_fail "unwritable output" "does not exist" \
   "$bin" render "$scene" -m point --width 16 --out "$work/no/such/dir/a.exr"
 expect_fail "bad width" "--width" \
   "$bin" render "$scene" -m point --width 0 --out "$work/a.exr"
+expect_fail "alias start past the footprint default end" \
+  "--alias-start, --alias-end: need 0 <= start < end (got 0.900000, 0.800000)" \
+  "$bin" render "$scene" -m staa --alias-start 0.9 --width 16 --out "$work/alias.exr"
+expect_no_file "alias start past the default end" "$work/alias.exr"
+expect_fail "alias start past the paper's default end" "(got 0.600000, 0.500000)" \
+  "$bin" render "$scene" -m staa --footprint none --alias-start 0.6 --width 16 --out "$work/alias.exr"
+expect_fail "negative alias start" "--alias-start" \
+  "$bin" render "$scene" -m staa --alias-start -1 --width 16 --out "$work/alias.exr"
 expect_fail "unknown flag" "--bogus" "$bin" render "$scene" -m point --bogus --out "$work/a.exr"
 expect_fail "sequence needs a pattern" "exactly one frame number conversion" \
   "$bin" render "$scene" -m point --frames 0-2 --out "$work/a.exr"
