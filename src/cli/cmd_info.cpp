@@ -20,6 +20,21 @@
 namespace sg {
 namespace {
 
+// A radiance as one number when grey, else [r, g, b].
+nlohmann::json rgb_json(const Rgb& c) {
+  if (c.x == c.y && c.y == c.z) return c.x;
+  return nlohmann::json::array({c.x, c.y, c.z});
+}
+std::string rgb_text(const Rgb& c) {
+  char buf[96];
+  if (c.x == c.y && c.y == c.z) {
+    std::snprintf(buf, sizeof buf, "%g", c.x);
+  } else {
+    std::snprintf(buf, sizeof buf, "[%g, %g, %g]", c.x, c.y, c.z);
+  }
+  return buf;
+}
+
 struct InfoArgs {
   std::string scene;
   bool json = false, waves = false;
@@ -61,10 +76,14 @@ void run_info(const InfoArgs& a) {
         {"elevation_deg", elevation},
         {"azimuth_deg", azimuth},
         {"angular_radius_deg", s.light.angular_radius_deg},
-        {"radiance", s.light.radiance},
+        {"radiance", rgb_json(s.light.radiance)},
         {"visible", s.light.visible}}},
-      {"sky_radiance", s.sky_radiance},
-      {"sea_radiance", s.surface.sea_radiance},
+      {"sky",
+       {{"zenith", rgb_json(s.sky.zenith)},
+        {"horizon", rgb_json(s.sky.horizon)},
+        {"exponent", s.sky.exponent},
+        {"gradient", s.sky.gradient}}},
+      {"sea_radiance", rgb_json(s.surface.sea_radiance)},
       {"animation",
        {{"t0", s.animation.t0},
         {"fps", s.animation.fps},
@@ -77,17 +96,22 @@ void run_info(const InfoArgs& a) {
   }
   std::printf("scene        %s (%s)\n", s.name.c_str(), a.scene.c_str());
   std::printf("image        %d x %d\n", s.width, s.height);
-  std::printf("surface      %s geometry, fresnel %s, sea radiance %g\n",
+  std::printf("surface      %s geometry, fresnel %s, sea radiance %s\n",
               j["geometry"].get<std::string>().c_str(), j["fresnel"].get<std::string>().c_str(),
-              s.surface.sea_radiance);
+              rgb_text(s.surface.sea_radiance).c_str());
   std::printf("waves        %zu, wavelengths %.4g to %.4g m, amplitude sum %.4g m\n",
               s.surface.waves.size(), std::isfinite(lmin) ? lmin : 0.0, lmax, w.amplitude_bound());
   std::printf("slopes       variance %.5g (xx %.5g, xz %.5g, zz %.5g), rms %.4g, bound %.4g\n",
               sxx + szz, sxx, sxz, szz, std::sqrt(sxx + szz), w.slope_bound());
-  std::printf("light        elevation %.3f deg, azimuth %.3f deg, radius %.4g deg, radiance %g%s\n",
-              elevation, azimuth, s.light.angular_radius_deg, s.light.radiance,
+  std::printf("light        elevation %.3f deg, azimuth %.3f deg, radius %.4g deg, radiance %s%s\n",
+              elevation, azimuth, s.light.angular_radius_deg, rgb_text(s.light.radiance).c_str(),
               s.light.visible ? ", visible" : "");
-  std::printf("sky          radiance %g\n", s.sky_radiance);
+  if (s.sky.gradient) {
+    std::printf("sky          zenith %s, horizon %s, exponent %g\n", rgb_text(s.sky.zenith).c_str(),
+                rgb_text(s.sky.horizon).c_str(), s.sky.exponent);
+  } else {
+    std::printf("sky          radiance %s\n", rgb_text(s.sky.zenith).c_str());
+  }
   std::printf("animation    %d frames at %g fps from t0 = %g s, shutter %g\n", s.animation.frames,
               s.animation.fps, s.animation.t0, s.animation.shutter);
   if (a.waves) {

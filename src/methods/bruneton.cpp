@@ -14,13 +14,13 @@
 
 namespace sg {
 
-double BrunetonMethod::shade(const FrameContext& ctx, int i, int j) const {
+RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) const {
   const SceneModel& m = ctx.model;
   const double t = ctx.time.end;
   const vec3 o = m.camera.position();
   const vec3 d = normalize(m.camera.direction(i + 0.5, j + 0.5));
   const PixelFootprint rest = rest_plane_footprint(m, i + 0.5, j + 0.5);
-  if (!rest.hit) return miss_radiance(m, d);
+  if (!rest.hit) return miss_weights(m, d);
 
   // 1. Filter weights, w_p = w_n (the grid cell is the pixel).
   thread_local std::vector<double> w, wr;
@@ -30,7 +30,7 @@ double BrunetonMethod::shade(const FrameContext& ctx, int i, int j) const {
   vec3 P = rest.point;
   if (m.displaced()) {
     const RayHit hit = intersect_displaced(m.waves.weighted(w), o, d, t);
-    if (!hit.hit) return miss_radiance(m, d);
+    if (!hit.hit) return miss_weights(m, d);
     P = hit.point;
   }
   const vec3 v = normalize(o - P);
@@ -68,8 +68,10 @@ double BrunetonMethod::shade(const FrameContext& ctx, int i, int j) const {
                 : effective_fresnel_integral(v_ts, sigma2);
   }
   const double below = below_horizon_fraction(v, n, tx, ty, sigma2);
-  return combine_radiance(m, F_bar, 0, below) +
-         F_sun * x * (m.light.radiance - m.scene.sky_radiance);
+  // The sun's term replaces the sky in its solid angle: + F x (light - sky(L)).
+  const double sky_y = reflect_view(n, v).y;
+  return combine_weights(m, F_bar, 0, below, sky_y) +
+         F_sun * x * (light_weights() - sky_weights(m, m.light.L.y));
 }
 
 }  // namespace sg

@@ -54,7 +54,7 @@ class BrunetonMethod final : public Method {
  public:
   explicit BrunetonMethod(BrunetonOptions o) : options_(o) {}
   std::string name() const override { return "bruneton"; }
-  double shade(const FrameContext& ctx, int i, int j) const override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 
  private:
   BrunetonOptions options_;

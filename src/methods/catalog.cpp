@@ -13,10 +13,14 @@
 
 namespace sg {
 
+void store_pixel(const FrameContext& ctx, Image& out, int i, int j, const RadianceWeights& w) {
+  out.at(i, j) = static_cast<float>(ctx.model.radiances.apply(w, 0));
+}
+
 void Method::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1, Image& out) const {
   for (int j = y0; j < y1; ++j) {
     for (int i = x0; i < x1; ++i)
-      out.at(i, j) = static_cast<float>(shade(ctx, i, j));
+      store_pixel(ctx, out, i, j, weights(ctx, i, j));
   }
 }
 

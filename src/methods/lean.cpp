@@ -133,12 +133,12 @@ LeanMoments LeanMethod::lookup(const PixelFootprint& fp) const {
   return map_.lookup(s, ds_dpx, ds_dpy, options_.filter, options_.max_aniso);
 }
 
-double LeanMethod::shade(const FrameContext& ctx, int i, int j) const {
+RadianceWeights LeanMethod::weights(const FrameContext& ctx, int i, int j) const {
   const SceneModel& m = ctx.model;
   const PixelFootprint fp = pixel_footprint(m, i + 0.5, j + 0.5, ctx.time.end);
-  if (!fp.hit) return miss_radiance(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
+  if (!fp.hit) return miss_weights(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
   const LeanMoments mo = lookup(fp);
-  return shade_gaussian_ndf(m, fp.view, -mo.B, mo.covariance() + base_cov_).value;
+  return shade_gaussian_ndf(m, fp.view, -mo.B, mo.covariance() + base_cov_).weights;
 }
 
 }  // namespace sg

@@ -63,7 +63,7 @@ class LeanMethod final : public Method {
   explicit LeanMethod(const LeanOptions& options);
   std::string name() const override { return "lean"; }
   void begin_frame(const FrameContext& ctx) override;
-  double shade(const FrameContext& ctx, int i, int j) const override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 
   // The frame's map and what shading adds to it (valid after begin_frame).
   const LeanMap& map() const { return map_; }

@@ -2,10 +2,14 @@
 // square and the frame's shutter interval of the radiance of the scene spec, or an
 // approximation of it. Every method of `sunglint render --method` implements this.
 //
+// A pixel's result is the weights of the scene's four radiances (light, sky zenith, sky
+// horizon, sea; shading/radiance.h), not a colour: the radiances are applied once per
+// pixel when the tile is stored, so grey and colour scenes cost the same.
+//
 // The engine calls begin_frame once (single-threaded: per-frame tables, maps), then
 // shade_tile from many threads (each tile once), then end_frame once with the whole
-// image (stateful methods such as TAA resolve there). Frames of a sequence arrive in
-// order; a method that needs its previous frame says so with `stateful()`.
+// image (stateful methods such as TAA resolve there, on the image's values). Frames of a sequence
+// arrive in order; a method that needs its previous frame says so with `stateful()`.
 #pragma once
 
 #include <cstdint>
@@ -31,10 +35,15 @@ class Method {
   virtual std::string name() const = 0;
 
   virtual void begin_frame(const FrameContext&) {}
-  // Value of pixel (i, j). Must be thread-safe and depend on nothing but its arguments
-  // and the state set by begin_frame.
-  virtual double shade(const FrameContext& ctx, int i, int j) const = 0;
-  // Pixels [x0, x1) x [y0, y1) into `out`. The default calls shade() for each.
+  // The radiance weights of pixel (i, j). Must be thread-safe and depend on nothing but
+  // its arguments and the state set by begin_frame.
+  virtual RadianceWeights weights(const FrameContext& ctx, int i, int j) const = 0;
+  // The value of pixel (i, j) in channel 0 (a grey scene's value): its weights applied
+  // to the scene's radiances.
+  double shade(const FrameContext& ctx, int i, int j) const {
+    return ctx.model.radiances.apply(weights(ctx, i, j), 0);
+  }
+  // Pixels [x0, x1) x [y0, y1) into `out`. The default stores weights() of each.
   virtual void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                           Image& out) const;
   virtual void end_frame(const FrameContext&, Image&) {}
@@ -48,6 +57,9 @@ class Method {
   // Stateful methods: drops the history; the next frame is a first frame.
   virtual void reset() {}
 };
+
+// Stores pixel (i, j) of `out` from its radiance weights (the radiances applied).
+void store_pixel(const FrameContext& ctx, Image& out, int i, int j, const RadianceWeights& w);
 
 struct MethodInfo {
   std::string name;

@@ -108,27 +108,28 @@ MicrospecFractions microspec_fractions(const LightModel& light,
   return f;
 }
 
-double microspec_value(const SceneModel& m, const std::array<CornerReflection, 4>& c,
-                       MicrospecArea area) {
+RadianceWeights microspec_weights(const SceneModel& m, const std::array<CornerReflection, 4>& c,
+                                  MicrospecArea area) {
   const MicrospecFractions f = microspec_fractions(m.light, c, area);
   const vec3 v = normalize(c[0].v + c[1].v + c[2].v + c[3].v);
   const double nv = std::sqrt(std::max(0.0, 0.5 * (1.0 + dot(f.brightest, v))));
-  return combine_radiance(m, fresnel(m.scene.surface.fresnel, nv), f.in_light, f.below);
+  return combine_weights(m, fresnel(m.scene.surface.fresnel, nv), f.in_light, f.below,
+                         reflect_view(normalize(f.brightest), v).y);
 }
 
-double MicrospecMethod::shade_corners(const FrameContext& ctx, int i, int j,
-                                      const std::array<CornerReflection, 4>& c) const {
+RadianceWeights MicrospecMethod::shade_corners(const FrameContext& ctx, int i, int j,
+                                               const std::array<CornerReflection, 4>& c) const {
   for (const auto& k : c) {
     if (!k.hit) {
       const SceneModel& m = ctx.model;
-      return radiance_along_ray(m, m.camera.position(), m.camera.direction(i + 0.5, j + 0.5),
-                                ctx.time.end);
+      return weights_along_ray(m, m.camera.position(), m.camera.direction(i + 0.5, j + 0.5),
+                               ctx.time.end);
     }
   }
-  return microspec_value(ctx.model, c, options_.area);
+  return microspec_weights(ctx.model, c, options_.area);
 }
 
-double MicrospecMethod::shade(const FrameContext& ctx, int i, int j) const {
+RadianceWeights MicrospecMethod::weights(const FrameContext& ctx, int i, int j) const {
   const double t = ctx.time.end;
   const std::array<CornerReflection, 4> c = {
       corner_reflection(ctx.model, i, j, t), corner_reflection(ctx.model, i + 1, j, t),
@@ -149,7 +150,7 @@ void MicrospecMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1
     for (int i = x0; i < x1; ++i) {
       const CornerReflection* row = &grid[(j - y0) * w + (i - x0)];
       const std::array<CornerReflection, 4> c = {row[0], row[1], row[w + 1], row[w]};
-      out.at(i, j) = static_cast<float>(shade_corners(ctx, i, j, c));
+      store_pixel(ctx, out, i, j, shade_corners(ctx, i, j, c));
     }
   }
 }

@@ -91,21 +91,22 @@ MicrospecFractions microspec_fractions(const LightModel& light,
                                        MicrospecArea area);
 
 // The pixel value from its four corners (combine_radiance of the fractions).
-double microspec_value(const SceneModel& m, const std::array<CornerReflection, 4>& corners,
-                       MicrospecArea area);
+RadianceWeights microspec_weights(const SceneModel& m,
+                                  const std::array<CornerReflection, 4>& corners,
+                                  MicrospecArea area);
 
 class MicrospecMethod final : public Method {
  public:
   explicit MicrospecMethod(MicrospecOptions o) : options_(o) {}
   std::string name() const override { return "microspec"; }
-  double shade(const FrameContext& ctx, int i, int j) const override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
   // Neighbouring pixels share corners: a tile traces its (w+1) x (h+1) corners once.
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                   Image& out) const override;
 
  private:
-  double shade_corners(const FrameContext& ctx, int i, int j,
-                       const std::array<CornerReflection, 4>& c) const;
+  RadianceWeights shade_corners(const FrameContext& ctx, int i, int j,
+                                const std::array<CornerReflection, 4>& c) const;
   MicrospecOptions options_;
 };
 

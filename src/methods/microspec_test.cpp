@@ -20,7 +20,7 @@
 namespace sg {
 namespace {
 
-const LightModel kLight(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, 1, false});
+const LightModel kLight(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, Rgb(1.0), false});
 
 // Corners whose reflections pass through the given light-plane points.
 std::array<CornerReflection, 4> corners_at(const std::array<vec2, 4>& p) {

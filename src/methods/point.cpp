@@ -4,10 +4,10 @@
 
 namespace sg {
 
-double PointMethod::shade(const FrameContext& ctx, int i, int j) const {
+RadianceWeights PointMethod::weights(const FrameContext& ctx, int i, int j) const {
   const SceneModel& m = ctx.model;
-  return radiance_along_ray(m, m.camera.position(), m.camera.direction(i + 0.5, j + 0.5),
-                            ctx.time.end);
+  return weights_along_ray(m, m.camera.position(), m.camera.direction(i + 0.5, j + 0.5),
+                           ctx.time.end);
 }
 
 }  // namespace sg

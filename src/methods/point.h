@@ -11,7 +11,7 @@ namespace sg {
 class PointMethod final : public Method {
  public:
   std::string name() const override { return "point"; }
-  double shade(const FrameContext& ctx, int i, int j) const override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 };
 
 }  // namespace sg

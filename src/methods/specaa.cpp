@@ -36,8 +36,8 @@ void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, dou
                                          m.light.L);
 }
 
-double specaa_value(const SceneModel& m, const SpecaaSample& s, const vec2& ddx, const vec2& ddy,
-                    const SpecaaOptions& o) {
+RadianceWeights specaa_weights(const SceneModel& m, const SpecaaSample& s, const vec2& ddx,
+                               const vec2& ddy, const SpecaaOptions& o) {
   const LightModel& light = m.light;
   const vec3& v = s.footprint.view;
   // The kernel as a covariance of tangent slopes, then of NDF-plane points.
@@ -54,14 +54,15 @@ double specaa_value(const SceneModel& m, const SpecaaSample& s, const vec2& ddx,
     below = gaussian_half_plane_mass(mean, cov_r, vec2(light.e1.y, light.e2.y), light.L.y);
   }
   const double F = fresnel(m.scene.surface.fresnel, dot(s.frame.n, v));
-  return combine_radiance(m, F, in_light, below);
+  return combine_weights(m, F, in_light, below, rc.y);
 }
 
-double SpecaaMethod::shade_pixel(const FrameContext& ctx, int i, int j, const SpecaaSample& own,
-                                 const SpecaaSample& nx, const SpecaaSample& ny) const {
+RadianceWeights SpecaaMethod::shade_pixel(const FrameContext& ctx, int i, int j,
+                                          const SpecaaSample& own, const SpecaaSample& nx,
+                                          const SpecaaSample& ny) const {
   const SceneModel& m = ctx.model;
   if (!own.hit) {
-    return miss_radiance(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
+    return miss_weights(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
   }
   vec2 ddx, ddy;
   if (options_.derivatives == SpecaaDerivatives::quad && nx.hit && ny.hit) {
@@ -71,10 +72,10 @@ double SpecaaMethod::shade_pixel(const FrameContext& ctx, int i, int j, const Sp
   } else {
     specaa_analytic_derivatives(m, own, ctx.time.end, ddx, ddy);
   }
-  return specaa_value(m, own, ddx, ddy, options_);
+  return specaa_weights(m, own, ddx, ddy, options_);
 }
 
-double SpecaaMethod::shade(const FrameContext& ctx, int i, int j) const {
+RadianceWeights SpecaaMethod::weights(const FrameContext& ctx, int i, int j) const {
   const double t = ctx.time.end;
   const SpecaaSample own = specaa_sample(ctx.model, i + 0.5, j + 0.5, t);
   if (options_.derivatives == SpecaaDerivatives::analytic) {
@@ -103,8 +104,7 @@ void SpecaaMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, i
   auto at = [&](int i, int j) -> const SpecaaSample& { return grid[(j - qy0) * w + (i - qx0)]; };
   for (int j = y0; j < y1; ++j) {
     for (int i = x0; i < x1; ++i) {
-      out.at(i, j) =
-          static_cast<float>(shade_pixel(ctx, i, j, at(i, j), at(i ^ 1, j), at(i, j ^ 1)));
+      store_pixel(ctx, out, i, j, shade_pixel(ctx, i, j, at(i, j), at(i ^ 1, j), at(i, j ^ 1)));
     }
   }
 }

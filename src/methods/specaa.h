@@ -57,22 +57,22 @@ void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, dou
                                  vec2& ddy);
 
 // The pixel value for a centre sample and its derivatives.
-double specaa_value(const SceneModel& m, const SpecaaSample& s, const vec2& ddx, const vec2& ddy,
-                    const SpecaaOptions& o);
+RadianceWeights specaa_weights(const SceneModel& m, const SpecaaSample& s, const vec2& ddx,
+                               const vec2& ddy, const SpecaaOptions& o);
 
 class SpecaaMethod final : public Method {
  public:
   explicit SpecaaMethod(SpecaaOptions o) : options_(o) {}
   std::string name() const override { return "specaa"; }
-  double shade(const FrameContext& ctx, int i, int j) const override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
   // Quad derivatives share samples: a tile samples its quad-aligned cover once.
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                   Image& out) const override;
 
  private:
   // Value of pixel (i, j) given its sample and its quad neighbours in x and in y.
-  double shade_pixel(const FrameContext& ctx, int i, int j, const SpecaaSample& own,
-                     const SpecaaSample& nx, const SpecaaSample& ny) const;
+  RadianceWeights shade_pixel(const FrameContext& ctx, int i, int j, const SpecaaSample& own,
+                              const SpecaaSample& nx, const SpecaaSample& ny) const;
   SpecaaOptions options_;
 };
 

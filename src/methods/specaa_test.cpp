@@ -142,12 +142,12 @@ TEST(Specaa, QuadPartnersShareTheirDerivatives) {
                      h11 = h(qi + 1, qj + 1);
   const vec2 dx0 = h10.h_perp - h00.h_perp, dx1 = h11.h_perp - h01.h_perp;
   const vec2 dy0 = h01.h_perp - h00.h_perp, dy1 = h11.h_perp - h10.h_perp;
-  EXPECT_EQ(method.shade(ctx, qi, qj), specaa_value(m, h00, dx0, dy0, o));
-  EXPECT_EQ(method.shade(ctx, qi + 1, qj), specaa_value(m, h10, dx0, dy1, o));
-  EXPECT_EQ(method.shade(ctx, qi, qj + 1), specaa_value(m, h01, dx1, dy0, o));
-  EXPECT_EQ(method.shade(ctx, qi + 1, qj + 1), specaa_value(m, h11, dx1, dy1, o));
+  EXPECT_EQ(method.shade(ctx, qi, qj), grey_value(m, specaa_weights(m, h00, dx0, dy0, o)));
+  EXPECT_EQ(method.shade(ctx, qi + 1, qj), grey_value(m, specaa_weights(m, h10, dx0, dy1, o)));
+  EXPECT_EQ(method.shade(ctx, qi, qj + 1), grey_value(m, specaa_weights(m, h01, dx1, dy0, o)));
+  EXPECT_EQ(method.shade(ctx, qi + 1, qj + 1), grey_value(m, specaa_weights(m, h11, dx1, dy1, o)));
   // The coarse alternative (one difference for the whole quad) differs here.
-  EXPECT_NE(method.shade(ctx, qi + 1, qj + 1), specaa_value(m, h11, dx0, dy0, o));
+  EXPECT_NE(method.shade(ctx, qi + 1, qj + 1), grey_value(m, specaa_weights(m, h11, dx0, dy0, o)));
 }
 
 TEST(Specaa, ValueIsTheLobesMassInTheLightDisk) {
@@ -188,7 +188,7 @@ TEST(Specaa, ValueIsTheLobesMassInTheLightDisk) {
     const double scale = m.light.radius / std::sqrt(k0[0][0] + k0[1][1]);
     const vec2 dx = scale * ddx, dy = scale * ddy;
     const mat2 cov = filtering_kernel_covariance(dx, dy, o.sigma2, o.kappa, shape);
-    const double value = specaa_value(m, best, dx, dy, o);
+    const double value = grey_value(m, specaa_weights(m, best, dx, dy, o));
     // Monte Carlo in the tangent frame (Cholesky of the 2x2 covariance).
     const double a = std::sqrt(cov[0][0]), b = cov[0][1] / a,
                  c = std::sqrt(std::max(0.0, cov[1][1] - b * b));

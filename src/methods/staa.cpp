@@ -93,7 +93,7 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
     // Step 3: the temporal method, exactly (shade() returns temporal_value for these).
     const PathShares p = temporal_shares(m, path);
     out.temporal = true;
-    out.temporal_value = p.value;
+    out.temporal_weights = p.weights;
     out.in_light = p.in_light;
     out.below = p.below;
     out.fresnel = p.fresnel;
@@ -124,6 +124,7 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
   const vec2 nc_now = -path.gradients[K] + ndf.mean;
   const vec3 n_now = normalize(vec3(nc_now.x, 1, nc_now.y));
   out.fresnel = fresnel(fm, dot(n_now, path.view));
+  out.sky_y = reflect_view(n_now, path.view).y;
   if (!valid[K]) {
     // The reflection points away from the light: nothing of the RDF reaches it.
     out.below = dot(reflect_about_ndf_point(nc_now, path.view), vec3(0, 1, 0)) <= 0 ? 1.0 : 0.0;
@@ -246,12 +247,12 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j,
   return out;
 }
 
-double StaaMethod::shade(const FrameContext& ctx, int i, int j) const {
+RadianceWeights StaaMethod::weights(const FrameContext& ctx, int i, int j) const {
   const Shares s = shares(ctx, i, j);
   if (!s.hit)
-    return miss_radiance(ctx.model, normalize(ctx.model.camera.direction(i + 0.5, j + 0.5)));
-  if (s.temporal) return s.temporal_value;  // step 3, the temporal method
-  return combine_radiance(ctx.model, s.fresnel, s.in_light, s.below);
+    return miss_weights(ctx.model, normalize(ctx.model.camera.direction(i + 0.5, j + 0.5)));
+  if (s.temporal) return s.temporal_weights;  // step 3, the temporal method
+  return combine_weights(ctx.model, s.fresnel, s.in_light, s.below, s.sky_y);
 }
 
 }  // namespace sg

@@ -43,16 +43,17 @@ class StaaMethod final : public Method {
  public:
   explicit StaaMethod(const StaaOptions& o);
   std::string name() const override { return "staa"; }
-  double shade(const FrameContext& ctx, int i, int j) const override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 
   // The light, sky and sea shares of a pixel, for tests and diagnostics.
   struct Shares {
     bool hit = false;
-    bool aliasing = false;      // some alpha > 0
-    bool temporal = false;      // step 3: the temporal method, exactly
-    double temporal_value = 0;  // its value (step 3 only)
-    bool fallback = false;      // past the elongation threshold
+    bool aliasing = false;                  // some alpha > 0
+    bool temporal = false;                  // step 3: the temporal method, exactly
+    RadianceWeights temporal_weights{0.0};  // its weights (step 3 only)
+    bool fallback = false;                  // past the elongation threshold
     double in_light = 0, below = 0, fresnel = 1;
+    double sky_y = 1;  // the height of the centre reflection (splits the sky's weight)
   };
   // `path`, when given, receives the pixel's reflection path (per-thread storage, valid
   // until the next call on this thread).

@@ -6,13 +6,13 @@
 
 namespace sg {
 
-double StaaTemporalMethod::shade(const FrameContext& ctx, int i, int j) const {
+RadianceWeights StaaTemporalMethod::weights(const FrameContext& ctx, int i, int j) const {
   const SceneModel& m = ctx.model;
   const PixelFootprint fp = pixel_footprint(m, i + 0.5, j + 0.5, ctx.time.end);
-  if (!fp.hit) return miss_radiance(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
+  if (!fp.hit) return miss_weights(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
   thread_local ReflectionPath path;
   reflection_path(m, fp, ctx.time, segments_, {}, path);
-  return temporal_value(m, path);
+  return temporal_weights(m, path);
 }
 
 }  // namespace sg

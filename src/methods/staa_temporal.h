@@ -16,7 +16,7 @@ class StaaTemporalMethod final : public Method {
  public:
   explicit StaaTemporalMethod(int segments) : segments_(segments) {}
   std::string name() const override { return "staa-temporal"; }
-  double shade(const FrameContext& ctx, int i, int j) const override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 
  private:
   int segments_;

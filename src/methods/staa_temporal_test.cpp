@@ -25,7 +25,7 @@ Scene one_wave_telephoto() {
   Scene s = testing::small_scene({Wave{0.5, {0.0, -0.1}, 6.0, 0.3}}, 48, 27);
   s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -15}, {0, 1, 0}, 1.0};
   const double e = std::atan(2.5 / 15);
-  s.light = LightDesc{{0, std::sin(e), -std::cos(e)}, 4.0, 1.0, false};
+  s.light = LightDesc{{0, std::sin(e), -std::cos(e)}, 4.0, Rgb(1.0), false};
   return s;
 }
 
@@ -45,7 +45,7 @@ TEST(StaaTemporal, MatchesTheReferenceWhereTheWaveIsResolved) {
         double mean = 0, mean2 = 0;
         for (uint64_t seed = 0; seed < 4; ++seed) {
           FrameContext c{m, frame_time(s, frame), seed};
-          double v = stratified_pixel(c, i, j, {{4, 4, 64}, false});
+          double v = grey_value(c.model, stratified_pixel(c, i, j, {{4, 4, 64}, false}));
           mean += v / 4;
           mean2 += v * v / 4;
         }
@@ -92,7 +92,7 @@ TEST(StaaTemporal, SegmentsConvergeToTheTimeIntegral) {
       double e1 = 0, e32 = 0;
       for (int K : {1, 32}) {
         reflection_path(m, fp, ft, K, {}, path);
-        (K == 1 ? e1 : e32) = std::fabs(temporal_value(m, path) - dense);
+        (K == 1 ? e1 : e32) = std::fabs(grey_value(m, temporal_weights(m, path)) - dense);
       }
       EXPECT_LT(e32, 2e-3) << j;  // 32 arcs follow the curved path closely
       EXPECT_LE(e32, e1 + 1e-9) << j;

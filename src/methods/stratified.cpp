@@ -27,7 +27,8 @@ Scratch& scratch() {
 
 // Flat water: the wave phases of each position and the c t of each time are evaluated
 // once (vectorised, math/simd_trig.h) and combined per sample by angle addition.
-double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s, Pcg32& rng) {
+RadianceWeights flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s,
+                           Pcg32& rng) {
   const SceneModel& m = ctx.model;
   const WaveField& w = m.waves;
   const size_t nw = w.size();
@@ -45,7 +46,7 @@ double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetting
 
   // Positions, in the stream's order; those that miss the water see the sky at all times.
   const vec3 origin = m.camera.position();
-  double sum = 0;
+  RadianceWeights sum(0.0);
   sc.dirs.clear();
   sc.theta.clear();
   for (int cy = 0; cy < s.samples.sy; ++cy) {
@@ -55,7 +56,7 @@ double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetting
       const vec3 d = normalize(m.camera.direction(px, py));
       RayHit hit = intersect_flat(origin, d);
       if (!hit.hit) {
-        sum += nt * miss_radiance(m, d);
+        sum += double(nt) * miss_weights(m, d);
         continue;
       }
       sc.dirs.push_back(d);
@@ -86,27 +87,27 @@ double flat_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetting
                         sc.sin_ct.data(), nw, nt, sc.gx.data(), sc.gz.data());
     const vec3 v = -sc.dirs[h];
     for (int q = 0; q < nt; ++q) {
-      sum += water_radiance(m, normal_direction(vec2(sc.gx[q], sc.gz[q])), v);
+      sum += water_weights(m, normal_direction(vec2(sc.gx[q], sc.gz[q])), v);
     }
   }
   return sum / (static_cast<double>(nt) * s.samples.sx * s.samples.sy);
 }
 
 // Displaced water: the hit point depends on time, so each sample traces its own ray.
-double displaced_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s,
-                       Pcg32& rng) {
+RadianceWeights displaced_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s,
+                                Pcg32& rng) {
   const SceneModel& m = ctx.model;
   Scratch& sc = scratch();
   draw_sample_times(rng, ctx.time, s, sc.times);
   const int nt = static_cast<int>(sc.times.size());
-  double sum = 0;
+  RadianceWeights sum(0.0);
   for (int cy = 0; cy < s.samples.sy; ++cy) {
     for (int cx = 0; cx < s.samples.sx; ++cx) {
       const double px = i + (cx + rng.uniform()) / s.samples.sx;
       const double py = j + (cy + rng.uniform()) / s.samples.sy;
       const vec3 d = m.camera.direction(px, py);
       for (int q = 0; q < nt; ++q)
-        sum += radiance_along_ray(m, m.camera.position(), d, sc.times[q]);
+        sum += weights_along_ray(m, m.camera.position(), d, sc.times[q]);
     }
   }
   return sum / (static_cast<double>(nt) * s.samples.sx * s.samples.sy);
@@ -124,7 +125,8 @@ void draw_sample_times(Pcg32& rng, const FrameTime& ft, const StratifiedSettings
   }
 }
 
-double stratified_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s) {
+RadianceWeights stratified_pixel(const FrameContext& ctx, int i, int j,
+                                 const StratifiedSettings& s) {
   Pcg32 rng = pixel_rng(ctx.seed, ctx.time.frame, i, j);
   return ctx.model.displaced() ? displaced_pixel(ctx, i, j, s, rng) : flat_pixel(ctx, i, j, s, rng);
 }

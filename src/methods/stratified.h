@@ -30,7 +30,8 @@ struct StratifiedSettings {
   bool time_at_frame = false;
 };
 
-double stratified_pixel(const FrameContext& ctx, int i, int j, const StratifiedSettings& s);
+RadianceWeights stratified_pixel(const FrameContext& ctx, int i, int j,
+                                 const StratifiedSettings& s);
 
 // The sample times: the first T numbers of the pixel's stream, one uniform time in each
 // of the T equal strata of [start, end] (or the single time t_f with time_at_frame).

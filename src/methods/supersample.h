@@ -17,7 +17,7 @@ class StratifiedMethod final : public Method {
   StratifiedMethod(std::string name, StratifiedSettings settings)
       : name_(std::move(name)), settings_(settings) {}
   std::string name() const override { return name_; }
-  double shade(const FrameContext& ctx, int i, int j) const override {
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {
     return stratified_pixel(ctx, i, j, settings_);
   }
   const StratifiedSettings& settings() const { return settings_; }

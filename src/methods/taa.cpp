@@ -37,16 +37,16 @@ void TaaMethod::begin_frame(const FrameContext& ctx) {
   motion_.assign(static_cast<size_t>(m.width()) * m.height(), vec2(0));
 }
 
-double TaaMethod::sample(const FrameContext& ctx, int i, int j, vec2* motion) const {
+RadianceWeights TaaMethod::sample(const FrameContext& ctx, int i, int j, vec2* motion) const {
   const SceneModel& m = ctx.model;
   const vec2 p = vec2(i + 0.5, j + 0.5) + jitter_;
   const vec3 origin = m.camera.position();
   if (!motion || !m.displaced()) {
-    return radiance_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end);
+    return weights_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end);
   }
   RayHit hit;
-  const double value =
-      radiance_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end, &hit);
+  const RadianceWeights value =
+      weights_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end, &hit);
   if (hit.hit) {
     const vec3 before(hit.point.x, m.waves.height(hit.point.x, hit.point.z, t_prev_), hit.point.z);
     double px, py;
@@ -55,7 +55,7 @@ double TaaMethod::sample(const FrameContext& ctx, int i, int j, vec2* motion) co
   return value;
 }
 
-double TaaMethod::shade(const FrameContext& ctx, int i, int j) const {
+RadianceWeights TaaMethod::weights(const FrameContext& ctx, int i, int j) const {
   return sample(ctx, i, j, nullptr);
 }
 
@@ -64,8 +64,7 @@ void TaaMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int 
   const int w = ctx.model.width();
   for (int j = y0; j < y1; ++j) {
     for (int i = x0; i < x1; ++i) {
-      out.at(i, j) =
-          static_cast<float>(sample(ctx, i, j, &motion_[static_cast<size_t>(j) * w + i]));
+      store_pixel(ctx, out, i, j, sample(ctx, i, j, &motion_[static_cast<size_t>(j) * w + i]));
     }
   }
 }

@@ -8,7 +8,7 @@
 // Frame f (display time t_f):
 //  1. Current samples: one camera ray per pixel through (i + 1/2, j + 1/2) + jitter(f), the
 //     Halton (2, 3) offset of index (f mod K) + 1 (`--taa-jitter-count` K, default 8),
-//     shaded at t_f exactly as `point` shades (shading/radiance.h, radiance_along_ray).
+//     shaded at t_f exactly as `point` shades (shading/radiance.h, weights_along_ray).
 //  2. Motion vectors (the engine's velocity buffer), per sample: where the surface point
 //     it hit was at the previous frame's display time t_{f-1}. The camera of the scene
 //     spec is static, so the sky (at infinity) does not move. Flat water is the plane
@@ -56,7 +56,7 @@ class TaaMethod final : public Method {
 
   void begin_frame(const FrameContext& ctx) override;
   // The current (jittered) sample of pixel (i, j).
-  double shade(const FrameContext& ctx, int i, int j) const override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
   // Current samples and their motion vectors.
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                   Image& out) const override;
@@ -71,7 +71,7 @@ class TaaMethod final : public Method {
   bool has_history() const { return has_history_; }
 
  private:
-  double sample(const FrameContext& ctx, int i, int j, vec2* motion) const;
+  RadianceWeights sample(const FrameContext& ctx, int i, int j, vec2* motion) const;
 
   TaaOptions options_;
   Image history_;

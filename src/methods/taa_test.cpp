@@ -114,7 +114,7 @@ TEST(TaaResolve, VarianceClippingClampsAnOutlierHistoryToTheBox) {
 Scene sky_scene(double sky) {
   Scene s = testing::small_scene({Wave{0.05, {0.3, -1.2}, 3.4, 0.0}}, 24, 16);
   s.camera.look_at = vec3(0, 40, -60);  // 34 degrees up, 20 degrees half fov: all sky
-  s.sky_radiance = sky;
+  s.sky = SkyDesc::constant(Rgb(sky));
   return s;
 }
 
@@ -150,9 +150,10 @@ TEST(Taa, AlphaOneOutputsTheCurrentJitteredFrame) {
     const vec2 jit = taa_jitter(f, 8);
     for (int j = 0; j < m.height(); ++j) {
       for (int i = 0; i < m.width(); ++i) {
-        const double v = radiance_along_ray(m, m.camera.position(),
+        const double v =
+            grey_value(m, weights_along_ray(m, m.camera.position(),
                                             m.camera.direction(i + 0.5 + jit.x, j + 0.5 + jit.y),
-                                            s.frame_time(f));
+                                            s.frame_time(f)));
         ASSERT_EQ(img.at(i, j), static_cast<float>(v)) << i << "," << j;
         lit += v > 0.5;
       }

@@ -23,8 +23,8 @@ class Ema final : public Method {
   explicit Ema(int* frames_rendered) : count_(frames_rendered) {}
   std::string name() const override { return "ema"; }
   bool stateful() const override { return true; }
-  double shade(const FrameContext& ctx, int i, int j) const override {
-    return point_.shade(ctx, i, j);
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {
+    return point_.weights(ctx, i, j);
   }
   void end_frame(const FrameContext&, Image& img) override {
     if (!prev_.data.empty()) {

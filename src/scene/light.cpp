@@ -13,7 +13,6 @@ LightModel::LightModel(const LightDesc& d) {
   radius = radians(d.angular_radius_deg);
   cos_radius = std::cos(radius);
   tan_radius = std::tan(radius);
-  radiance = d.radiance;
   visible = d.visible;
 }
 

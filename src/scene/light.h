@@ -21,7 +21,6 @@ struct LightModel {
   double radius = 0;  // angular radius, radians
   double cos_radius = 1;
   double tan_radius = 0;  // radius of the disk on the light plane
-  double radiance = 1;
   bool visible = false;
 
   LightModel() = default;

@@ -12,7 +12,7 @@ namespace {
 
 TEST(Light, FrameIsOrthonormalAndRightHanded) {
   for (vec3 dir : {vec3(0, 0.207912, -0.978148), vec3(0.3, 0.5, 0.1), vec3(0, 1, 0)}) {
-    LightModel l(LightDesc{dir, 0.27, 1, false});
+    LightModel l(LightDesc{dir, 0.27, Rgb(1.0), false});
     EXPECT_NEAR(length(l.L), 1, 1e-15);
     EXPECT_NEAR(length(l.e1), 1, 1e-15);
     EXPECT_NEAR(length(l.e2), 1, 1e-15);
@@ -23,7 +23,7 @@ TEST(Light, FrameIsOrthonormalAndRightHanded) {
 }
 
 TEST(Light, ConeTestEqualsDiskTestOnThePlane) {
-  LightModel l(LightDesc{{0.1, 0.3, -1}, 2.0, 1, false});
+  LightModel l(LightDesc{{0.1, 0.3, -1}, 2.0, Rgb(1.0), false});
   Pcg32 rng(5, 5);
   int inside = 0;
   for (int k = 0; k < 20000; ++k) {
@@ -44,7 +44,7 @@ TEST(Light, ConeTestEqualsDiskTestOnThePlane) {
 
 TEST(Light, GreatCirclesMapToLines) {
   // Gnomonic projection: three directions on one great circle project to collinear points.
-  LightModel l(LightDesc{{0, 0.2, -1}, 0.27, 1, false});
+  LightModel l(LightDesc{{0, 0.2, -1}, 0.27, Rgb(1.0), false});
   vec3 a = normalize(l.L + vec3(0.05, 0.02, 0)), b = normalize(l.L + vec3(-0.03, 0.04, 0.01));
   double theta = std::acos(dot(a, b));
   vec2 pa = l.to_plane(a), pb = l.to_plane(b);
@@ -59,7 +59,7 @@ TEST(Light, GreatCirclesMapToLines) {
 TEST(Light, ElevationOnPlaneIsTheHeightOfTheDirectionScaledToUnitL) {
   // elevation_on_plane(p) = r.y / (r . L) for the direction r through p: its sign is r's
   // elevation's, and the horizon is the line where it vanishes.
-  LightModel l(LightDesc{{0.3, 0.15, -1}, 0.27, 1, false});
+  LightModel l(LightDesc{{0.3, 0.15, -1}, 0.27, Rgb(1.0), false});
   Pcg32 rng(5, 5);
   int below = 0;
   for (int k = 0; k < 2000; ++k) {

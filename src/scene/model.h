@@ -10,19 +10,49 @@
 
 namespace sg {
 
+// The weights of the scene's four radiances in a value (shading/radiance.h): x light,
+// y sky zenith, z sky horizon, w sea. Every method computes a pixel as such weights.
+using RadianceWeights = vec4;
+
+// The scene's radiances per channel, applied to a pixel's weights once, at the end.
+struct Radiances {
+  Rgb light{1.0}, zenith{0.0}, horizon{0.0}, sea{0.0};
+  Radiances() = default;
+  explicit Radiances(const Scene& s)
+      : light(s.light.radiance),
+        zenith(s.sky.zenith),
+        horizon(s.sky.horizon),
+        sea(s.surface.sea_radiance) {}
+  // Channel c (0, 1, 2) of the value with weights w.
+  double apply(const RadianceWeights& w, int c) const {
+    return w.x * light[c] + w.y * zenith[c] + w.z * horizon[c] + w.w * sea[c];
+  }
+  Rgb apply(const RadianceWeights& w) const { return Rgb(apply(w, 0), apply(w, 1), apply(w, 2)); }
+};
+
 struct SceneModel {
   Scene scene;
   WaveField waves;
   CameraModel camera;
   LightModel light;
+  Radiances radiances;
 
   explicit SceneModel(const Scene& s)
-      : scene(s), waves(s.surface.waves), camera(s.camera, s.width, s.height), light(s.light) {}
+      : scene(s),
+        waves(s.surface.waves),
+        camera(s.camera, s.width, s.height),
+        light(s.light),
+        radiances(s) {}
 
   int width() const { return scene.width; }
   int height() const { return scene.height; }
   bool displaced() const { return scene.surface.geometry == Geometry::displaced; }
 };
+
+// Channel 0 of weights applied to the scene's radiances: a grey scene's value.
+inline double grey_value(const SceneModel& m, const RadianceWeights& w) {
+  return m.radiances.apply(w, 0);
+}
 
 // The time interval a frame integrates, [start, end] (end = the display time t_f).
 struct FrameTime {

@@ -1,7 +1,12 @@
-// A scene as the file format `sunglint-scene/1` defines it (shared spec
-// scene-format.md): the water waves, the camera, the light, sky and sea radiances, and
-// the animation's timing. Values are stored as given (directions not yet normalised);
-// the models built from a scene (waves.h, camera.h, light.h) derive what rendering needs.
+// A scene as the file format defines it (docs/scene-format.md, `sunglint-scene/1` and
+// `/2`): the water waves, the camera, the light, sky and sea radiances, and the
+// animation's timing. Values are stored as given (directions not yet normalised); the
+// models built from a scene (waves.h, camera.h, light.h) derive what rendering needs.
+//
+// Radiances are linear RGB triples (Rec. 709 primaries). Format /1 has grey radiances
+// only (three equal channels) and a constant sky; format /2 adds colour and a sky
+// gradient. Every method computes a pixel as weights of the four radiances (light,
+// zenith, horizon, sea; shading/radiance.h), so colour costs nothing in the methods.
 #pragma once
 
 #include <string>
@@ -28,17 +33,29 @@ struct CameraDesc {
   double vfov_deg = 40;
 };
 
+// A linear RGB radiance; a grey one has three equal channels.
+using Rgb = vec3;
+
 struct LightDesc {
   vec3 direction{0, 0.17, -1};  // towards the light, any length > 0
   double angular_radius_deg = 0.27;
-  double radiance = 1.0;
+  Rgb radiance{1.0};
   bool visible = false;
+};
+
+// The sky's radiance in unit direction d: horizon + (zenith - horizon) max(d.y, 0)^exponent.
+// A constant sky (format /1's `sky.radiance`) has zenith == horizon.
+struct SkyDesc {
+  Rgb zenith{0.0}, horizon{0.0};
+  double exponent = 0.5;
+  bool gradient = false;  // written as zenith/horizon (format /2), else as `radiance`
+  static SkyDesc constant(const Rgb& radiance) { return SkyDesc{radiance, radiance, 0.5, false}; }
 };
 
 struct SurfaceDesc {
   Geometry geometry = Geometry::flat;
   FresnelMode fresnel = FresnelMode::none;
-  double sea_radiance = 0.0;
+  Rgb sea_radiance{0.0};
   std::vector<Wave> waves;
 };
 
@@ -55,9 +72,12 @@ struct Scene {
   int height = 360;
   CameraDesc camera;
   LightDesc light;
-  double sky_radiance = 0.0;
+  SkyDesc sky;
   SurfaceDesc surface;
   AnimationDesc animation;
+
+  // True when every radiance has three equal channels (a grey image renders the scene).
+  bool grey() const;
 
   // Frame f is displayed at t_f = t0 + f / fps and integrates [t_f - shutter/fps, t_f].
   double frame_time(int frame) const { return animation.t0 + frame / animation.fps; }

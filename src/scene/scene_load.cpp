@@ -148,8 +148,9 @@ LightDesc read_light(ObjectReader o) {
   l.angular_radius_deg = o.number("angular_radius_deg");
   require(l.angular_radius_deg > 0 && l.angular_radius_deg < 90, o.key_path("angular_radius_deg"),
           "must be in (0, 90)");
-  l.radiance = o.number_or("radiance", 1.0);
-  require(l.radiance >= 0, o.key_path("radiance"), "must be >= 0");
+  const double radiance = o.number_or("radiance", 1.0);
+  require(radiance >= 0, o.key_path("radiance"), "must be >= 0");
+  l.radiance = Rgb(radiance);
   l.visible = o.boolean_or("visible", false);
   o.finish();
   return l;
@@ -173,8 +174,9 @@ SurfaceDesc read_surface(ObjectReader o) {
                    : Geometry::displaced;
   s.fresnel = o.choice_or("fresnel", {"none", "schlick"}, "none") == "none" ? FresnelMode::none
                                                                             : FresnelMode::schlick;
-  s.sea_radiance = o.number_or("sea_radiance", 0.0);
-  require(s.sea_radiance >= 0, o.key_path("sea_radiance"), "must be >= 0");
+  const double sea = o.number_or("sea_radiance", 0.0);
+  require(sea >= 0, o.key_path("sea_radiance"), "must be >= 0");
+  s.sea_radiance = Rgb(Rgb(sea));
   const std::string wpath = o.key_path("waves");
   const json& waves = o.get("waves");
   require(waves.is_array(), wpath, "must be an array of wave objects");
@@ -309,8 +311,9 @@ Scene parse_scene(const std::string& text, const std::string& name) {
     s.light = read_light(top.object("light"));
     if (top.has("sky")) {
       ObjectReader sky = top.object("sky");
-      s.sky_radiance = sky.number_or("radiance", 0.0);
-      require(s.sky_radiance >= 0, "sky.radiance", "must be >= 0");
+      const double radiance = sky.number_or("radiance", 0.0);
+      require(radiance >= 0, "sky.radiance", "must be >= 0");
+      s.sky = SkyDesc::constant(Rgb(radiance));
       sky.finish();
     }
     s.surface = read_surface(top.object("surface"));
@@ -326,8 +329,15 @@ Scene load_scene(const std::string& path) {
   return parse_scene(read_file(path), path);
 }
 
+bool Scene::grey() const {
+  auto g = [](const Rgb& c) { return c.x == c.y && c.y == c.z; };
+  return g(light.radiance) && g(sky.zenith) && g(sky.horizon) && g(surface.sea_radiance);
+}
+
 std::string scene_to_json(const Scene& s) {
   auto v3 = [](const vec3& v) { return json::array({v.x, v.y, v.z}); };
+  // Grey radiances as one number (format /1); colour is written by format /2.
+  auto radiance = [&](const Rgb& c) { return c.x == c.y && c.y == c.z ? json(c.x) : v3(c); };
   json waves = json::array();
   for (const Wave& w : s.surface.waves) {
     waves.push_back({{"amplitude", w.amplitude},
@@ -347,13 +357,13 @@ std::string scene_to_json(const Scene& s) {
       {"light",
        {{"direction", v3(s.light.direction)},
         {"angular_radius_deg", s.light.angular_radius_deg},
-        {"radiance", s.light.radiance},
+        {"radiance", radiance(s.light.radiance)},
         {"visible", s.light.visible}}},
-      {"sky", {{"radiance", s.sky_radiance}}},
+      {"sky", {{"radiance", radiance(s.sky.zenith)}}},
       {"surface",
        {{"geometry", s.surface.geometry == Geometry::flat ? "flat" : "displaced"},
         {"fresnel", s.surface.fresnel == FresnelMode::none ? "none" : "schlick"},
-        {"sea_radiance", s.surface.sea_radiance},
+        {"sea_radiance", radiance(s.surface.sea_radiance)},
         {"waves", waves}}},
       {"animation",
        {{"t0", s.animation.t0},

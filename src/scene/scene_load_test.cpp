@@ -132,12 +132,14 @@ TEST(SceneLoad, DefaultsOfOptionalKeys) {
   })";
   Scene s = parse_scene(text, "dir/calm.json");
   EXPECT_EQ(s.name, "calm");
-  EXPECT_DOUBLE_EQ(s.light.radiance, 1.0);
+  EXPECT_EQ(s.light.radiance, Rgb(1.0));
   EXPECT_FALSE(s.light.visible);
-  EXPECT_DOUBLE_EQ(s.sky_radiance, 0.0);
+  EXPECT_EQ(s.sky.zenith, Rgb(0.0));
+  EXPECT_EQ(s.sky.horizon, Rgb(0.0));
+  EXPECT_FALSE(s.sky.gradient);
   EXPECT_EQ(s.surface.geometry, Geometry::flat);
   EXPECT_EQ(s.surface.fresnel, FresnelMode::none);
-  EXPECT_DOUBLE_EQ(s.surface.sea_radiance, 0.0);
+  EXPECT_EQ(s.surface.sea_radiance, Rgb(0.0));
   EXPECT_DOUBLE_EQ(s.surface.waves[0].phase, 0.0);
   EXPECT_DOUBLE_EQ(s.frame_time(1), 1.0 / 24);
   EXPECT_DOUBLE_EQ(s.shutter_start(1), 1.0 / 24 - 0.5 / 24);

@@ -18,7 +18,7 @@ LightModel make_light(double elevation_deg, double azimuth_deg, double radius_de
   LightDesc d;
   d.direction = vec3(std::cos(el) * std::sin(az), std::sin(el), -std::cos(el) * std::cos(az));
   d.angular_radius_deg = radius_deg;
-  d.radiance = 1;
+  d.radiance = Rgb(1.0);
   d.visible = false;
   return LightModel(d);
 }

@@ -29,7 +29,7 @@ GaussianNdfShading shade_gaussian_ndf(const SceneModel& m, const vec3& view, con
     if (length(mean) - R <= 10 * axes.s1) s.in_light = gaussian_disk_mass(mean, cov_r, R);
   }
   s.F = fresnel(m.scene.surface.fresnel, dot(normalize(vec3(centre.x, 1.0, centre.y)), view));
-  s.value = combine_radiance(m, s.F, s.in_light, s.below);
+  s.weights = combine_weights(m, s.F, s.in_light, s.below, r.y);
   return s;
 }
 

@@ -13,7 +13,7 @@
 //    r_y ~ r_y(n_c) + g . (n - n_c), g = (dr_y/dn_x, dr_y/dn_z); the Gaussian's mass where
 //    that is <= 0 is Phi(-r_y(n_c) / sqrt(g^T Sigma g)).
 //  - Fresnel: F of the centre normal (Schlick with n_c's unit normal, or 1).
-// combine_radiance (radiance.h) turns the fractions into the spec's value.
+// combine_weights (radiance.h) turns the fractions into the spec's radiance weights.
 #pragma once
 
 #include "math/vec.h"
@@ -22,10 +22,10 @@
 namespace sg {
 
 struct GaussianNdfShading {
-  double in_light = 0;  // fraction reflecting into the light disk
-  double below = 0;     // fraction reflecting below the horizon
-  double F = 1;         // Fresnel factor of the centre normal
-  double value = 0;     // combine_radiance(F, in_light, below)
+  double in_light = 0;           // fraction reflecting into the light disk
+  double below = 0;              // fraction reflecting below the horizon
+  double F = 1;                  // Fresnel factor of the centre normal
+  RadianceWeights weights{0.0};  // combine_weights(F, in_light, below, centre reflection)
 };
 
 // `view`: unit direction from the water point towards the camera. `cov` must be symmetric

@@ -115,9 +115,9 @@ TEST(NdfRadiance, LightAndHorizonFractionsMatchMonteCarlo) {
 
 TEST(NdfRadiance, ValueCombinesFractionsWithFresnelSkyAndSea) {
   Scene s = testing::small_scene({});
-  s.light.radiance = 40;
-  s.sky_radiance = 0.2;
-  s.surface.sea_radiance = 0.05;
+  s.light.radiance = Rgb(40);
+  s.sky = SkyDesc::constant(Rgb(0.2));
+  s.surface.sea_radiance = Rgb(0.05);
   s.surface.fresnel = FresnelMode::schlick;
   SceneModel m(s);
   const vec3 v = normalize(vec3(0.0, 0.1, 1.0));
@@ -126,12 +126,13 @@ TEST(NdfRadiance, ValueCombinesFractionsWithFresnelSkyAndSea) {
   const GaussianNdfShading g = shade_gaussian_ndf(m, v, nc, cov);
   const double F = fresnel_schlick(dot(normalize(vec3(nc.x, 1, nc.y)), v));
   EXPECT_DOUBLE_EQ(g.F, F);
-  EXPECT_DOUBLE_EQ(g.value, combine_radiance(m, F, g.in_light, g.below));
+  EXPECT_DOUBLE_EQ(grey_value(m, g.weights),
+                   grey_value(m, combine_weights(m, F, g.in_light, g.below, 1.0)));
   // A single normal (zero covariance) is shaded like the spec's point sample.
   for (double dz : {-0.2, -0.02, 0.0, 0.1}) {
     const vec2 n(0.003, dz);
-    EXPECT_NEAR(shade_gaussian_ndf(m, v, n, mat2(0.0)).value,
-                water_radiance(m, vec3(n.x, 1, n.y), v), 1e-12)
+    EXPECT_NEAR(grey_value(m, shade_gaussian_ndf(m, v, n, mat2(0.0)).weights),
+                grey_value(m, water_weights(m, vec3(n.x, 1, n.y), v)), 1e-12)
         << dz;
   }
 }

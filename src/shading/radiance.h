@@ -4,13 +4,20 @@
 // At a water point with unit view direction v (towards the camera) and unit normal n:
 //   r = 2 (n . v) n - v                                   (mirror reflection)
 //   r.y <= 0:  L = sea_radiance
-//   otherwise: L = F (radiance if angle(r, L) <= rho else sky) + (1 - F) sea_radiance
-//   F = 1 (fresnel "none") or Schlick's R0 + (1 - R0)(1 - n . v)^5 with R0 = 0.02.
+//   otherwise: L = F (radiance if angle(r, L) <= rho else sky(r)) + (1 - F) sea_radiance
+//   F = 1 (fresnel "none") or Schlick's R0 + (1 - R0)(1 - n . v)^5 with R0 = 0.02,
+//   sky(d) = horizon + (zenith - horizon) max(d.y, 0)^exponent (a constant sky: zenith ==
+//   horizon).
 // A camera ray that hits no water sees the sky (or the light, when light.visible).
+//
+// Every value above is linear in the scene's four radiances (light, zenith, horizon,
+// sea), so a method computes a pixel as their weights, a vec4 (RadianceWeights below),
+// and the radiances, grey or RGB, are applied once at the end (Radiances::apply). The
+// pixel's mean over footprint and shutter is then the mean of the samples' weights.
 //
 // Analytic methods do not shade one direction; they find the fractions of a pixel's
 // footprint and shutter whose reflection lands in the light disk, in the sky, or below
-// the horizon. `combine_radiance` turns such fractions into the same value.
+// the horizon. `combine_weights` turns such fractions into the same weights.
 #pragma once
 
 #include <cmath>
@@ -23,6 +30,8 @@ namespace sg {
 struct RayHit;
 
 inline constexpr double kSchlickR0 = 0.02;
+
+// RadianceWeights (scene/model.h): x light, y zenith, z horizon, w sea.
 
 // r = 2 (n . v) n - v
 inline vec3 reflect_view(const vec3& n, const vec3& v) {
@@ -40,25 +49,40 @@ inline double fresnel(FresnelMode mode, double n_dot_v) {
   return mode == FresnelMode::none ? 1.0 : fresnel_schlick(n_dot_v);
 }
 
-// Radiance along a camera ray with unit direction `dir` that hits no water.
-inline double miss_radiance(const SceneModel& m, const vec3& dir) {
-  if (m.light.visible && m.light.contains(dir)) return m.light.radiance;
-  return m.scene.sky_radiance;
+// The sky's weights in direction d (d.y the height of the unit direction): zenith
+// max(d.y, 0)^exponent, horizon the rest.
+// A constant sky puts its whole weight on the horizon (zenith == horizon there).
+inline RadianceWeights sky_weights(const SceneModel& m, double dir_y) {
+  if (!m.scene.sky.gradient) return RadianceWeights(0.0, 0.0, 1.0, 0.0);
+  const double z = dir_y > 0 ? std::pow(dir_y, m.scene.sky.exponent) : 0.0;
+  return RadianceWeights(0.0, z, 1.0 - z, 0.0);
 }
 
-// Radiance reflected at a water point seen from unit direction v, for a normal along
-// `nm` of any length (the unit normal is nm / |nm|). With n = nm / |nm| the reflection
+inline RadianceWeights light_weights() {
+  return RadianceWeights(1.0, 0.0, 0.0, 0.0);
+}
+inline RadianceWeights sea_weights() {
+  return RadianceWeights(0.0, 0.0, 0.0, 1.0);
+}
+
+// Weights along a camera ray with unit direction `dir` that hits no water.
+inline RadianceWeights miss_weights(const SceneModel& m, const vec3& dir) {
+  if (m.light.visible && m.light.contains(dir)) return light_weights();
+  return sky_weights(m, dir.y);
+}
+
+// Weights reflected at a water point seen from unit direction v, for a normal along `nm`
+// of any length (the unit normal is nm / |nm|). With n = nm / |nm| the reflection
 // 2 (n . v) n - v equals 2 (nm . v) / (nm . nm) nm - v, which needs no square root; r is
 // then unit to rounding, so the cone test r . L >= cos(rho) is exact to 1e-16.
-inline double water_radiance(const SceneModel& m, const vec3& nm, const vec3& v) {
+inline RadianceWeights water_weights(const SceneModel& m, const vec3& nm, const vec3& v) {
   const double nv = dot(nm, v), nn = dot(nm, nm);
   const vec3 r = (2.0 * nv / nn) * nm - v;
-  const double sea = m.scene.surface.sea_radiance;
-  if (r.y <= 0) return sea;
-  const double above = m.light.contains(r) ? m.light.radiance : m.scene.sky_radiance;
+  if (r.y <= 0) return sea_weights();
+  const RadianceWeights above = m.light.contains(r) ? light_weights() : sky_weights(m, r.y);
   if (m.scene.surface.fresnel == FresnelMode::none) return above;
   const double F = fresnel_schlick(nv / std::sqrt(nn));
-  return F * above + (1.0 - F) * sea;
+  return F * above + (1.0 - F) * sea_weights();
 }
 
 // The (unnormalised) normal (-dh/dx, 1, -dh/dz) of the scene spec for gradient g.
@@ -66,22 +90,22 @@ inline vec3 normal_direction(vec2 g) {
   return vec3(-g.x, 1.0, -g.y);
 }
 
-// The expected radiance when a fraction `in_light` of the footprint and shutter reflects
-// into the light disk, `below` reflects below the horizon and the rest sees the sky;
-// F is the Fresnel factor of the part above the horizon.
-inline double combine_radiance(const SceneModel& m, double F, double in_light, double below) {
-  const double sea = m.scene.surface.sea_radiance;
+// The expected weights when a fraction `in_light` of the footprint and shutter reflects
+// into the light disk, `below` reflects below the horizon and the rest sees the sky in
+// directions of height `sky_y` (the split between zenith and horizon); F is the Fresnel
+// factor of the part above the horizon.
+inline RadianceWeights combine_weights(const SceneModel& m, double F, double in_light, double below,
+                                       double sky_y) {
   const double above = 1.0 - below;
   const double sky = std::max(0.0, above - in_light);
-  return below * sea + F * (in_light * m.light.radiance + sky * m.scene.sky_radiance) +
-         (1.0 - F) * above * sea;
+  const RadianceWeights s = sky_weights(m, sky_y);
+  return RadianceWeights(F * in_light, F * sky * s.y, F * sky * s.z, below + (1.0 - F) * above);
 }
 
-// The radiance along the camera ray from `origin` with direction `dir` (any length) at
-// time t: intersection (flat or displaced), normal, reflection, shading. When `hit` is
-// given it receives the intersection (for motion vectors; hit->s is along the unit
-// direction).
-double radiance_along_ray(const SceneModel& m, const vec3& origin, const vec3& dir, double t,
-                          RayHit* hit = nullptr);
+// Weights along the camera ray from `origin` with direction `dir` (any length) at time t:
+// intersection (flat or displaced), normal, reflection, shading. When `hit` is given it
+// receives the intersection (for motion vectors; hit->s is along the unit direction).
+RadianceWeights weights_along_ray(const SceneModel& m, const vec3& origin, const vec3& dir,
+                                  double t, RayHit* hit = nullptr);
 
 }  // namespace sg

@@ -21,7 +21,7 @@ TEST(Rdf, ReflectionIsTheMirrorOfTheView) {
 }
 
 TEST(Rdf, JacobianMatchesFiniteDifferences) {
-  LightModel light(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, 1, false});
+  LightModel light(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, Rgb(1.0), false});
   Pcg32 rng(4, 4);
   for (int k = 0; k < 200; ++k) {
     const vec3 v = normalize(vec3(rng.uniform() - 0.5, 0.02 + 0.3 * rng.uniform(), 1.0));
@@ -42,7 +42,7 @@ TEST(Rdf, JacobianMatchesFiniteDifferences) {
 }
 
 TEST(Rdf, ViewJacobianMatchesFiniteDifferences) {
-  LightModel light(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, 1, false});
+  LightModel light(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, Rgb(1.0), false});
   const vec3 m(0.05, 1.0, -0.12);
   auto plane_of = [&](const vec3& v) {
     return light.to_plane((2.0 * dot(m, v) / dot(m, m)) * m - v);
@@ -65,7 +65,7 @@ TEST(Rdf, MassInTheDiskMatchesMonteCarloForModerateVariances) {
   // (Eqs. 11-16) must agree within 4 Monte-Carlo standard errors plus a linearisation
   // allowance of 3% of the mass (Appendix B's error grows with the variance; at these
   // spreads it stays below that).
-  LightModel light(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, 1, false});
+  LightModel light(LightDesc{{0.0, 0.207912, -0.978148}, 0.27, Rgb(1.0), false});
   const vec3 v = normalize(vec3(0.01, 0.06, 1.0));
   // A centre normal that reflects v close to the light.
   vec2 nc(0, 0);

@@ -85,13 +85,14 @@ PathShares temporal_shares(const SceneModel& m, const ReflectionPath& path) {
     s.in_light += f.in_light / K;
     s.below += f.below / K;
     s.fresnel += F / K;
-    s.value += combine_radiance(m, F, f.in_light, f.below) / K;
+    const double sky_y = normalize(path.reflections[k] + path.reflections[k + 1]).y;
+    s.weights += combine_weights(m, F, f.in_light, f.below, sky_y) / double(K);
   }
   return s;
 }
 
-double temporal_value(const SceneModel& m, const ReflectionPath& path) {
-  return temporal_shares(m, path).value;
+RadianceWeights temporal_weights(const SceneModel& m, const ReflectionPath& path) {
+  return temporal_shares(m, path).weights;
 }
 
 }  // namespace sg

@@ -44,12 +44,13 @@ void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameT
 // the light and below the horizon, and the mean Fresnel factor, over all sub-arcs.
 struct PathShares {
   double in_light = 0, below = 0, fresnel = 1;
-  double value = 0;  // temporal_value of the path (its sub-arcs combined one by one)
+  RadianceWeights weights{0.0};  // temporal_weights of the path (sub-arcs combined one by one)
 };
 PathShares temporal_shares(const SceneModel& m, const ReflectionPath& path);
 
-// The temporal method's value for a path: each sub-arc's shares combined into the spec's
-// radiance with that sub-arc's Fresnel factor, averaged over the sub-arcs.
-double temporal_value(const SceneModel& m, const ReflectionPath& path);
+// The temporal method's weights for a path: each sub-arc's shares combined into the
+// spec's radiance weights with that sub-arc's Fresnel factor (the sky at the height of
+// the sub-arc's mid reflection), averaged over the sub-arcs.
+RadianceWeights temporal_weights(const SceneModel& m, const ReflectionPath& path);
 
 }  // namespace sg

@@ -28,8 +28,8 @@ inline Scene small_scene(std::vector<Wave> waves, int width = 64, int height = 3
   s.width = width;
   s.height = height;
   s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -60}, {0, 1, 0}, 40};
-  s.light = LightDesc{{0, 0.207912, -0.978148}, 0.27, 1.0, false};
-  s.sky_radiance = 0;
+  s.light = LightDesc{{0, 0.207912, -0.978148}, 0.27, Rgb(1.0), false};
+  s.sky = SkyDesc::constant(Rgb(0));
   s.surface.waves = std::move(waves);
   s.animation = AnimationDesc{0, 30, 60, 1.0};
   return s;
@@ -40,9 +40,9 @@ inline Scene small_scene(std::vector<Wave> waves, int width = 64, int height = 3
 inline Scene displaced_variant(Scene s, double sea_radiance = 0.05) {
   s.surface.geometry = Geometry::displaced;
   s.surface.fresnel = FresnelMode::schlick;
-  s.sky_radiance = 0.3;
-  s.surface.sea_radiance = sea_radiance;
-  s.light.radiance = 20;
+  s.sky = SkyDesc::constant(Rgb(0.3));
+  s.surface.sea_radiance = Rgb(sea_radiance);
+  s.light.radiance = Rgb(20);
   return s;
 }
 
