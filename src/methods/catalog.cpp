@@ -47,15 +47,18 @@ const std::vector<MethodInfo>& method_catalog() {
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
   validate(o);
   if (name == "reference") {
-    return std::make_unique<StratifiedMethod>(name, StratifiedSettings{o.samples, false});
+    return std::make_unique<StratifiedMethod>(name, StratifiedSettings{o.samples, false},
+                                              o.precision);
   }
   if (name == "supersample") {
-    return std::make_unique<StratifiedMethod>(name,
-                                              StratifiedSettings{o.samples, o.samples.st == 1});
+    return std::make_unique<StratifiedMethod>(
+        name, StratifiedSettings{o.samples, o.samples.st == 1}, o.precision);
   }
-  if (name == "point") return std::make_unique<PointMethod>();
-  if (name == "staa-temporal") return std::make_unique<StaaTemporalMethod>(o.staa.segments);
-  if (name == "staa") return std::make_unique<StaaMethod>(o.staa);
+  if (name == "point") return std::make_unique<PointMethod>(o.precision);
+  if (name == "staa-temporal") {
+    return std::make_unique<StaaTemporalMethod>(o.staa.segments, o.precision);
+  }
+  if (name == "staa") return std::make_unique<StaaMethod>(o.staa, o.precision);
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);
   if (name == "microspec") return std::make_unique<MicrospecMethod>(o.microspec);

@@ -41,6 +41,8 @@ void validate(const MethodOptions& o) {
   auto require = [](bool ok, const std::string& flag, const std::string& rule) {
     if (!ok) throw Error(flag + ": " + rule);
   };
+  require(o.samples.st <= 64, "--samples", "at most 64 time samples (T) per pixel");
+  require(o.staa.segments >= 1 && o.staa.segments <= 32, "--segments", "must be in [1, 32]");
   const SpecaaOptions& sa = o.specaa;
   require(std::isfinite(sa.sigma2) && sa.sigma2 > 0, "--specaa-sigma2", "must be > 0");
   require(std::isfinite(sa.kappa) && sa.kappa >= 0, "--specaa-kappa", "must be >= 0");

@@ -20,6 +20,10 @@ struct SampleCounts {
 SampleCounts parse_sample_counts(const std::string& text, const std::string& flag);
 std::string to_string(const SampleCounts& s);
 
+// --precision float|double: the precision the shading kernel computes in on the CPU
+// (kernel/: double by default; float is what a GPU computes).
+enum class Precision { float32, float64 };
+
 enum class NdfMode { uniform, per_pixel };
 enum class FallbackMode { quadrature, riemann };
 // The pixel-footprint term (docs/method.md): none (the paper's method), the footprint as
@@ -126,8 +130,9 @@ struct BrunetonOptions {
 };
 
 struct MethodOptions {
-  SampleCounts samples{8, 8, 8};  // --samples, for reference and supersample
-  uint64_t seed = 0;              // --seed: the sampling streams (rng.h)
+  SampleCounts samples{8, 8, 8};             // --samples, for reference and supersample
+  uint64_t seed = 0;                         // --seed: the sampling streams (rng.h)
+  Precision precision = Precision::float64;  // --precision, for the kernel methods
   StaaOptions staa;
   LeanOptions lean;
   TaaOptions taa;

@@ -1,13 +1,15 @@
 #include "methods/point.h"
 
-#include "shading/radiance.h"
+#include "kernel/kernel_float.h"
 
 namespace sg {
 
 RadianceWeights PointMethod::weights(const FrameContext& ctx, int i, int j) const {
-  const SceneModel& m = ctx.model;
-  return weights_along_ray(m, m.camera.position(), m.camera.direction(i + 0.5, j + 0.5),
-                           ctx.time.end);
+  inputs_.check(ctx);
+  if (inputs_.precision() == Precision::float32) {
+    return to_weights(kf::float_point_pixel(wave_buffer(inputs_.f()), inputs_.f().frame, i, j));
+  }
+  return kd::point_pixel(wave_buffer(inputs_.d()), inputs_.d().frame, i, j);
 }
 
 }  // namespace sg

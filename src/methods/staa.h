@@ -25,43 +25,49 @@
 //     J and Sigma are those of the display time (the paper assumes they change little
 //     within a frame). The share of the RDF below the horizon (seeing the sea) is the
 //     Gaussian's mass beyond the horizon's line on the light plane.
-//  5. The spec's radiance from those fractions (shading/radiance.h, combine_radiance), with
-//     the Fresnel factor of the centre normal.
+//  5. The spec's radiance weights from those fractions (combine_weights), with the
+//     Fresnel factor of the centre normal.
+// All of it is the shading kernel's (kernel/staa.glsl), run here per pixel on the CPU in
+// the chosen precision; `--footprint exact` (the swept parallelogram of pixels without
+// aliasing waves) is integrated on the host (shading/swept_footprint.h) and is CPU-only.
 // As the aliasing shares fall to 0 the NDF's covariance does too, and the path integral
 // tends to the fraction of the path inside the disk: the transition to step 3 is
 // continuous (no arcs, Fig. 11).
 #pragma once
 
+#include "methods/kernel_inputs.h"
 #include "methods/method.h"
 
 namespace sg {
 
 class PathTables;
-struct ReflectionPath;
 
 class StaaMethod final : public Method {
  public:
-  explicit StaaMethod(const StaaOptions& o);
+  explicit StaaMethod(const StaaOptions& o, Precision precision = Precision::float64);
   std::string name() const override { return "staa"; }
+  void begin_frame(const FrameContext& ctx) override;
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 
   // The light, sky and sea shares of a pixel, for tests and diagnostics.
   struct Shares {
     bool hit = false;
-    bool aliasing = false;                  // some alpha > 0
-    bool temporal = false;                  // step 3: the temporal method, exactly
-    RadianceWeights temporal_weights{0.0};  // its weights (step 3 only)
-    bool fallback = false;                  // past the elongation threshold
+    bool aliasing = false;  // some alpha > 0
+    bool temporal = false;  // step 3: the temporal method, exactly
+    bool fallback = false;  // past the elongation threshold
     double in_light = 0, below = 0, fresnel = 1;
-    double sky_y = 1;  // the height of the centre reflection (splits the sky's weight)
+    double sky_y = 1;              // the height of the centre reflection
+    RadianceWeights weights{0.0};  // the pixel's weights
   };
-  // `path`, when given, receives the pixel's reflection path (per-thread storage, valid
-  // until the next call on this thread).
-  Shares shares(const FrameContext& ctx, int i, int j, ReflectionPath** path = nullptr) const;
+  Shares shares(const FrameContext& ctx, int i, int j) const;
 
  private:
   StaaOptions o_;
+  Precision precision_;
   const PathTables* tables_;
+  KernelFrameInputs inputs_;
+  kd::StaaParams params_{};
+  kf::StaaParams params_float_{};
 };
 
 }  // namespace sg

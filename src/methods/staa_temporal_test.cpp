@@ -91,8 +91,8 @@ TEST(StaaTemporal, SegmentsConvergeToTheTimeIntegral) {
       ReflectionPath path;
       double e1 = 0, e32 = 0;
       for (int K : {1, 32}) {
-        reflection_path(m, fp, ft, K, {}, path);
-        (K == 1 ? e1 : e32) = std::fabs(grey_value(m, temporal_weights(m, path)) - dense);
+        reflection_path(m, fp, ft, K, path);
+        (K == 1 ? e1 : e32) = std::fabs(grey_value(m, temporal_weights(path)) - dense);
       }
       EXPECT_LT(e32, 2e-3) << j;  // 32 arcs follow the curved path closely
       EXPECT_LE(e32, e1 + 1e-9) << j;
@@ -111,12 +111,12 @@ TEST(StaaTemporal, PathOfASecondSceneAtTheSameAddressIsItsOwn) {
   ReflectionPath path;
   SceneModel* m = new (storage) SceneModel(a);
   const FrameTime fta = frame_time(a, 5);
-  reflection_path(*m, pixel_footprint(*m, 24.5, 13.5, fta.end), fta, 2, {}, path);
+  reflection_path(*m, pixel_footprint(*m, 24.5, 13.5, fta.end), fta, 2, path);
   m->~SceneModel();
   m = new (storage) SceneModel(b);
   const FrameTime ft = frame_time(b, 5);
   const PixelFootprint fp = pixel_footprint(*m, 24.5, 13.5, ft.end);
-  reflection_path(*m, fp, ft, 2, {}, path);
+  reflection_path(*m, fp, ft, 2, path);
   for (int k = 0; k < 2; ++k) {
     const vec2 g = m->waves.gradient(fp.point.x, fp.point.z, path.times[k]);
     EXPECT_NEAR(path.gradients[k].x, g.x, 1e-12) << k;

@@ -6,6 +6,7 @@
 //  - Convergence: the error against a high-sample render falls as 1/sqrt(N) or faster.
 //  - Determinism: same seed, same values, whatever the threads; another seed differs.
 #include "methods/stratified.h"
+#include "kernel/kernel_double.h"
 
 #include <gtest/gtest.h>
 
@@ -108,16 +109,17 @@ TEST(Reference, FlatFastPathEqualsDirectShading) {
 }
 
 TEST(Reference, SampleTimesAreStratifiedAndUniform) {
-  const FrameTime ft{4, 0.1, 0.1 + 1.0 / 30};
+  // The kernel's sample times (kernel/sampling.glsl), offsets from the display time.
+  kd::Frame f{};
+  f.duration = 1.0 / 30;
   const int T = 8, bins = 10, streams = 20000;
   std::vector<int> hist(bins, 0);
-  std::vector<double> times;
   for (int k = 0; k < streams; ++k) {
-    Pcg32 rng = pixel_rng(3, 4, k, 0);
-    draw_sample_times(rng, ft, StratifiedSettings{{1, 1, T}, false}, times);
-    ASSERT_EQ(times.size(), size_t(T));
+    kd::Pcg32 rng = kd::pixel_rng(kd::uvec2(3, 0), 4, k, 0);
+    const kd::SampleTimes times = kd::draw_sample_times(rng, f, kd::SampleCounts{1, 1, T, false});
+    ASSERT_EQ(times.count, T);
     for (int q = 0; q < T; ++q) {
-      const double x = (times[q] - ft.start) / ft.duration() * T - q;  // position in stratum q
+      const double x = (times.dt[q] + f.duration) / f.duration * T - q;  // position in stratum q
       ASSERT_GE(x, 0.0);
       ASSERT_LT(x, 1.0);
       hist[static_cast<int>(x * bins)]++;
@@ -127,9 +129,10 @@ TEST(Reference, SampleTimesAreStratifiedAndUniform) {
   for (int h : hist)
     chi2 += sqr(h - expect) / expect;
   EXPECT_LT(chi2, 27.9);  // 0.999 quantile of chi-square with 9 degrees of freedom
-  Pcg32 rng = pixel_rng(0, 0, 0, 0);
-  draw_sample_times(rng, ft, StratifiedSettings{{1, 1, 1}, true}, times);
-  EXPECT_EQ(times, std::vector<double>{ft.end});
+  kd::Pcg32 rng = kd::pixel_rng(kd::uvec2(0, 0), 0, 0, 0);
+  const kd::SampleTimes one = kd::draw_sample_times(rng, f, kd::SampleCounts{1, 1, 1, true});
+  EXPECT_EQ(one.count, 1);
+  EXPECT_EQ(one.dt[0], 0.0);
 }
 
 TEST(Reference, ErrorFallsAsSamplesGrow) {

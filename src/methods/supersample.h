@@ -1,4 +1,5 @@
-// The two stratified-sampling methods (estimator in stratified.h):
+// The two stratified-sampling methods (the estimator: kernel/sampling.glsl,
+// stratified_pixel; methods/stratified.h):
 //   reference    the ground truth: S x S positions x T times over the shutter (8x8x8 by
 //                default; at least 12x12x8 for published figures).
 //   supersample  the same estimator at a budget the user picks. With T = 1 its one time
@@ -7,6 +8,7 @@
 //                with T > 1 it samples the shutter like the reference.
 #pragma once
 
+#include "methods/kernel_inputs.h"
 #include "methods/method.h"
 #include "methods/stratified.h"
 
@@ -14,17 +16,21 @@ namespace sg {
 
 class StratifiedMethod final : public Method {
  public:
-  StratifiedMethod(std::string name, StratifiedSettings settings)
-      : name_(std::move(name)), settings_(settings) {}
+  StratifiedMethod(std::string name, StratifiedSettings settings,
+                   Precision precision = Precision::float64)
+      : name_(std::move(name)), settings_(settings), inputs_(1, precision) {}
   std::string name() const override { return name_; }
+  void begin_frame(const FrameContext& ctx) override { inputs_.build(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {
-    return stratified_pixel(ctx, i, j, settings_);
+    inputs_.check(ctx);
+    return stratified_pixel(inputs_, i, j, settings_);
   }
   const StratifiedSettings& settings() const { return settings_; }
 
  private:
   std::string name_;
   StratifiedSettings settings_;
+  KernelFrameInputs inputs_;
 };
 
 }  // namespace sg

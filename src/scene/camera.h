@@ -36,6 +36,9 @@ class CameraModel {
   // direction points away from the image plane.
   bool project(const vec3& dir, double& px, double& py) const;
 
+  // tan(hfov / 2) and tan(vfov / 2).
+  double half_w() const { return half_w_; }
+  double half_h() const { return half_h_; }
   const vec3& forward() const { return forward_; }
   const vec3& right() const { return right_; }
   const vec3& up() const { return up_; }

@@ -3,6 +3,9 @@
 // Built by value; immutable and shared by all threads while rendering.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
+
 #include "scene/camera.h"
 #include "scene/light.h"
 #include "scene/scene.h"
@@ -36,14 +39,25 @@ struct SceneModel {
   CameraModel camera;
   LightModel light;
   Radiances radiances;
+  // Unique per constructed model in this process: what per-frame data built from a model
+  // is keyed by (an address can be reused by a later model).
+  uint64_t id;
 
   explicit SceneModel(const Scene& s)
       : scene(s),
         waves(s.surface.waves),
         camera(s.camera, s.width, s.height),
         light(s.light),
-        radiances(s) {}
+        radiances(s),
+        id(next_id()) {}
 
+ private:
+  static uint64_t next_id() {
+    static std::atomic<uint64_t> counter{0};
+    return ++counter;
+  }
+
+ public:
   int width() const { return scene.width; }
   int height() const { return scene.height; }
   bool displaced() const { return scene.surface.geometry == Geometry::displaced; }

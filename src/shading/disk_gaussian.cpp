@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "kernel/kernel_double.h"
 
 namespace sg {
 namespace {
@@ -16,15 +17,7 @@ constexpr double kCut = 40;           // |d - 1| / sigma beyond this: F is exact
 constexpr double kSmallSigma = 0.05;  // below: the exact 1D form
 constexpr double kLargeSigma = 1e3;   // above: the wide-Gaussian expansion
 constexpr double kZ2Max = 13;         // P(|Z| > 13) = 1.2e-38
-constexpr double kInvSqrt2 = 0.70710678118654752440;
 constexpr double kInvSqrt2Pi = 0.39894228040143267794;
-
-// Phi(b) - Phi(a) for a <= b, accurate in both tails.
-double normal_mass(double a, double b) {
-  if (a >= 0) return 0.5 * (std::erfc(a * kInvSqrt2) - std::erfc(b * kInvSqrt2));
-  if (b <= 0) return 0.5 * (std::erfc(-b * kInvSqrt2) - std::erfc(-a * kInvSqrt2));
-  return 1.0 - 0.5 * (std::erfc(-a * kInvSqrt2) + std::erfc(b * kInvSqrt2));
-}
 
 double small_sigma(double d, double sigma) {
   const double t = (d - 1) / sigma;
@@ -34,7 +27,7 @@ double small_sigma(double d, double sigma) {
     // (s - d) / sigma = -t - (1 - s) / sigma, with 1 - s = sigma^2 z^2 / (1 + s).
     const double upper = -t - sigma * z * z / (1 + s);
     const double lower = (-s - d) / sigma;
-    return normal_mass(lower, upper) * kInvSqrt2Pi * std::exp(-0.5 * z * z);
+    return kd::normal_mass(lower, upper) * kInvSqrt2Pi * std::exp(-0.5 * z * z);
   };
   // The integrand is even in z.
   return 2 * boost::math::quadrature::trapezoidal(integrand, 0.0, kZ2Max, 1e-15);
@@ -51,10 +44,7 @@ void check(double value, const char* name, const char* rule, bool ok) {
 }  // namespace
 
 double disk_gaussian_wide(double d, double sigma) {
-  const double rho2 = (d / sigma) * (d / sigma);
-  const double is2 = 1 / (sigma * sigma);
-  return 0.5 * is2 * std::exp(-0.5 * rho2) *
-         (1 + (rho2 - 2) * is2 / 8 + (rho2 * rho2 - 8 * rho2 + 8) * is2 * is2 / 192);
+  return kd::disk_gaussian_wide(d, sigma);
 }
 
 double disk_gaussian(double d, double sigma) {

@@ -109,4 +109,34 @@ const KernelTable& compiled_kernel_table(int count) {
               " kernels (3, 5 or 9)");
 }
 
+const KernelFitTexture& kernel_fit_texture() {
+  static const KernelFitTexture t = [] {
+    KernelFitTexture k;
+    const int counts[3] = {3, 5, 9};
+    const int rows = kKernelTableIntervals + 1;
+    k.texels.assign(static_cast<size_t>(15) * 3 * rows, 0.0f);
+    for (int c = 0; c < 3; ++c) {
+      const KernelTable& table = compiled_kernel_table(counts[c]);
+      for (int j = 0; j < rows; ++j) {
+        for (int col = 0; col < table.columns(); ++col) {
+          k.texels[(static_cast<size_t>(c) * rows + j) * 15 + col] =
+              static_cast<float>(table.values[static_cast<size_t>(j) * table.columns() + col]);
+        }
+      }
+    }
+    k.info.intervals = kKernelTableIntervals;
+    k.info.max_ratio = kKernelTableMaxRatio;
+    k.info.first_solved3 = kKernelTableFirstSolved3;
+    k.info.first_solved5 = kKernelTableFirstSolved5;
+    k.info.first_solved9 = kKernelTableFirstSolved9;
+    k.info_float.intervals = k.info.intervals;
+    k.info_float.max_ratio = static_cast<float>(k.info.max_ratio);
+    k.info_float.first_solved3 = k.info.first_solved3;
+    k.info_float.first_solved5 = k.info.first_solved5;
+    k.info_float.first_solved9 = k.info.first_solved9;
+    return k;
+  }();
+  return t;
+}
+
 }  // namespace sg

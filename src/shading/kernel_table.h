@@ -17,7 +17,10 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
+#include "kernel/kernel_double.h"
+#include "kernel/kernel_types.h"
 #include "shading/kernel_fit.h"
 
 namespace sg {
@@ -55,5 +58,19 @@ SymmetricKernels interpolate(const KernelTable& table, double ratio);
 
 // The compiled-in table for `count` = 3, 5 or 9 kernels (kernel_table.inc).
 const KernelTable& compiled_kernel_table(int count);
+
+// The compiled-in tables as the kernel reads them (kernel/kernel_fit.glsl): one R32F
+// texture of 15 columns (the 9-kernel row's width; shorter rows padded with 0) and
+// 3 (intervals + 1) rows, the tables of 3, 5 and 9 kernels one after the other, and its
+// shape in both precisions.
+struct KernelFitTexture {
+  std::vector<float> texels;
+  kd::KernelFitInfo info;
+  kf::KernelFitInfo info_float;
+  kernel_tables::R32Texture2D view() const {
+    return {texels.data(), 15, static_cast<int>(texels.size() / 15)};
+  }
+};
+const KernelFitTexture& kernel_fit_texture();
 
 }  // namespace sg

@@ -26,8 +26,6 @@ namespace fs = std::filesystem;
 
 constexpr char kMagic[8] = {'S', 'G', 'P', 'A', 'T', 'H', 'T', 'B'};
 constexpr size_t kHeaderBytes = 64;
-constexpr double kInvSqrt2 = 0.70710678118654752440;
-constexpr double kSqrtHalfPi = 1.25331413731550025121;  // sqrt(pi / 2)
 
 [[noreturn]] void bad(const std::string& what, double got) {
   std::ostringstream msg;
@@ -183,73 +181,33 @@ PathTables PathTables::generate(const PathTableParams& params, int threads) {
 
 // ---------------------------------------------------------------- lookups
 
-void PathTables::locate_sigma(double sigma, int& k, double& w) const {
-  double c;
-  if (sigma <= 0) {
-    c = 0;
-  } else if (sigma < p_.sigma_min) {
-    c = sigma / p_.sigma_min;
-  } else {
-    c = 1 + std::log(sigma / p_.sigma_min) / log_q_;
-  }
-  k = std::min(static_cast<int>(c), p_.n_sigma - 2);
-  w = std::min(c - k, 1.0);
+kd::PathTableInfo PathTables::kernel_info() const {
+  kd::PathTableInfo t;
+  t.n_distance = p_.n_distance;
+  t.n_u = p_.n_u;
+  t.n_v = p_.n_v;
+  t.n_sigma = p_.n_sigma;
+  t.sigma_min = p_.sigma_min;
+  t.sigma_max = p_.sigma_max;
+  t.log_q = log_q_;
+  t.extent_k = p_.extent_k;
+  return t;
 }
 
-double PathTables::f_slice(int k, double d) const {
-  const double x = d * (p_.n_distance - 1) / extent_[k];
-  if (x > p_.n_distance - 1) return 0;
-  const int i = std::min(static_cast<int>(x), p_.n_distance - 2);
-  const double a = x - i;
-  return (1 - a) * f_node(i, k) + a * f_node(i + 1, k);
-}
-
-double PathTables::s_slice(int k, double u, double v) const {
-  const double R = extent_[k];
-  v = std::abs(v);
-  if (v > R) return 0;
-  const double y = v * (p_.n_v - 1) / R;
-  const int j = std::min(static_cast<int>(y), p_.n_v - 2);
-  const double b = y - j;
-  const double x = (std::clamp(u, -R, R) + R) * (p_.n_u - 1) / (2 * R);
-  const int i = std::min(static_cast<int>(x), p_.n_u - 2);
-  const double a = x - i;
-  const double lo = (1 - a) * s_node(i, j, k) + a * s_node(i + 1, j, k);
-  const double hi = (1 - a) * s_node(i, j + 1, k) + a * s_node(i + 1, j + 1, k);
-  return (1 - b) * lo + b * hi;
-}
-
-double PathTables::path_slice(int k, double u0, double u1, double v) const {
-  const double len = u1 - u0;  // >= 0
-  const double h = 2 * extent_[k] / (p_.n_u - 1);
-  const double mid = len >= h ? 0.0 : f_slice(k, std::hypot(0.5 * (u0 + u1), v));
-  if (len <= 0.5 * h) return mid;
-  const double quotient = (s_slice(k, u1, v) - s_slice(k, u0, v)) / len;
-  if (len >= h) return quotient;
-  const double w = 2 * len / h - 1;
-  return (1 - w) * mid + w * quotient;
+kf::PathTableInfo PathTables::kernel_info_float() const {
+  kf::PathTableInfo t;
+  t.n_distance = p_.n_distance;
+  t.n_u = p_.n_u;
+  t.n_v = p_.n_v;
+  t.n_sigma = p_.n_sigma;
+  t.sigma_min = float(p_.sigma_min);
+  t.sigma_max = float(p_.sigma_max);
+  t.log_q = float(log_q_);
+  t.extent_k = float(p_.extent_k);
+  return t;
 }
 
 namespace {
-
-// The closed-form integral from -inf to u of the wide-Gaussian expansion of F along the
-// line at distance v (disk_gaussian.h): with x = u' / sigma, a = v / sigma and
-// P(r) = 1 + (r - 2) / (8 s^2) + (r^2 - 8 r + 8) / (192 s^4), r = x^2 + a^2 written as
-// c0 + c2 x^2 + c4 x^4, and the Gaussian moments M_n(X) = int_-inf^X x^n exp(-x^2 / 2) dx:
-// M0 = sqrt(pi / 2) erfc(-X / sqrt 2), M2 = M0 - X e, M4 = 3 M2 - X^3 e, e = exp(-X^2 / 2).
-double wide_S(double u, double v, double sigma) {
-  const double a2 = (v / sigma) * (v / sigma);
-  const double is2 = 1 / (sigma * sigma), is4 = is2 * is2;
-  const double c0 = 1 + (a2 - 2) * is2 / 8 + (a2 * a2 - 8 * a2 + 8) * is4 / 192;
-  const double c2 = is2 / 8 + (2 * a2 - 8) * is4 / 192;
-  const double c4 = is4 / 192;
-  const double X = u / sigma;
-  const double e = std::exp(-0.5 * X * X);
-  const double m0 = kSqrtHalfPi * std::erfc(-X * kInvSqrt2);
-  const double m2 = m0 - X * e;
-  const double m4 = 3 * m2 - X * X * X * e;
-  return 0.5 / sigma * std::exp(-0.5 * a2) * (c0 * m0 + c2 * m2 + c4 * m4);
-}
 
 void check_finite(double x, const char* name) {
   if (!std::isfinite(x)) bad(std::string("path tables: ") + name + " must be finite", x);
@@ -264,22 +222,14 @@ void check_sigma(double sigma) {
 double PathTables::disk_gaussian_table(double d, double sigma) const {
   check_sigma(sigma);
   if (!(std::isfinite(d) && d >= 0)) bad("path tables: d must be finite and >= 0", d);
-  if (sigma > p_.sigma_max) return disk_gaussian_wide(d, sigma);
-  int k;
-  double w;
-  locate_sigma(sigma, k, w);
-  return (1 - w) * f_slice(k, d) + w * f_slice(k + 1, d);
+  return kd::disk_gaussian_table(f_texture(), kernel_info(), d, sigma);
 }
 
 double PathTables::path_table_S(double u, double v, double sigma) const {
   check_sigma(sigma);
   check_finite(u, "u");
   check_finite(v, "v");
-  if (sigma > p_.sigma_max) return wide_S(u, v, sigma);
-  int k;
-  double w;
-  locate_sigma(sigma, k, w);
-  return (1 - w) * s_slice(k, u, v) + w * s_slice(k + 1, u, v);
+  return kd::path_table_S(s_texture(), kernel_info(), u, v, sigma);
 }
 
 double PathTables::path_integral(double u0, double u1, double v, double sigma) const {
@@ -287,20 +237,7 @@ double PathTables::path_integral(double u0, double u1, double v, double sigma) c
   check_finite(u0, "u0");
   check_finite(u1, "u1");
   check_finite(v, "v");
-  if (u1 < u0) std::swap(u0, u1);
-  v = std::abs(v);
-  if (sigma > p_.sigma_max) {
-    // Exact up to rounding, which the quotient amplifies by 1 / len: F' is ~F / sigma, so
-    // below 1e-6 sigma the midpoint's error (len^2 F'' / 24) is smaller.
-    const double len = u1 - u0;
-    if (len < 1e-6 * sigma) return disk_gaussian_wide(std::hypot(0.5 * (u0 + u1), v), sigma);
-    return (wide_S(u1, v, sigma) - wide_S(u0, v, sigma)) / len;
-  }
-  int k;
-  double w;
-  locate_sigma(sigma, k, w);
-  const double a = path_slice(k, u0, u1, v);
-  return w == 0 ? a : (1 - w) * a + w * path_slice(k + 1, u0, u1, v);
+  return kd::path_integral(f_texture(), s_texture(), kernel_info(), u0, u1, v, sigma);
 }
 
 double PathTables::path_average(vec2 p0, vec2 p1, double sigma, double disk_radius) const {
@@ -311,15 +248,7 @@ double PathTables::path_average(vec2 p0, vec2 p1, double sigma, double disk_radi
   check_finite(p0.y, "p0.y");
   check_finite(p1.x, "p1.x");
   check_finite(p1.y, "p1.y");
-  const vec2 q0 = p0 / disk_radius, q1 = p1 / disk_radius;
-  const double s = sigma / disk_radius;
-  const vec2 dir = q1 - q0;
-  const double len = length(dir);
-  if (!(len > 1e-12)) return disk_gaussian_table(length(0.5 * (q0 + q1)), s);
-  const vec2 t = dir / len;
-  const double u0 = dot(q0, t);
-  const double v = std::abs(q0.x * t.y - q0.y * t.x);
-  return path_integral(u0, u0 + len, v, s);
+  return kd::path_average(f_texture(), s_texture(), kernel_info(), p0, p1, sigma, disk_radius);
 }
 
 // ---------------------------------------------------------------- cache

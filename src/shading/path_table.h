@@ -22,8 +22,9 @@
 //    narrow Gaussians and exp(-18) = 1.5e-8 of the peak for wide ones, below float rounding
 //    of S. Beyond the extent F is taken as 0 and S as constant in u and 0 in v.
 //
-// Lookups: bilinear within a slice (in (d) for F, in (u, v) for S), linear between slices in
-// the sigma coordinate c(sigma) = sigma / sigma_min below sigma_min (between slice 0 and
+// Lookups (kernel/path_table.glsl, the one implementation, which the methods below wrap):
+// bilinear within a slice (in (d) for F, in (u, v) for S), linear between slices in the
+// sigma coordinate c(sigma) = sigma / sigma_min below sigma_min (between slice 0 and
 // slice 1) and 1 + log(sigma / sigma_min) / log(q) above, q the slice ratio.
 //
 // Generation: the radial symmetry of F makes each (v, sigma) row of S a running sum along u.
@@ -49,6 +50,8 @@
 #include <string_view>
 #include <vector>
 
+#include "kernel/kernel_double.h"
+#include "kernel/kernel_types.h"
 #include "math/vec.h"
 
 namespace sg {
@@ -115,6 +118,12 @@ class PathTables {
   // calls path_integral; a segment of length <= 1e-12 disk radii is a point (2D table).
   double path_average(vec2 p0, vec2 p1, double sigma, double disk_radius) const;
 
+  // ---- the tables as the kernel reads them (R32F textures; kernel/path_table.glsl)
+  kernel_tables::R32Texture2D f_texture() const { return {f_.data(), p_.n_distance, p_.n_sigma}; }
+  kernel_tables::R32Texture3D s_texture() const { return {s_.data(), p_.n_u, p_.n_v, p_.n_sigma}; }
+  kd::PathTableInfo kernel_info() const;
+  kf::PathTableInfo kernel_info_float() const;
+
   // ---- the grid, for tests and tools
   const PathTableParams& params() const { return p_; }
   double slice_sigma(int k) const { return sigma_[k]; }
@@ -128,11 +137,6 @@ class PathTables {
 
  private:
   explicit PathTables(const PathTableParams& p);
-  void locate_sigma(double sigma, int& k, double& w) const;
-  double f_slice(int k, double d) const;
-  double s_slice(int k, double u, double v) const;
-  double path_slice(int k, double u0, double u1, double v) const;
-
   PathTableParams p_;
   std::vector<double> sigma_, extent_;
   double log_q_ = 1;

@@ -37,7 +37,7 @@ mat3 reflection_jacobian_normal(const vec3& m, const vec3& v);
 // d r / d v with respect to the view direction v: 2 m m^T / (m.m) - I.
 mat3 reflection_jacobian_view(const vec3& m);
 
-// Eq. 16.
+// Eq. 16 (kernel/rdf.glsl).
 inline mat2 rdf_covariance(const mat2& J, const mat2& ndf_cov) {
   return J * ndf_cov * glm::transpose(J);
 }

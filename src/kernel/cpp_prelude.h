@@ -1,0 +1,56 @@
+// The C++ side of the shading kernel's two-language pattern (Bruneton and Neyret's
+// precomputed atmospheric scattering, `functions.glsl` with its C++ `definitions.h`): the
+// kernel's functions are written once, in the subset of GLSL 4.50 that is also C++20,
+// in the .glsl files beside this one. This header makes those files compile as C++ over
+// glm, in double or in float precision, for the CPU engine and the tests; glsl_prelude.glsl
+// makes them a compute shader for the GL engine.
+//
+// What the subset allows (tests/kernel/check_subset.py holds the sources to it):
+//  - types: real (double or float here, float in GLSL), int, uint, bool, vec2/3/4, mat2/3,
+//    ivec2/3, uvec2, structs without member initialisers, fixed-size arrays;
+//  - parameters as IN(T), OUT(T), INOUT(T); every function marked SG_FN;
+//  - GLSL's built-ins that glm provides under the same name (dot, cross, length, normalize,
+//    clamp, mix, min, max, abs, sign, floor, fract, mod, sqrt, inversesqrt, exp, log, pow,
+//    sin, cos, tan, asin, acos, atan, transpose, inverse, determinant, outerProduct, fma,
+//    umulExtended) and texelFetch on the table types below;
+//  - float literals written with a decimal point (2.0, never 2 or 2.0f); a vector is never
+//    mixed with an int. The float build compiles with -fsingle-precision-constant, so a
+//    literal is a float there, as in GLSL.
+// Not allowed: pointers, references, std::, templates, exceptions, allocation, static or
+// thread_local state, recursion, swizzles beyond .x/.y/.z/.w, struct constructors.
+//
+// Include this file, then, inside a namespace of your own, kernel/cpp_types.h with
+// SG_KERNEL_REAL defined as double or float (kernel/kernel_double.h does both).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+// Parameters: GLSL's in / out / inout.
+#define IN(T) const T&
+#define OUT(T) T&
+#define INOUT(T) T&
+// The cap on a reflection path's sub-arcs (kernel/interface.glsl).
+#define SG_MAX_SEGMENTS 32
+// Every kernel function: inline in C++ (the kernel is included by several translation
+// units), nothing in GLSL.
+#define SG_FN inline
+
+namespace sg::kernel_tables {
+
+// Views of the tables the kernel reads with texelFetch: R32F textures (float data, as a
+// GPU holds them). The data stay with their owner (shading/path_table.h, the compiled-in
+// kernel fits); a view is two words and a size.
+struct R32Texture2D {  // GLSL sampler2D (R32F): texel (x, y) = data[y * width + x]
+  const float* data = nullptr;
+  int width = 0, height = 0;
+};
+struct R32Texture3D {  // GLSL sampler2DArray (R32F): texel (x, y, layer)
+  const float* data = nullptr;
+  int width = 0, height = 0, layers = 0;
+};
+
+}  // namespace sg::kernel_tables

@@ -1,0 +1,92 @@
+// The per-precision half of the C++ prelude (kernel/cpp_prelude.h): GLSL's type names
+// over glm at the precision SG_KERNEL_REAL, the built-in functions the kernel may call,
+// and texelFetch on the table views. Included inside a namespace, once per precision, so
+// it has no include guard.
+//
+// #define SG_KERNEL_REAL double   (or float)
+// namespace sg::kd {
+// #include "kernel/cpp_types.h"
+// #include "kernel/kernel.glsl"
+// }
+
+using real = SG_KERNEL_REAL;
+using vec2 = glm::vec<2, real>;
+using vec3 = glm::vec<3, real>;
+using vec4 = glm::vec<4, real>;
+using mat2 = glm::mat<2, 2, real>;
+using mat3 = glm::mat<3, 3, real>;
+using mat3x2 = glm::mat<3, 2, real>;  // 3 columns of 2 rows, as in GLSL
+using mat2x3 = glm::mat<2, 3, real>;  // 2 columns of 3 rows
+using ivec2 = glm::ivec2;
+using ivec3 = glm::ivec3;
+using uint = unsigned int;
+using uvec2 = glm::uvec2;
+
+using glm::abs;
+using glm::acos;
+using glm::asin;
+using glm::atan;
+using glm::ceil;
+using glm::clamp;
+using glm::cos;
+using glm::cross;
+using glm::determinant;
+using glm::dot;
+using glm::exp;
+using glm::floor;
+using glm::fma;
+using glm::fract;
+using glm::inverse;
+using glm::inversesqrt;
+using glm::length;
+using glm::log;
+using glm::max;
+using glm::min;
+using glm::mix;
+using glm::mod;
+using glm::normalize;
+using glm::outerProduct;
+using glm::pow;
+using glm::sign;
+using glm::sin;
+using glm::sqrt;
+using glm::tan;
+using glm::transpose;
+using glm::umulExtended;
+using sg::kernel_tables::R32Texture2D;
+using sg::kernel_tables::R32Texture3D;
+
+// GLSL's isnan / isinf on scalars.
+inline bool isnan(real x) {
+  return std::isnan(x);
+}
+inline bool isinf(real x) {
+  return std::isinf(x);
+}
+// GLSL's round-half-away? No: GLSL's round() may go either way at .5; the kernel uses
+// floor(x + 0.5) where it needs a rule.
+
+// texelFetch of GLSL for R32F textures: the value in .x.
+inline vec4 texelFetch(const R32Texture2D& t, const ivec2& p, int) {
+  return vec4(real(t.data[size_t(p.y) * size_t(t.width) + size_t(p.x)]), 0, 0, 1);
+}
+inline vec4 texelFetch(const R32Texture3D& t, const ivec3& p, int) {
+  return vec4(
+      real(t.data[(size_t(p.z) * size_t(t.height) + size_t(p.y)) * size_t(t.width) + size_t(p.x)]),
+      0, 0, 1);
+}
+
+// The precision's constants (the GLSL prelude defines the float ones).
+const real kRealEpsilon = std::numeric_limits<real>::epsilon();
+const real kRealMax = std::numeric_limits<real>::max();
+const bool kDoublePrecision = sizeof(real) == sizeof(double);
+
+// The per-wave data of a frame (kernel/frame.glsl), vec4 texels: GLSL's samplerBuffer
+// (RGBA32F) over an array the host fills in begin_frame.
+struct WaveBuffer {
+  const vec4* data = nullptr;
+  int size = 0;  // texels
+};
+inline vec4 texelFetch(const WaveBuffer& b, int i) {
+  return b.data[i];
+}

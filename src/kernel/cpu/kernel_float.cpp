@@ -1,0 +1,30 @@
+// The kernel's functions in float precision (kernel/kernel_float.h). This translation
+// unit is compiled with -fsingle-precision-constant (src/CMakeLists.txt): it must include
+// nothing but glm and the kernel, whose literals are then floats, as in GLSL.
+#include "kernel/kernel_float.h"
+
+namespace sg::kf {
+
+#include "kernel/kernel.glsl"
+
+vec4 float_point_pixel(const WaveBuffer& waves, const Frame& f, int i, int j) {
+  return point_pixel(waves, f, i, j);
+}
+vec4 float_stratified_pixel(const WaveBuffer& waves, const Frame& f, const SampleCounts& n, int i,
+                            int j) {
+  return stratified_pixel(waves, f, n, i, j);
+}
+vec4 float_staa_temporal_pixel(const WaveBuffer& waves, const Frame& f, int i, int j) {
+  return staa_temporal_pixel(waves, f, i, j);
+}
+StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
+                            const R32Texture3D& table_s, const PathTableInfo& tinfo,
+                            const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,
+                            const StaaParams& p, int i, int j, StaaPath& path) {
+  return staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, f, p, i, j, path);
+}
+real float_erfc(real x) {
+  return erfc(x);
+}
+
+}  // namespace sg::kf

@@ -1,0 +1,19 @@
+// The GLSL side of the kernel's two-language pattern (see kernel/cpp_prelude.h): the
+// names the kernel's sources use, mapped to GLSL 4.50. The GL engine's shaders are
+// `#version 450`, this prelude, the kernel's files in order (kernel/kernel.glsl lists
+// them) and a main() per method (src/gl_engine/).
+#define real float
+#define IN(T) in T
+#define OUT(T) out T
+#define INOUT(T) inout T
+#define SG_FN
+#ifndef SG_MAX_SEGMENTS
+#define SG_MAX_SEGMENTS 8
+#endif
+#define WaveBuffer samplerBuffer
+#define R32Texture2D sampler2D
+#define R32Texture3D sampler2DArray
+
+const real kRealEpsilon = 1.1920928955078125e-07;
+const real kRealMax = 3.4028234663852886e+38;
+const bool kDoublePrecision = false;

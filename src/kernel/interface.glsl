@@ -1,0 +1,133 @@
+// The kernel's interface with the host: what is built once per frame and passed in
+// (the camera, the light, the frame's settings; the tables' shapes; each method's
+// parameters) and what a pixel returns. Only types and integer constants: the host's C++
+// includes this file alone to fill and read these structs in either precision
+// (kernel/kernel_types.h), and a port sees here everything it must provide.
+//
+// Coordinates are camera-relative: the camera sits at (0, height, 0) and every
+// horizontal position is measured from the camera's (x, z), so that float keeps its
+// digits near the camera. Each wave's phase at the camera's (x, z) and the frame's
+// display time is reduced modulo 2 pi in double on the host (waves.glsl): float cannot
+// hold c t at t = 1 hour (c t ~ 1e4 rad), but it holds a x + b z + theta0 over the visible
+// water. Instants of the shutter are reached by rotating the phases by c (end - t), also
+// precomputed per wave on the host.
+
+// Compile-time caps: sub-arcs of the shutter, circular kernels, time samples per pixel.
+// The preludes set SG_MAX_SEGMENTS: 32 in C++; in GLSL the engine compiles each shader
+// with the cap its method needs (arrays of the cap's size cost registers on a GPU).
+const int kMaxSegments = SG_MAX_SEGMENTS;
+const int kMaxKernels = 9;
+const int kMaxTimeSamples = 64;
+
+// The pinhole camera (scene/camera.h): the ray through image-plane point (px, py) is
+// forward + (2 px / width - 1) half_w right + (1 - 2 py / height) half_h up.
+struct Camera {
+  vec3 position;  // (0, height above the water at rest, 0)
+  vec3 forward;
+  vec3 right;
+  vec3 up;
+  real half_w;  // tan(hfov / 2)
+  real half_h;  // tan(vfov / 2)
+  real width;   // image size in pixels
+  real height;
+};
+
+// The light disk (scene/light.h): directions within `radius` of the unit vector L, and
+// the light plane's frame e1, e2 (e1 horizontal, e2 = L x e1).
+struct Light {
+  vec3 L;
+  vec3 e1;
+  vec3 e2;
+  real radius;      // angular radius, radians
+  real cos_radius;
+  real sin_radius;
+  real tan_radius;  // the disk's radius on the light plane
+  real chord2;      // 4 sin^2(radius / 2): |r - L|^2 for a unit r on the disk's rim
+  bool visible;     // drawn in the sky for camera rays that miss the water
+};
+
+// Everything per frame that is not per wave (the waves are in the wave buffer, waves.glsl).
+struct Frame {
+  Camera camera;
+  Light light;
+  int fresnel;         // 0: none, 1: Schlick (scene spec 4)
+  bool displaced;      // geometry "displaced" (else "flat")
+  bool sky_gradient;   // the sky's weight splits between zenith and horizon
+  real sky_exponent;
+  int wave_count;
+  int wave_stride;     // texels per wave in the wave buffer
+  real amplitude_bound;  // sum |A_i| (the slab that holds the surface)
+  real slope_bound;      // sum |A_i| |k_i| (a bound on |grad h|)
+  real duration;       // the shutter interval is [display time - duration, display time]
+  int segments;        // K: the path's instants t_k = end - duration (K - k) / K, k = 0..K
+  int frame;           // the frame's index (for the sampling streams)
+  uvec2 seed;          // the sampling seed, as a 64-bit word (rng.glsl)
+};
+
+// The path tables' shapes (path_table.glsl, shading/path_table.h).
+struct PathTableInfo {
+  int n_distance;
+  int n_u;
+  int n_v;
+  int n_sigma;
+  real sigma_min;
+  real sigma_max;
+  real log_q;     // log of the slice ratio: log(sigma_max / sigma_min) / (n_sigma - 2)
+  real extent_k;  // R(sigma) = 1 + extent_k sigma
+};
+
+// The fitted kernel table's shape (kernel_fit.glsl).
+struct KernelFitInfo {
+  int intervals;       // rows per count, minus one
+  real max_ratio;      // the last row's ratio
+  int first_solved3;   // the first fitted row of each count's table
+  int first_solved5;
+  int first_solved9;
+};
+
+// `staa`'s options (methods/options.h, StaaOptions; staa.glsl).
+struct StaaParams {
+  bool per_pixel_ndf;         // --ndf per-pixel (else uniform)
+  bool ndf_mean_shift;        // --ndf-mean shift
+  int kernels;                // --kernels 1|3|5|9
+  real elongation_threshold;  // axis ratio past which the fallback renders
+  bool fallback_riemann;      // --fallback riemann (else quadrature)
+  bool fallback_along_path;   // --fallback-time path (else current)
+  int riemann_cells;
+  real alias_start;           // Eq. 20's transition, cycles per pixel
+  real alias_end;
+  bool nyquist_max;           // --nyquist max (else norm)
+  int footprint;              // 0 none, 1 gaussian, 2 exact (CPU only: host finishes)
+  real curvature_limit;       // 0: off
+};
+
+// `reference` and `supersample`: samples per pixel (sampling.glsl).
+struct SampleCounts {
+  int sx;
+  int sy;
+  int st;              // at most kMaxTimeSamples
+  bool time_at_frame;  // one sample time, the display time
+};
+
+// The RDF's centres on the light plane at the path's instants.
+struct StaaPath {
+  vec2 centre[kMaxSegments + 1];
+  bool valid[kMaxSegments + 1];
+};
+
+// The result of a pixel, with what tests and diagnostics look at.
+struct StaaResult {
+  vec4 weights;
+  bool hit;
+  bool aliasing;       // some alpha > 0
+  bool temporal;       // step 3: the temporal method, exactly
+  bool fallback;       // past the elongation threshold
+  bool exact_pending;  // --footprint exact on a pixel without aliasing waves: the host
+                       // integrates the swept parallelogram (D and the path are in
+                       // exact_D and the StaaPath)
+  real in_light;
+  real below;
+  real fresnel;
+  real sky_y;  // the height of the centre reflection (the sky's zenith-horizon split)
+  mat2 exact_D;
+};

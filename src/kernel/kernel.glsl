@@ -1,0 +1,26 @@
+// The shading kernel of sunglint, in order: every file of functions it is made of, after
+// its interface (kernel/interface.glsl: the structs the host fills and reads). The C++
+// side includes the interface and this file (kernel/kernel_double.h,
+// kernel/cpu/kernel_float.cpp); the GL engine expands the same includes into one compute
+// shader after the GLSL prelude (kernel/glsl_prelude.glsl). Each file opens with what it
+// computes and where its formulas come from.
+#include "kernel/constants.glsl"
+#include "kernel/special.glsl"
+#include "kernel/rng.glsl"
+#include "kernel/camera.glsl"
+#include "kernel/waves.glsl"
+#include "kernel/light.glsl"
+#include "kernel/radiance.glsl"
+#include "kernel/intersect.glsl"
+#include "kernel/footprint.glsl"
+#include "kernel/aliasing.glsl"
+#include "kernel/ndf.glsl"
+#include "kernel/rdf.glsl"
+#include "kernel/gaussian.glsl"
+#include "kernel/arc.glsl"
+#include "kernel/path_table.glsl"
+#include "kernel/kernel_fit.glsl"
+#include "kernel/reflection_path.glsl"
+#include "kernel/reflection_footprint.glsl"
+#include "kernel/staa.glsl"
+#include "kernel/sampling.glsl"

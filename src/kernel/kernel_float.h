@@ -1,0 +1,23 @@
+// The shading kernel compiled as C++ in float precision (`--precision float`: what a GPU
+// computes), reached through these entry points. Their definitions are in
+// kernel/cpu/kernel_float.cpp, the one translation unit that includes the kernel's
+// functions in float, compiled with -fsingle-precision-constant so that every literal is
+// a float there, as in GLSL; the structs are those of kernel/kernel_types.h.
+#pragma once
+
+#include "kernel/kernel_types.h"
+
+namespace sg::kf {
+
+vec4 float_point_pixel(const WaveBuffer& waves, const Frame& f, int i, int j);
+vec4 float_stratified_pixel(const WaveBuffer& waves, const Frame& f, const SampleCounts& n, int i,
+                            int j);
+vec4 float_staa_temporal_pixel(const WaveBuffer& waves, const Frame& f, int i, int j);
+StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
+                            const R32Texture3D& table_s, const PathTableInfo& tinfo,
+                            const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,
+                            const StaaParams& p, int i, int j, StaaPath& path);
+// The replacements of functions GLSL lacks, for their tests.
+real float_erfc(real x);
+
+}  // namespace sg::kf

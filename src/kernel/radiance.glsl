@@ -1,0 +1,71 @@
+// The radiance of the scene spec ("Radiance along a camera ray") as weights of the
+// scene's four radiances, vec4(light, sky zenith, sky horizon, sea): every value the spec
+// defines is linear in them, so a method computes weights and the radiances (grey or RGB)
+// are applied once per pixel on the host. At a water point with unit view direction v
+// (towards the camera) and unit normal n:
+//   r = 2 (n . v) n - v                                   (mirror reflection)
+//   r.y <= 0:  the sea
+//   otherwise: F (light if r is in the disk, else the sky in direction r) + (1 - F) sea
+//   F = 1 (fresnel "none") or Schlick's R0 + (1 - R0)(1 - n . v)^5, R0 = 0.02;
+//   sky(d) = horizon + (zenith - horizon) max(d.y, 0)^exponent.
+// A camera ray that hits no water sees the sky, or the light when it is visible.
+
+SG_FN vec3 reflect_view(vec3 n, vec3 v) {
+  return 2.0 * dot(n, v) * n - v;
+}
+
+// Schlick's approximation; n_dot_v is clamped to [0, 1].
+SG_FN real fresnel_schlick(real n_dot_v) {
+  real m = 1.0 - clamp(n_dot_v, 0.0, 1.0);
+  real m2 = m * m;
+  return kSchlickR0 + (1.0 - kSchlickR0) * m2 * m2 * m;
+}
+
+SG_FN real fresnel_factor(int mode, real n_dot_v) {
+  return mode == 0 ? 1.0 : fresnel_schlick(n_dot_v);
+}
+
+SG_FN vec4 light_weights() {
+  return vec4(1.0, 0.0, 0.0, 0.0);
+}
+SG_FN vec4 sea_weights() {
+  return vec4(0.0, 0.0, 0.0, 1.0);
+}
+
+// The sky in a direction of height dir_y: zenith max(dir_y, 0)^exponent, horizon the
+// rest. A constant sky (zenith == horizon) puts its whole weight on the horizon.
+SG_FN vec4 sky_weights(IN(Frame) f, real dir_y) {
+  if (!f.sky_gradient) return vec4(0.0, 0.0, 1.0, 0.0);
+  real z = dir_y > 0.0 ? pow(dir_y, f.sky_exponent) : 0.0;
+  return vec4(0.0, z, 1.0 - z, 0.0);
+}
+
+// A camera ray with unit direction `dir` that hits no water.
+SG_FN vec4 miss_weights(IN(Frame) f, vec3 dir) {
+  if (f.light.visible && light_contains(f.light, dir)) return light_weights();
+  return sky_weights(f, dir.y);
+}
+
+// The water seen from unit direction v with a normal along `nm` of any length: with
+// n = nm / |nm| the reflection 2 (n . v) n - v equals 2 (nm . v) / (nm . nm) nm - v,
+// which needs no square root and is unit to rounding.
+SG_FN vec4 water_weights(IN(Frame) f, vec3 nm, vec3 v) {
+  real nv = dot(nm, v);
+  real nn = dot(nm, nm);
+  vec3 r = (2.0 * nv / nn) * nm - v;
+  if (r.y <= 0.0) return sea_weights();
+  vec4 above = light_contains(f.light, r) ? light_weights() : sky_weights(f, r.y);
+  if (f.fresnel == 0) return above;
+  real F = fresnel_schlick(nv * inversesqrt(nn));
+  return F * above + (1.0 - F) * sea_weights();
+}
+
+// The weights when a fraction `in_light` of the footprint and shutter reflects into the
+// light, `below` below the horizon and the rest into the sky at height `sky_y`; F is the
+// Fresnel factor of the part above the horizon.
+SG_FN vec4 combine_weights(IN(Frame) f, real F, real in_light, real below, real sky_y) {
+  real above = 1.0 - below;
+  real sky = max(0.0, above - in_light);
+  vec4 s = sky_weights(f, sky_y);
+  return vec4(F * in_light, F * sky * s.y, F * sky * s.z, below + (1.0 - F) * above);
+}

@@ -1,0 +1,55 @@
+// From normals to reflections (Podee et al. 2021, Sec. 3.4, Eqs. 8-16).
+//
+// A point n of the NDF plane is the normal m = (n.x, 1, n.y); it reflects the view v into
+//     r(n) = 2 (m . v) / (m . m) m - v                                  (Eqs. 9-10)
+// which meets the light plane at Phi(n) = r / (r . L) (Eq. 8). Phi is linearised at the
+// NDF's centre n_c (Eq. 11) with its 2x2 Jacobian J_c (Eq. 12, by the chain rule through
+// r and the projection; tested against finite differences), so a Gaussian NDF of
+// covariance Sigma maps to a Gaussian RDF of covariance J_c Sigma J_c^T (Eq. 16).
+
+SG_FN vec3 reflect_about_ndf_point(vec2 n, vec3 v) {
+  vec3 m = vec3(n.x, 1.0, n.y);
+  return (2.0 * dot(m, v) / dot(m, m)) * m - v;
+}
+
+// d(light-plane point) / d(direction r): 3 columns of 2 rows, for r of any length:
+// dP_i/dr = (e_i (r . L) - (r . e_i) L) / (r . L)^2.
+SG_FN mat3x2 light_plane_jacobian(vec3 r, IN(Light) l) {
+  real rl = dot(r, l.L);
+  real inv = 1.0 / (rl * rl);
+  vec3 row1 = (l.e1 * rl - dot(r, l.e1) * l.L) * inv;
+  vec3 row2 = (l.e2 * rl - dot(r, l.e2) * l.L) * inv;
+  return mat3x2(vec2(row1.x, row2.x), vec2(row1.y, row2.y), vec2(row1.z, row2.z));
+}
+
+// d r / d m for r = 2 (m . v) / (m . m) m - v (m the unnormalised normal):
+// dr/dm_j = 2 [v_j m + (m . v) e_j] / (m . m) - 4 (m . v) m_j m / (m . m)^2.
+SG_FN mat3 reflection_jacobian_normal(vec3 m, vec3 v) {
+  real mm = dot(m, m);
+  real mv = dot(m, v);
+  mat3 J = mat3(0.0);
+  for (int j = 0; j < 3; ++j) {
+    vec3 e = vec3(0.0);
+    e[j] = 1.0;
+    J[j] = (2.0 / mm) * (v[j] * m + mv * e) - (4.0 * mv * m[j] / (mm * mm)) * m;
+  }
+  return J;
+}
+
+// d r / d v: 2 m m^T / (m . m) - I.
+SG_FN mat3 reflection_jacobian_view(vec3 m) {
+  return (2.0 / dot(m, m)) * outerProduct(m, m) - mat3(1.0);
+}
+
+// J_c = dPhi/dn at n (Eq. 12); columns dPhi/dn_x and dPhi/dn_z.
+SG_FN mat2 ndf_to_light_plane_jacobian(vec2 n, vec3 v, IN(Light) l) {
+  vec3 m = vec3(n.x, 1.0, n.y);
+  vec3 r = (2.0 * dot(m, v) / dot(m, m)) * m - v;
+  mat3x2 JP = light_plane_jacobian(r, l) * reflection_jacobian_normal(m, v);
+  return mat2(JP[0], JP[2]);
+}
+
+// Eq. 16.
+SG_FN mat2 rdf_covariance(mat2 J, mat2 ndf_cov) {
+  return J * ndf_cov * transpose(J);
+}

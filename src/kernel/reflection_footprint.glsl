@@ -1,0 +1,61 @@
+// How the reflection of the resolved waves moves across a pixel: the derivatives of its
+// light-plane position P with respect to the image-plane coordinates (px, py), for the
+// pixel-footprint term of `staa` (docs/method.md).
+//
+// The pixel centre sees water point X(px, py) (footprint.glsl: dX/dpx, dX/dpy). There the
+// resolved waves have gradient g and Hessian H, so the NDF-plane point is n = -g + shift,
+// the normal m = (n.x, 1, n.y); the view is v = (C - X) / |C - X|; the reflection
+// r = 2 (m . v) / (m . m) m - v meets the light plane at P = Phi(r) (Eqs. 8-10). By the
+// chain rule
+//     dP/dpx = dP/dr [ dr/dm dm/dpx + dr/dv dv/dpx ],
+//     dm/dpx = -(H (dX/dpx)_xz) in the x and z slots,
+//     dv/dpx = -(I - v v^T) (dX/dpx) / |C - X|
+// (rdf.glsl gives dP/dr, dr/dm, dr/dv). To first order the pixel square maps to the
+// parallelogram P + [dP/dpx dP/dpy] [-1/2, 1/2]^2 on the light plane: the "reflection quad"
+// of the micro-specular highlight paper (Podee et al.), linearised at the pixel centre.
+
+struct ReflectionFootprint {
+  bool valid;  // false when the reflection points away from the light (r . L <= 0)
+  vec2 P;      // light-plane position of the centre reflection
+  mat2 D;      // columns dP/dpx, dP/dpy
+};
+
+SG_FN vec2 reflection_footprint_column(mat3x2 dPdr, mat3 drdm, mat3 drdv, vec3 hess, vec3 dX,
+                                       vec3 v, real dist) {
+  vec3 dm = vec3(-(hess.x * dX.x + hess.y * dX.z), 0.0, -(hess.y * dX.x + hess.z * dX.z));
+  vec3 dv = -(dX - dot(v, dX) * v) / dist;
+  return dPdr * (drdm * dm + drdv * dv);
+}
+
+// g, hess (xx, xz, zz): the resolved waves' gradient and Hessian at the point; shift: the
+// NDF's mean shift.
+SG_FN ReflectionFootprint reflection_footprint(IN(Light) l, IN(Footprint) fp, vec2 g, vec3 hess,
+                                               vec2 shift) {
+  ReflectionFootprint res;
+  res.valid = false;
+  res.P = vec2(0.0);
+  res.D = mat2(0.0);
+  vec3 nm = vec3(-g.x + shift.x, 1.0, -g.y + shift.y);
+  vec3 v = fp.view;
+  vec3 r = (2.0 * dot(nm, v) / dot(nm, nm)) * nm - v;
+  if (dot(r, l.L) <= 0.0) return res;
+  res.valid = true;
+  res.P = light_to_plane(l, r);
+  mat3x2 dPdr = light_plane_jacobian(r, l);
+  mat3 drdm = reflection_jacobian_normal(nm, v);
+  mat3 drdv = reflection_jacobian_view(nm);
+  res.D = mat2(reflection_footprint_column(dPdr, drdm, drdv, hess, fp.dp_dpx, v, fp.distance),
+               reflection_footprint_column(dPdr, drdm, drdv, hess, fp.dp_dpy, v, fp.distance));
+  return res;
+}
+
+// The share of N(p, cov) (light-plane coordinates) whose direction lies below the
+// horizon. The horizon r.y = 0 is a great circle, so on the light plane it is the line
+// elevation_on_plane(p) = L.y + p . (e1.y, e2.y) = 0, and the share beyond it is the
+// Gaussian's mass in that half-plane (gaussian.glsl). A light at the zenith has the
+// horizon at infinity on its plane.
+SG_FN real horizon_share(IN(Light) l, vec2 p, mat2 cov) {
+  vec2 g = vec2(l.e1.y, l.e2.y);
+  if (dot(g, g) < 1e-24) return l.L.y > 0.0 ? 0.0 : 1.0;
+  return gaussian_half_plane_mass(p, cov, g, l.L.y);
+}

@@ -1,0 +1,285 @@
+// `staa`: the spatio-temporal anti-aliasing of Podee, Max, Iwasaki and Dobashi 2021,
+// "Temporal and spatial anti-aliasing for rendering reflections on water waves", per
+// pixel (Fig. 2 and 5), with sunglint's pixel-footprint term (docs/method.md):
+//  1. The water point seen through the pixel centre and its footprint (footprint.glsl).
+//  2. One pass over the waves (staa_wave_pass): each wave's projected frequency splits it
+//     into a resolved share (1 - alpha) and an aliasing share alpha (Eq. 20,
+//     aliasing.glsl); the resolved shares give the gradients at the path's instants
+//     (reflection_path.glsl) and the Hessian; the aliasing shares the NDF's moments
+//     (Eq. 3 or Eqs. 4-7 with Appendix A, ndf.glsl). Nothing is stored per wave.
+//  3. No aliasing share and no footprint term: the temporal method exactly (Sec. 3.3).
+//  4. Otherwise (staa_finish) the NDF, centred on the resolved normal, maps to a Gaussian
+//     RDF of covariance J Sigma J^T on the light plane (Eqs. 8-16, rdf.glsl), plus the
+//     footprint term D D^T / 12 (reflection_footprint.glsl); its centre moves along the
+//     resolved reflection path (K straight sub-segments on the light plane). Its
+//     time-averaged mass in the light disk (Eq. 17) is the light's share: the RDF as 1, 3,
+//     5 or 9 circular Gaussians along its major axis (Sec. 3.5, 3.6, Appendix C;
+//     kernel_fit.glsl), each integrated along the path offset by its centre (Fig. 10)
+//     with the path tables (Eqs. 18-19, path_table.glsl); past the elongation threshold
+//     the fallback, the RDF's mass in the disk by quadrature or the paper's Riemann sum
+//     (gaussian.glsl), at the display time or averaged along the path. J and Sigma are
+//     those of the display time. The share below the horizon is the Gaussian's mass
+//     beyond the horizon's line on the light plane.
+//  5. The weights from those fractions (radiance.glsl, combine_weights) with the Fresnel
+//     factor of the centre normal.
+// As the aliasing shares fall to 0 so does the NDF's covariance, and the path integral
+// tends to the fraction of the path inside the disk: the transition to step 3 is
+// continuous (Fig. 11).
+
+
+// What the pass over the waves gathers for one pixel.
+struct StaaSums {
+  PathGradients path;  // the resolved waves' gradients at the instants
+  vec3 hess;           // the resolved waves' Hessian at the display time (xx, xz, zz)
+  NdfMoments ndf;      // the aliasing waves' NDF
+  bool any_alias;      // some wave with A > 0 has alpha > 0
+};
+
+// Reflections further than this from the light (r . L / |r| below it) are not projected
+// on the light plane: the gnomonic projection diverges at 90 degrees, and an RDF would
+// need a spread of more than tan(84 deg) ~ 10 plane units to reach the disk from there.
+const real kMinCosToLight = 0.1;
+
+SG_FN StaaSums staa_sums_zero(int K) {
+  StaaSums s;
+  s.path = path_gradients_zero(K);
+  s.hess = vec3(0.0);
+  s.ndf = ndf_zero();
+  s.any_alias = false;
+  return s;
+}
+
+// The one pass over the waves (step 2).
+SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
+                              IN(Footprint) fp) {
+  StaaSums sums = staa_sums_zero(f.segments);
+  mat2 J = footprint_xz_jacobian(fp);
+  real det = determinant(J);
+  mat2 Jinv = det != 0.0 ? inverse(J) : mat2(0.0);
+  bool curvature = p.footprint != 0 && p.curvature_limit > 0.0;
+  real limit = p.curvature_limit * f.light.radius;
+  for (int i = 0; i < f.wave_count; ++i) {
+    Wave w = wave_at(waves, f, i);
+    vec2 k = vec2(w.a, w.b);
+    real theta = wave_phase(w, fp.point.x, fp.point.z, 0.0);
+    real s = sin(theta);
+    real c = cos(theta);
+    real alpha = alias_fraction(projected_frequency(k, J, p.nyquist_max), p.alias_start, p.alias_end);
+    real D = det != 0.0 ? footprint_half_width(k, Jinv) : 0.0;
+    if (curvature) {
+      // Where the linearisation breaks: a resolved wave of phase half-width D has a slope
+      // A |k| cos(theta) that departs from its tangent by up to A |k| D^2 / 2 across the
+      // pixel; the reflection moves twice as far. Past `curvature_limit` disk radii the
+      // wave goes to the aliasing set, ramping over a factor of two.
+      real dev = w.slope * D * D;
+      alpha = max(alpha, clamp(dev / limit - 1.0, 0.0, 1.0));
+    }
+    real resolved = (1.0 - alpha) * w.A;
+    path_gradients_add(sums.path, waves, f, i, w, resolved, s, c);
+    sums.hess -= (resolved * s) * vec3(k.x * k.x, k.x * k.y, k.y * k.y);
+    real aliasing = alpha * w.A;
+    if (aliasing > 0.0) {
+      sums.any_alias = true;
+      if (p.per_pixel_ndf) {
+        ndf_add_per_pixel(sums.ndf, aliasing, k, c, D, sin(D), cos(D));
+      } else {
+        ndf_add_uniform(sums.ndf, aliasing, k);
+      }
+    }
+  }
+  return sums;
+}
+
+
+
+SG_FN StaaResult staa_result_miss() {
+  StaaResult r;
+  r.weights = vec4(0.0);
+  r.hit = false;
+  r.aliasing = false;
+  r.temporal = false;
+  r.fallback = false;
+  r.exact_pending = false;
+  r.in_light = 0.0;
+  r.below = 0.0;
+  r.fresnel = 1.0;
+  r.sky_y = 1.0;
+  r.exact_D = mat2(0.0);
+  return r;
+}
+
+// Steps 3 to 5 from the sums.
+SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
+                             IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
+                             IN(KernelFitInfo) finfo, IN(Frame) f, IN(StaaParams) p,
+                             IN(Footprint) fp, IN(StaaSums) sums, OUT(StaaPath) path) {
+  StaaResult res = staa_result_miss();
+  res.hit = true;
+  int K = f.segments;
+  for (int k = 0; k <= K; ++k) {
+    path.centre[k] = vec2(0.0);
+    path.valid[k] = false;
+  }
+  vec3 view = fp.view;
+  if (!sums.any_alias && p.footprint == 0) {
+    // Step 3: the temporal method, exactly.
+    PathShares ps = temporal_shares(f, sums.path, view);
+    res.temporal = true;
+    res.weights = ps.weights;
+    res.in_light = ps.in_light;
+    res.below = ps.below;
+    res.fresnel = ps.fresnel;
+    return res;
+  }
+  res.aliasing = sums.any_alias;
+
+  // Step 4: the NDF of the aliasing waves (none: a point at the resolved normal).
+  vec2 mean = (sums.any_alias && p.per_pixel_ndf && p.ndf_mean_shift) ? sums.ndf.mean : vec2(0.0);
+  mat2 ndf_cov = sums.any_alias ? sym2(sums.ndf.cov) : mat2(0.0);
+  // The NDF's centre at each instant: minus the resolved slope, plus the mean shift.
+  for (int k = 0; k <= K; ++k) {
+    vec3 r = reflect_about_ndf_point(-sums.path.g[k] + mean, view);
+    path.valid[k] = dot(r, f.light.L) > kMinCosToLight * length(r);
+    path.centre[k] = path.valid[k] ? light_to_plane(f.light, r) : vec2(0.0);
+  }
+  vec2 nc_now = -sums.path.g[K] + mean;
+  vec3 n_now = normalize(vec3(nc_now.x, 1.0, nc_now.y));
+  res.fresnel = fresnel_factor(f.fresnel, dot(n_now, view));
+  res.sky_y = reflect_view(n_now, view).y;
+  if (!path.valid[K]) {
+    // The reflection points away from the light: nothing of the RDF reaches it.
+    res.below = reflect_about_ndf_point(nc_now, view).y <= 0.0 ? 1.0 : 0.0;
+    res.weights = combine_weights(f, res.fresnel, res.in_light, res.below, res.sky_y);
+    return res;
+  }
+  mat2 Jc = ndf_to_light_plane_jacobian(nc_now, view, f.light);
+  mat2 cov_r = rdf_covariance(Jc, ndf_cov);
+  real R = f.light.tan_radius;
+
+  // The pixel-footprint term: the pixel square mapped to the light plane by the resolved
+  // reflection's derivatives D.
+  if (p.footprint != 0) {
+    ReflectionFootprint rf = reflection_footprint(f.light, fp, sums.path.g[K], sums.hess, mean);
+    if (rf.valid) {
+      if (p.footprint == 2 && !sums.any_alias) {
+        res.exact_pending = true;
+        res.exact_D = rf.D;
+        return res;
+      }
+      // A unit box has variance 1/12 per axis: covariance D D^T / 12, added to the RDF's.
+      cov_r += rf.D * transpose(rf.D) / 12.0;
+    }
+  }
+
+  // The share below the horizon, averaged over the path's valid instants.
+  real below = 0.0;
+  int counted = 0;
+  for (int k = 0; k <= K; ++k) {
+    if (!path.valid[k]) continue;
+    below += horizon_share(f.light, path.centre[k], cov_r);
+    counted += 1;
+  }
+  res.below = below / real(counted);
+
+  PrincipalAxes ax = principal_axes(cov_r);
+  // Exact cull: when every point of the centres' path is further from the disk than its
+  // radius plus 12 major standard deviations, the RDF's mass in the disk is below
+  // exp(-144 / 2) ~ 1e-31 (the kernels, offset by at most ~3 s1 with stds at most s1, hold
+  // less still). Most pixels never reflect the light.
+  real nearest = kRealMax;
+  for (int k = 0; k < K; ++k) {
+    if (!(path.valid[k] && path.valid[k + 1])) continue;
+    vec2 a = path.centre[k];
+    vec2 d = path.centre[k + 1] - path.centre[k];
+    real dd = dot(d, d);
+    real t = dd > 0.0 ? clamp(-dot(a, d) / dd, 0.0, 1.0) : 0.0;
+    nearest = min(nearest, length(a + t * d));
+  }
+  nearest = min(nearest, length(path.centre[K]));
+  if (nearest > R + 12.0 * ax.s1) {
+    res.in_light = 0.0;
+    res.weights = combine_weights(f, res.fresnel, res.in_light, res.below, res.sky_y);
+    return res;
+  }
+  real threshold = p.elongation_threshold > 0.0 ? p.elongation_threshold
+                   : p.kernels > 1             ? real(p.kernels)
+                                               : kRealMax;
+  // Below these the RDF is a point, or a line, at the precision's resolution.
+  real point_sigma = kDoublePrecision ? 1e-9 : 1e-5;
+  real line_sigma = kDoublePrecision ? 1e-12 : 1e-6;
+  bool degenerate = !(ax.s2 > line_sigma * R);
+  real in_light = 0.0;
+  real inv_k = 1.0 / real(K);
+  if (ax.s1 <= point_sigma * R) {
+    // A vanishing RDF: the fraction of the path inside the disk.
+    for (int k = 0; k < K; ++k) {
+      if (path.valid[k] && path.valid[k + 1]) {
+        in_light += path_average(table_f, table_s, tinfo, path.centre[k], path.centre[k + 1], 0.0, R);
+      }
+    }
+    in_light *= inv_k;
+  } else if (degenerate || ax.s1 / ax.s2 > threshold) {
+    // Past the elongation threshold: the RDF's mass in the disk (Sec. 3.6), at the display
+    // time or averaged along the path by the midpoint rule with samples closer than a third
+    // of the width of the mass-versus-position bump (disk radius + RDF spread along the
+    // path), at most 32 per sub-segment.
+    res.fallback = true;
+    if (!p.fallback_along_path) {
+      in_light = p.fallback_riemann ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
+                                    : gaussian_disk_mass(path.centre[K], cov_r, R);
+    } else {
+      for (int k = 0; k < K; ++k) {
+        if (!(path.valid[k] && path.valid[k + 1])) continue;
+        vec2 d = path.centre[k + 1] - path.centre[k];
+        real len = length(d);
+        vec2 dir = len > 0.0 ? d / len : vec2(1.0, 0.0);
+        real width = R + sqrt(max(0.0, dot(dir, cov_r * dir)));
+        int n = clamp(int(ceil(3.0 * len / width)), 1, 32);
+        real seg = 0.0;
+        for (int q = 0; q < n; ++q) {
+          vec2 c = path.centre[k] + ((real(q) + 0.5) / real(n)) * d;
+          seg += p.fallback_riemann ? gaussian_disk_mass_riemann(c, cov_r, R, p.riemann_cells)
+                                    : gaussian_disk_mass(c, cov_r, R);
+        }
+        in_light += seg / real(n);
+      }
+      in_light *= inv_k;
+    }
+  } else {
+    KernelSet ks = elliptical_kernels(fits, finfo, p.kernels, ax.s2, ax.s1);
+    for (int q = 0; q < ks.count; ++q) {
+      vec2 offset = ks.offset[q] * ax.u;
+      real along = 0.0;
+      for (int k = 0; k < K; ++k) {
+        if (!(path.valid[k] && path.valid[k + 1])) continue;
+        along += path_average(table_f, table_s, tinfo, path.centre[k] + offset,
+                              path.centre[k + 1] + offset, ks.sigma[q], R);
+      }
+      in_light += ks.weight[q] * along * inv_k;
+    }
+  }
+  res.in_light = clamp(in_light, 0.0, 1.0 - res.below);
+  res.weights = combine_weights(f, res.fresnel, res.in_light, res.below, res.sky_y);
+  return res;
+}
+
+// The whole pixel (i, j).
+SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
+                            IN(R32Texture3D) table_s, IN(PathTableInfo) tinfo,
+                            IN(R32Texture2D) fits, IN(KernelFitInfo) finfo, IN(Frame) f,
+                            IN(StaaParams) p, int i, int j, OUT(StaaPath) path) {
+  real px = real(i) + 0.5;
+  real py = real(j) + 0.5;
+  Footprint fp = pixel_footprint(waves, f, px, py, 0.0, f.displaced);
+  if (!fp.hit) {
+    StaaResult r = staa_result_miss();
+    r.weights = miss_weights(f, normalize(camera_direction(f.camera, px, py)));
+    for (int k = 0; k <= f.segments; ++k) {
+      path.centre[k] = vec2(0.0);
+      path.valid[k] = false;
+    }
+    return r;
+  }
+  StaaSums sums = staa_wave_pass(waves, f, p, fp);
+  return staa_finish(table_f, table_s, tinfo, fits, finfo, f, p, fp, sums, path);
+}

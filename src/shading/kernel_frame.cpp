@@ -1,0 +1,163 @@
+#include "shading/kernel_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "base/error.h"
+
+namespace sg {
+namespace {
+
+// x reduced to [-pi, pi] in double.
+double reduce_angle(double x) {
+  return std::remainder(x, kTwoPi);
+}
+
+template <class Light>
+void fill_light(const LightModel& l, Light& out) {
+  using R = decltype(out.radius);
+  using V3 = decltype(out.L);
+  auto v3 = [](const vec3& v) { return V3(R(v.x), R(v.y), R(v.z)); };
+  out.L = v3(l.L);
+  out.e1 = v3(l.e1);
+  out.e2 = v3(l.e2);
+  out.radius = R(l.radius);
+  out.cos_radius = R(l.cos_radius);
+  out.sin_radius = R(std::sin(l.radius));
+  out.tan_radius = R(l.tan_radius);
+  out.chord2 = R(4 * sqr(std::sin(0.5 * l.radius)));
+  out.visible = l.visible;
+}
+
+template <class In>
+void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed, In& out) {
+  using Frame = decltype(out.frame);
+  using R = decltype(out.frame.duration);
+  using V3 = decltype(out.frame.light.L);
+  using V4 = typename decltype(out.texels)::value_type;
+  if (segments < 1 || segments > kd::kMaxSegments) {
+    throw Error("--segments: must be in [1, " + std::to_string(kd::kMaxSegments) + "] (got " +
+                std::to_string(segments) + ")");
+  }
+  auto v3 = [](const vec3& v) { return V3(R(v.x), R(v.y), R(v.z)); };
+  Frame& f = out.frame;
+  const CameraModel& c = m.camera;
+  f.camera.position = V3(0, R(c.position().y), 0);
+  f.camera.forward = v3(c.forward());
+  f.camera.right = v3(c.right());
+  f.camera.up = v3(c.up());
+  f.camera.half_w = R(c.half_w());
+  f.camera.half_h = R(c.half_h());
+  f.camera.width = R(c.width());
+  f.camera.height = R(c.height());
+  fill_light(m.light, f.light);
+  f.fresnel = m.scene.surface.fresnel == FresnelMode::none ? 0 : 1;
+  f.displaced = m.displaced();
+  f.sky_gradient = m.scene.sky.gradient;
+  f.sky_exponent = R(m.scene.sky.exponent);
+  const WaveField& w = m.waves;
+  const int n = static_cast<int>(w.size());
+  f.wave_count = n;
+  f.wave_stride = wave_stride(segments);
+  f.amplitude_bound = R(w.amplitude_bound());
+  f.slope_bound = R(w.slope_bound());
+  f.duration = R(ft.duration());
+  f.segments = segments;
+  f.frame = ft.frame;
+  f.seed = {static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32)};
+
+  out.order.resize(n);
+  std::iota(out.order.begin(), out.order.end(), 0);
+  std::stable_sort(out.order.begin(), out.order.end(), [&](int p, int q) {
+    return std::hypot(w.a[p], w.b[p]) < std::hypot(w.a[q], w.b[q]);
+  });
+  const int stride = f.wave_stride;
+  out.texels.assign(static_cast<size_t>(n) * stride, V4(0));
+  const double xc = c.position().x, zc = c.position().z, t = ft.end;
+  for (int q = 0; q < n; ++q) {
+    const int i = out.order[q];
+    const double k = std::hypot(w.a[i], w.b[i]);
+    const double theta0 = reduce_angle(w.a[i] * xc + w.b[i] * zc + reduce_angle(w.c[i] * t) +
+                                       reduce_angle(w.phi[i]));
+    V4* tx = &out.texels[static_cast<size_t>(q) * stride];
+    tx[0] = V4(R(w.A[i]), R(w.a[i]), R(w.b[i]), R(theta0));
+    tx[1] = V4(R(w.c[i]), R(k), R(w.A[i] * k), 0);
+    for (int s = 0; s < segments; ++s) {
+      const double delta = reduce_angle(w.c[i] * (ft.duration() * (segments - s) / segments));
+      V4& r = tx[2 + s / 2];
+      if (s % 2 == 0) {
+        r.x = R(std::cos(delta));
+        r.y = R(std::sin(delta));
+      } else {
+        r.z = R(std::cos(delta));
+        r.w = R(std::sin(delta));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+kd::Light kernel_light(const LightModel& l) {
+  kd::Light k;
+  fill_light(l, k);
+  return k;
+}
+
+kd::Footprint kernel_footprint(const SceneModel& m, const PixelFootprint& fp) {
+  kd::Footprint k;
+  k.hit = fp.hit;
+  k.point = to_camera_relative(m, fp.point);
+  k.view = fp.view;
+  k.dp_dpx = fp.dp_dpx;
+  k.dp_dpy = fp.dp_dpy;
+  k.distance = fp.distance;
+  return k;
+}
+
+kd::Frame widen(const kf::Frame& f) {
+  kd::Frame d;
+  auto v3 = [](const kf::vec3& v) { return kd::vec3(v); };
+  d.camera.position = v3(f.camera.position);
+  d.camera.forward = v3(f.camera.forward);
+  d.camera.right = v3(f.camera.right);
+  d.camera.up = v3(f.camera.up);
+  d.camera.half_w = f.camera.half_w;
+  d.camera.half_h = f.camera.half_h;
+  d.camera.width = f.camera.width;
+  d.camera.height = f.camera.height;
+  d.light.L = v3(f.light.L);
+  d.light.e1 = v3(f.light.e1);
+  d.light.e2 = v3(f.light.e2);
+  d.light.radius = f.light.radius;
+  d.light.cos_radius = f.light.cos_radius;
+  d.light.sin_radius = f.light.sin_radius;
+  d.light.tan_radius = f.light.tan_radius;
+  d.light.chord2 = f.light.chord2;
+  d.light.visible = f.light.visible;
+  d.fresnel = f.fresnel;
+  d.displaced = f.displaced;
+  d.sky_gradient = f.sky_gradient;
+  d.sky_exponent = f.sky_exponent;
+  d.wave_count = f.wave_count;
+  d.wave_stride = f.wave_stride;
+  d.amplitude_bound = f.amplitude_bound;
+  d.slope_bound = f.slope_bound;
+  d.duration = f.duration;
+  d.segments = f.segments;
+  d.frame = f.frame;
+  d.seed = f.seed;
+  return d;
+}
+
+void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
+                         KernelInputsD& out) {
+  build(m, ft, segments, seed, out);
+}
+void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
+                         KernelInputsF& out) {
+  build(m, ft, segments, seed, out);
+}
+
+}  // namespace sg

@@ -1,0 +1,73 @@
+// The kernel's inputs for one frame, built on the host from a scene model (the
+// begin_frame step of every kernel method and engine): the Frame struct of
+// kernel/interface.glsl and the wave buffer, in double (sg::kd) or float (sg::kf).
+//
+// What is computed here, in double, once per frame, so that the kernel (float on a GPU)
+// only sees well-scaled numbers:
+//  - camera-relative coordinates: the camera at (0, y, 0);
+//  - each wave's phase at the camera's (x, z) and the display time t_f,
+//    theta0 = a x_c + b z_c + c t_f + phi, reduced to [-pi, pi] (c t_f alone reaches 1e4
+//    rad after an hour);
+//  - the rotations to the path's instants, (cos, sin) of c (t_f - t_k), k = 0..K-1;
+//  - the waves sorted by |k| (ascending, ties in file order): the order every engine sums
+//    them in.
+// The tables (path tables, kernel fits) are views of host data (shading/path_table.h,
+// shading/kernel_table.h).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "kernel/kernel_double.h"
+#include "kernel/kernel_types.h"
+#include "scene/footprint.h"
+#include "scene/model.h"
+
+namespace sg {
+
+template <class Frame, class Vec4>
+struct KernelInputs {
+  Frame frame{};
+  std::vector<Vec4> texels;  // the wave buffer (kernel/waves.glsl: layout)
+  std::vector<int> order;    // file index of the wave at each position of the buffer
+};
+using KernelInputsD = KernelInputs<kd::Frame, kd::vec4>;
+using KernelInputsF = KernelInputs<kf::Frame, kf::vec4>;
+
+// Texels per wave for K path segments: (A, a, b, theta0), (c, |k|, A |k|, 0), then the
+// rotations two per texel.
+inline int wave_stride(int segments) {
+  return 2 + (segments + 1) / 2;
+}
+
+// The kernel's light (kernel/interface.glsl) for a light model, in double.
+kd::Light kernel_light(const LightModel& l);
+// The kernel's footprint for a host footprint (camera-relative point).
+kd::Footprint kernel_footprint(const SceneModel& m, const PixelFootprint& fp);
+
+// A float frame's settings in double (the camera, the light and the flags; no waves).
+kd::Frame widen(const kf::Frame& f);
+
+// Builds the inputs of frame `ft` with K = `segments` path segments (1 to kMaxSegments)
+// and the sampling `seed`.
+void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
+                         KernelInputsD& out);
+void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
+                         KernelInputsF& out);
+
+inline kd::WaveBuffer wave_buffer(const KernelInputsD& in) {
+  return kd::WaveBuffer{in.texels.data(), static_cast<int>(in.texels.size())};
+}
+inline kf::WaveBuffer wave_buffer(const KernelInputsF& in) {
+  return kf::WaveBuffer{in.texels.data(), static_cast<int>(in.texels.size())};
+}
+
+// A host point (world coordinates) in the kernel's camera-relative coordinates, and back.
+inline vec3 to_camera_relative(const SceneModel& m, const vec3& p) {
+  return vec3(p.x - m.camera.position().x, p.y, p.z - m.camera.position().z);
+}
+inline vec3 from_camera_relative(const SceneModel& m, const vec3& p) {
+  return vec3(p.x + m.camera.position().x, p.y, p.z + m.camera.position().z);
+}
+
+}  // namespace sg
