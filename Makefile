@@ -39,10 +39,10 @@ sanitize: deps
 	ctest --test-dir build-asan --output-on-failure -j $(JOBS) -LE slow
 
 format:
-	clang-format -i $$(git ls-files '*.cpp' '*.h')
+	clang-format -i $$(git ls-files '*.cpp' '*.h' '*.glsl')
 
 format-check:
-	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.h')
+	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.h' '*.glsl')
 
 clean:
 	rm -rf $(BUILD) build-asan

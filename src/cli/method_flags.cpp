@@ -45,13 +45,17 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
   app.add_option("--samples", f.samples, "Samples SxSxT for reference and supersample")
       ->capture_default_str();
   app.add_option("--seed", o.seed, "Seed of the sampling streams")->capture_default_str();
+  choice(app, "--precision", o.precision,
+         {{"double", Precision::float64}, {"float", Precision::float32}},
+         "point, supersample, reference, staa-temporal, staa: the shading kernel's precision on "
+         "the CPU (float is what a GPU computes)");
 
   // staa, staa-temporal (methods/staa.h)
   StaaOptions& s = o.staa;
   app.add_option("--segments", s.segments,
                  "staa, staa-temporal: sub-arcs of the shutter interval (Sec. 3.5)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 64));
+      ->check(CLI::Range(1, 32));
   choice(app, "--ndf", s.ndf, {{"uniform", NdfMode::uniform}, {"per-pixel", NdfMode::per_pixel}},
          "staa: NDF of the aliasing waves: uniform (Eq. 3) or per-pixel (Eqs. 4-7)");
   choice(app, "--ndf-mean", s.ndf_mean_shift, {{"shift", true}, {"none", false}},

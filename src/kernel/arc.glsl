@@ -63,14 +63,16 @@ SG_FN void intervals_add(INOUT(Intervals) v, real l, real h) {
 
 SG_FN real intervals_measure(IN(Intervals) v) {
   real m = 0.0;
-  for (int i = 0; i < v.count; ++i) m += v.hi[i] - v.lo[i];
+  for (int i = 0; i < v.count; ++i)
+    m += v.hi[i] - v.lo[i];
   return m;
 }
 
 SG_FN real intervals_overlap(IN(Intervals) p, IN(Intervals) q) {
   real m = 0.0;
   for (int i = 0; i < p.count; ++i) {
-    for (int j = 0; j < q.count; ++j) m += max(0.0, min(p.hi[i], q.hi[j]) - max(p.lo[i], q.lo[j]));
+    for (int j = 0; j < q.count; ++j)
+      m += max(0.0, min(p.hi[i], q.hi[j]) - max(p.lo[i], q.lo[j]));
   }
   return m;
 }
@@ -141,7 +143,8 @@ SG_FN ArcFractions arc_fractions(vec3 r0_in, vec3 r1_in, IN(Light) l) {
   real sh = 0.5 * length(r1 - r0);
   real ch = 0.5 * length(r1 + r0);
   real cos_reach = l.cos_radius * ch - l.sin_radius * sh;
-  bool misses_light = l.radius < 0.5 * kPi && ch > 0.0 && max(dot(r0, l.L), dot(r1, l.L)) < cos_reach;
+  bool misses_light =
+      l.radius < 0.5 * kPi && ch > 0.0 && max(dot(r0, l.L), dot(r1, l.L)) < cos_reach;
   bool stays_above = min(r0.y, r1.y) > sh;
   if (misses_light && stays_above) return none;
 
@@ -169,8 +172,10 @@ SG_FN ArcFractions arc_fractions(vec3 r0_in, vec3 r1_in, IN(Light) l) {
     arc.theta = kPi;
   }
 
-  Intervals cone = misses_light ? intervals_empty() : cap_on_arc(arc, l.L, l.sin_radius, l.cos_radius);
-  Intervals below = stays_above ? intervals_empty() : cap_on_arc(arc, vec3(0.0, -1.0, 0.0), 1.0, 0.0);
+  Intervals cone =
+      misses_light ? intervals_empty() : cap_on_arc(arc, l.L, l.sin_radius, l.cos_radius);
+  Intervals below =
+      stays_above ? intervals_empty() : cap_on_arc(arc, vec3(0.0, -1.0, 0.0), 1.0, 0.0);
   ArcFractions f;
   f.below = clamp(intervals_measure(below) / arc.theta, 0.0, 1.0);
   f.in_light = clamp((intervals_measure(cone) - intervals_overlap(cone, below)) / arc.theta, 0.0,

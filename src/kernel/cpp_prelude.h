@@ -23,10 +23,10 @@
 // SG_KERNEL_REAL defined as double or float (kernel/kernel_double.h does both).
 #pragma once
 
-#include <glm/glm.hpp>
-#include <glm/gtc/type_precision.hpp>
 #include <cmath>
 #include <cstdint>
+#include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
 #include <limits>
 
 // Parameters: GLSL's in / out / inout.
@@ -54,3 +54,23 @@ struct R32Texture3D {  // GLSL sampler2DArray (R32F): texel (x, y, layer)
 };
 
 }  // namespace sg::kernel_tables
+
+namespace sg::wave_simd {
+
+// The frame's waves as structure-of-arrays, in the order of the wave buffer, for the CPU
+// engine's vectorised sums (kernel/cpu/wave_sums.h): rot_c / rot_s hold the rotations to
+// the path's instants, [instant k][wave].
+template <class T>
+struct Arrays {
+  const T* A = nullptr;
+  const T* a = nullptr;
+  const T* b = nullptr;
+  const T* theta0 = nullptr;
+  const T* c = nullptr;
+  const T* slope = nullptr;
+  const T* rot_c = nullptr;
+  const T* rot_s = nullptr;
+  int count = 0;
+};
+
+}  // namespace sg::wave_simd

@@ -81,11 +81,13 @@ const real kRealEpsilon = std::numeric_limits<real>::epsilon();
 const real kRealMax = std::numeric_limits<real>::max();
 const bool kDoublePrecision = sizeof(real) == sizeof(double);
 
-// The per-wave data of a frame (kernel/frame.glsl), vec4 texels: GLSL's samplerBuffer
-// (RGBA32F) over an array the host fills in begin_frame.
+// The per-wave data of a frame (kernel/waves.glsl), vec4 texels: GLSL's samplerBuffer
+// (RGBA32F) over an array the host fills in begin_frame. In C++ it also carries the same
+// waves as arrays for the CPU engine's vectorised sums (none: the kernel's own loops).
 struct WaveBuffer {
   const vec4* data = nullptr;
   int size = 0;  // texels
+  sg::wave_simd::Arrays<real> arrays;
 };
 inline vec4 texelFetch(const WaveBuffer& b, int i) {
   return b.data[i];

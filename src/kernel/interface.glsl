@@ -38,7 +38,7 @@ struct Light {
   vec3 L;
   vec3 e1;
   vec3 e2;
-  real radius;      // angular radius, radians
+  real radius;  // angular radius, radians
   real cos_radius;
   real sin_radius;
   real tan_radius;  // the disk's radius on the light plane
@@ -50,18 +50,18 @@ struct Light {
 struct Frame {
   Camera camera;
   Light light;
-  int fresnel;         // 0: none, 1: Schlick (scene spec 4)
-  bool displaced;      // geometry "displaced" (else "flat")
-  bool sky_gradient;   // the sky's weight splits between zenith and horizon
+  int fresnel;        // 0: none, 1: Schlick (scene spec 4)
+  bool displaced;     // geometry "displaced" (else "flat")
+  bool sky_gradient;  // the sky's weight splits between zenith and horizon
   real sky_exponent;
   int wave_count;
-  int wave_stride;     // texels per wave in the wave buffer
+  int wave_stride;       // texels per wave in the wave buffer
   real amplitude_bound;  // sum |A_i| (the slab that holds the surface)
   real slope_bound;      // sum |A_i| |k_i| (a bound on |grad h|)
-  real duration;       // the shutter interval is [display time - duration, display time]
-  int segments;        // K: the path's instants t_k = end - duration (K - k) / K, k = 0..K
-  int frame;           // the frame's index (for the sampling streams)
-  uvec2 seed;          // the sampling seed, as a 64-bit word (rng.glsl)
+  real duration;         // the shutter interval is [display time - duration, display time]
+  int segments;          // K: the path's instants t_k = end - duration (K - k) / K, k = 0..K
+  int frame;             // the frame's index (for the sampling streams)
+  uvec2 seed;            // the sampling seed, as a 64-bit word (rng.glsl)
 };
 
 // The path tables' shapes (path_table.glsl, shading/path_table.h).
@@ -78,9 +78,9 @@ struct PathTableInfo {
 
 // The fitted kernel table's shape (kernel_fit.glsl).
 struct KernelFitInfo {
-  int intervals;       // rows per count, minus one
-  real max_ratio;      // the last row's ratio
-  int first_solved3;   // the first fitted row of each count's table
+  int intervals;      // rows per count, minus one
+  real max_ratio;     // the last row's ratio
+  int first_solved3;  // the first fitted row of each count's table
   int first_solved5;
   int first_solved9;
 };
@@ -94,18 +94,18 @@ struct StaaParams {
   bool fallback_riemann;      // --fallback riemann (else quadrature)
   bool fallback_along_path;   // --fallback-time path (else current)
   int riemann_cells;
-  real alias_start;           // Eq. 20's transition, cycles per pixel
+  real alias_start;  // Eq. 20's transition, cycles per pixel
   real alias_end;
-  bool nyquist_max;           // --nyquist max (else norm)
-  int footprint;              // 0 none, 1 gaussian, 2 exact (CPU only: host finishes)
-  real curvature_limit;       // 0: off
+  bool nyquist_max;      // --nyquist max (else norm)
+  int footprint;         // 0 none, 1 gaussian, 2 exact (CPU only: host finishes)
+  real curvature_limit;  // 0: off
 };
 
 // `reference` and `supersample`: samples per pixel (sampling.glsl).
 struct SampleCounts {
   int sx;
   int sy;
-  int st;              // at most kMaxTimeSamples
+  int nt;              // times, at most kMaxTimeSamples
   bool time_at_frame;  // one sample time, the display time
 };
 

@@ -18,7 +18,7 @@ const int kMaxRefineSteps = 100;
 
 struct RayHit {
   bool hit;
-  real s;      // ray parameter along the direction given (point = origin + s dir)
+  real s;  // ray parameter along the direction given (point = origin + s dir)
   vec3 point;
 };
 
@@ -49,8 +49,7 @@ SG_FN RayHit intersect_flat(vec3 o, vec3 d) {
 }
 
 // f(s) = y(s) - h at the point o + s d.
-SG_FN real height_above_water(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3 d, real s,
-                              real dt) {
+SG_FN real height_above_water(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3 d, real s, real dt) {
   vec3 p = o + s * d;
   return p.y - water_height(waves, f, p.x, p.z, dt);
 }

@@ -4,6 +4,7 @@
 // kernel/cpu/kernel_float.cpp); the GL engine expands the same includes into one compute
 // shader after the GLSL prelude (kernel/glsl_prelude.glsl). Each file opens with what it
 // computes and where its formulas come from.
+// clang-format off
 #include "kernel/constants.glsl"
 #include "kernel/special.glsl"
 #include "kernel/rng.glsl"
@@ -24,3 +25,4 @@
 #include "kernel/reflection_footprint.glsl"
 #include "kernel/staa.glsl"
 #include "kernel/sampling.glsl"
+// clang-format on

@@ -8,9 +8,11 @@
 #include "kernel/cpp_prelude.h"
 
 #define SG_KERNEL_REAL double
+#define SG_CPU_WAVE_SUMS
 namespace sg::kd {
 #include "kernel/cpp_types.h"
 #include "kernel/interface.glsl"
 #include "kernel/kernel.glsl"
 }  // namespace sg::kd
+#undef SG_CPU_WAVE_SUMS
 #undef SG_KERNEL_REAL

@@ -12,8 +12,6 @@
 // that row are scaled to the ratio (offsets in proportion to t, stds blended towards 1).
 // One kernel is Sec. 3.5's equal-area circle, sigma^2 = sigma_minor sigma_major.
 
-
-
 // The kernels for one RDF: offsets along its major axis, standard deviations, weights, in
 // the RDF's units.
 struct KernelSet {
@@ -21,9 +19,9 @@ struct KernelSet {
   real offset[kMaxKernels];
   real sigma[kMaxKernels];
   real weight[kMaxKernels];
-  real ratio;            // sigma_major / sigma_minor
-  bool past_threshold;   // ratio > count: where the paper renders with its fallback
-  bool beyond_table;     // ratio > max_ratio: the last row's fit scaled, a stand-in
+  real ratio;           // sigma_major / sigma_minor
+  bool past_threshold;  // ratio > count: where the paper renders with its fallback
+  bool beyond_table;    // ratio > max_ratio: the last row's fit scaled, a stand-in
 };
 
 SG_FN real ratio_to_t(real ratio) {
@@ -36,7 +34,8 @@ SG_FN real fit_value(IN(R32Texture2D) table, int base, int row, int column) {
 
 // A row past the solved ones, from the nearest rows going inwards (a, a + step, ...):
 // quadratic extrapolation (weights 3, -3, 1), or linear with only two rows.
-SG_FN real fit_beyond(IN(R32Texture2D) table, int base, int first, int n, int a, int step, int col) {
+SG_FN real fit_beyond(IN(R32Texture2D) table, int base, int first, int n, int a, int step,
+                      int col) {
   int d = a + 2 * step;
   if (d >= first && d <= n) {
     return 3.0 * fit_value(table, base, a, col) - 3.0 * fit_value(table, base, a + step, col) +
@@ -76,13 +75,15 @@ SG_FN KernelSet elliptical_kernels(IN(R32Texture2D) table, IN(KernelFitInfo) inf
   }
   int pairs = (count - 1) / 2;
   int base = count == 3 ? 0 : (count == 5 ? info.intervals + 1 : 2 * (info.intervals + 1));
-  int first = count == 3 ? info.first_solved3 : (count == 5 ? info.first_solved5 : info.first_solved9);
+  int first =
+      count == 3 ? info.first_solved3 : (count == 5 ? info.first_solved5 : info.first_solved9);
   int n = info.intervals;
   real t_max = ratio_to_t(info.max_ratio);
   real u = clamp(ratio_to_t(r) / t_max, 0.0, 1.0) * real(n);
   // The parameters (unit minor std): column 1 w_a, 2 sigma_a, then 3 + 3 i + (0 d, 1 sigma, 2 w).
   real params[15];
-  for (int c = 0; c < 15; ++c) params[c] = 0.0;
+  for (int c = 0; c < 15; ++c)
+    params[c] = 0.0;
   if (first > 0 && u <= real(first)) {
     // Below the solved rows: the first solved row scaled to the ratio.
     real from = fit_value(table, base, first, 0);
@@ -105,9 +106,12 @@ SG_FN KernelSet elliptical_kernels(IN(R32Texture2D) table, IN(KernelFitInfo) inf
     real b2 = -1.5 * f3 + 2.0 * f2 + 0.5 * fr;
     real b3 = 0.5 * f3 - 0.5 * f2;
     for (int c = 1; c < 3 + 3 * pairs; ++c) {
-      real p0 = j - 1 >= first ? fit_value(table, base, j - 1, c) : fit_beyond(table, base, first, n, j, 1, c);
-      real p3 = j + 2 <= n ? fit_value(table, base, j + 2, c) : fit_beyond(table, base, first, n, j + 1, -1, c);
-      params[c] = b0 * p0 + b1 * fit_value(table, base, j, c) + b2 * fit_value(table, base, j + 1, c) + b3 * p3;
+      real p0 = j - 1 >= first ? fit_value(table, base, j - 1, c)
+                               : fit_beyond(table, base, first, n, j, 1, c);
+      real p3 = j + 2 <= n ? fit_value(table, base, j + 2, c)
+                           : fit_beyond(table, base, first, n, j + 1, -1, c);
+      params[c] = b0 * p0 + b1 * fit_value(table, base, j, c) +
+                  b2 * fit_value(table, base, j + 1, c) + b3 * p3;
     }
   }
   // Expanded: the central kernel, then +d_1, -d_1, +d_2, -d_2, ... in the RDF's units.

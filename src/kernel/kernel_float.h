@@ -17,7 +17,10 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,
                             const StaaParams& p, int i, int j, StaaPath& path);
-// The replacements of functions GLSL lacks, for their tests.
+// For the tests: the replacements of functions GLSL lacks, and the sums over the waves
+// (vectorised when the buffer carries arrays, else the kernel's loops).
 real float_erfc(real x);
+real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
+vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
 
 }  // namespace sg::kf

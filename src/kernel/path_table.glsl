@@ -15,7 +15,6 @@
 // 1 + log(sigma / sigma_min) / log(q) above. Above sigma_max the three-term wide-Gaussian
 // expansion of F (shading/disk_gaussian.h) and its closed-form integral along u are used.
 
-
 SG_FN real slice_sigma(IN(PathTableInfo) t, int k) {
   if (k == 0) return 0.0;
   if (k == t.n_sigma - 1) return t.sigma_max;
@@ -58,7 +57,8 @@ SG_FN real s_slice(IN(R32Texture3D) S, IN(PathTableInfo) t, int k, real u, real 
   real x = (clamp(u, -R, R) + R) * real(t.n_u - 1) / (2.0 * R);
   int i = min(int(x), t.n_u - 2);
   real a = x - real(i);
-  real lo = (1.0 - a) * texelFetch(S, ivec3(i, j, k), 0).x + a * texelFetch(S, ivec3(i + 1, j, k), 0).x;
+  real lo =
+      (1.0 - a) * texelFetch(S, ivec3(i, j, k), 0).x + a * texelFetch(S, ivec3(i + 1, j, k), 0).x;
   real hi = (1.0 - a) * texelFetch(S, ivec3(i, j + 1, k), 0).x +
             a * texelFetch(S, ivec3(i + 1, j + 1, k), 0).x;
   return (1.0 - b) * lo + b * hi;

@@ -15,7 +15,6 @@
 // arc), combined into weights with the sub-arc's mean Fresnel factor (the sky at the
 // height of the sub-arc's middle), averaged over the sub-arcs.
 
-
 struct PathGradients {
   vec2 g[kMaxSegments + 1];  // (dh/dx, dh/dz) of the resolved waves at t_0 .. t_K
 };
@@ -23,7 +22,8 @@ struct PathGradients {
 // Zero gradients for the instants of K sub-arcs (the rest of the array is not read).
 SG_FN PathGradients path_gradients_zero(int K) {
   PathGradients p;
-  for (int k = 0; k <= K; ++k) p.g[k] = vec2(0.0);
+  for (int k = 0; k <= K; ++k)
+    p.g[k] = vec2(0.0);
   return p;
 }
 
@@ -39,8 +39,9 @@ SG_FN void path_gradients_add(INOUT(PathGradients) p, IN(WaveBuffer) waves, IN(F
   }
 }
 
-// Every wave at full amplitude: the path of staa-temporal.
-SG_FN PathGradients path_gradients(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
+// Every wave at full amplitude: the path of staa-temporal (the definition; the CPU engine's
+// vectorised equivalent under SG_CPU_WAVE_SUMS).
+SG_FN PathGradients wave_sum_path(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
   PathGradients p = path_gradients_zero(f.segments);
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
@@ -50,11 +51,19 @@ SG_FN PathGradients path_gradients(IN(WaveBuffer) waves, IN(Frame) f, vec3 point
   return p;
 }
 
+#ifdef SG_CPU_WAVE_SUMS
+PathGradients path_gradients(IN(WaveBuffer) waves, IN(Frame) f, vec3 point);
+#else
+SG_FN PathGradients path_gradients(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
+  return wave_sum_path(waves, f, point);
+}
+#endif
+
 struct PathShares {
   vec4 weights;   // the temporal method's weights (sub-arcs combined one by one)
   real in_light;  // fractions of the interval in the light and below the horizon
   real below;
-  real fresnel;   // the mean Fresnel factor
+  real fresnel;  // the mean Fresnel factor
 };
 
 SG_FN PathShares temporal_shares(IN(Frame) f, IN(PathGradients) p, vec3 view) {

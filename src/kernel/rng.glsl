@@ -68,7 +68,8 @@ SG_FN Pcg32 pcg32_make(uvec2 seed, uvec2 stream) {
 SG_FN real pcg32_uniform(INOUT(Pcg32) g) {
   uint hi = pcg32_next(g);
   uint lo = pcg32_next(g);
-  if (kDoublePrecision) return real(hi) * (1.0 / 4294967296.0) + real(lo >> 11u) * (1.0 / 9007199254740992.0);
+  if (kDoublePrecision)
+    return real(hi) * (1.0 / 4294967296.0) + real(lo >> 11u) * (1.0 / 9007199254740992.0);
   return real(hi >> 8u) * (1.0 / 16777216.0);
 }
 

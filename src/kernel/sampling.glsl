@@ -11,7 +11,6 @@
 // stream of (seed, frame, pixel) (rng.glsl) in a fixed order: the T time jitters, then for
 // each cell in row-major order its x and y jitter. Same inputs, same bytes.
 
-
 // The weights along the camera ray through image-plane point (px, py), dt from the
 // display time: intersection (flat or displaced), normal, reflection, shading.
 SG_FN vec4 sample_weights(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, real dt) {
@@ -27,7 +26,6 @@ SG_FN vec4 point_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) {
   return sample_weights(waves, f, real(i) + 0.5, real(j) + 0.5, 0.0);
 }
 
-
 // The sample times of a pixel, as offsets from the display time: the first T uniforms of
 // its stream, one in each of the T equal strata of the shutter.
 struct SampleTimes {
@@ -37,8 +35,9 @@ struct SampleTimes {
 
 SG_FN SampleTimes draw_sample_times(INOUT(Pcg32) rng, IN(Frame) f, IN(SampleCounts) n) {
   SampleTimes t;
-  t.count = n.time_at_frame ? 1 : n.st;
-  for (int q = 0; q < kMaxTimeSamples; ++q) t.dt[q] = 0.0;
+  t.count = n.time_at_frame ? 1 : n.nt;
+  for (int q = 0; q < kMaxTimeSamples; ++q)
+    t.dt[q] = 0.0;
   for (int q = 0; q < t.count; ++q) {
     real u = pcg32_uniform(rng);
     t.dt[q] = n.time_at_frame ? 0.0 : (real(q) + u) / real(t.count) * f.duration - f.duration;
@@ -54,7 +53,8 @@ SG_FN vec4 stratified_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts) 
     for (int cx = 0; cx < n.sx; ++cx) {
       real px = real(i) + (real(cx) + pcg32_uniform(rng)) / real(n.sx);
       real py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(n.sy);
-      for (int q = 0; q < times.count; ++q) sum += sample_weights(waves, f, px, py, times.dt[q]);
+      for (int q = 0; q < times.count; ++q)
+        sum += sample_weights(waves, f, px, py, times.dt[q]);
     }
   }
   return sum / (real(times.count) * real(n.sx) * real(n.sy));

@@ -26,7 +26,6 @@
 // tends to the fraction of the path inside the disk: the transition to step 3 is
 // continuous (Fig. 11).
 
-
 // What the pass over the waves gathers for one pixel.
 struct StaaSums {
   PathGradients path;  // the resolved waves' gradients at the instants
@@ -49,9 +48,10 @@ SG_FN StaaSums staa_sums_zero(int K) {
   return s;
 }
 
-// The one pass over the waves (step 2).
-SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
-                              IN(Footprint) fp) {
+// The one pass over the waves (step 2): the definition; the CPU engine's vectorised
+// equivalent under SG_CPU_WAVE_SUMS (kernel/cpu/wave_sums.h), tested equal to it.
+SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
+                             IN(Footprint) fp) {
   StaaSums sums = staa_sums_zero(f.segments);
   mat2 J = footprint_xz_jacobian(fp);
   real det = determinant(J);
@@ -64,7 +64,8 @@ SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) 
     real theta = wave_phase(w, fp.point.x, fp.point.z, 0.0);
     real s = sin(theta);
     real c = cos(theta);
-    real alpha = alias_fraction(projected_frequency(k, J, p.nyquist_max), p.alias_start, p.alias_end);
+    real alpha =
+        alias_fraction(projected_frequency(k, J, p.nyquist_max), p.alias_start, p.alias_end);
     real D = det != 0.0 ? footprint_half_width(k, Jinv) : 0.0;
     if (curvature) {
       // Where the linearisation breaks: a resolved wave of phase half-width D has a slope
@@ -90,7 +91,14 @@ SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) 
   return sums;
 }
 
-
+#ifdef SG_CPU_WAVE_SUMS
+StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp);
+#else
+SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
+                              IN(Footprint) fp) {
+  return wave_sum_staa(waves, f, p, fp);
+}
+#endif
 
 SG_FN StaaResult staa_result_miss() {
   StaaResult r;
@@ -106,6 +114,19 @@ SG_FN StaaResult staa_result_miss() {
   r.sky_y = 1.0;
   r.exact_D = mat2(0.0);
   return r;
+}
+
+// The least |p . axis| over the path's centres p(t): its valid sub-segments (p moves
+// linearly along each) and its last instant.
+SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
+  real m = abs(dot(path.centre[K], axis));
+  for (int k = 0; k < K; ++k) {
+    if (!(path.valid[k] && path.valid[k + 1])) continue;
+    real a = dot(path.centre[k], axis);
+    real b = dot(path.centre[k + 1], axis);
+    m = min(m, a * b <= 0.0 ? 0.0 : min(abs(a), abs(b)));
+  }
+  return m;
 }
 
 // Steps 3 to 5 from the sums.
@@ -201,9 +222,17 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     res.weights = combine_weights(f, res.fresnel, res.in_light, res.below, res.sky_y);
     return res;
   }
+  // The same in the RDF's principal frame: when the disk's extent along the minor (major)
+  // axis stays further than 12 minor (major) standard deviations from the centre along
+  // the whole path, the mass is at most the 1D tail beyond 12 deviations, 1.8e-33. An
+  // elongated RDF (one dominant aliasing wave, or the footprint term alone) is culled
+  // here where the round bound above cannot.
+  vec2 minor_axis = vec2(-ax.u.y, ax.u.x);
+  real min_minor = path_min_abs_projection(path, K, minor_axis);
+  real min_major = path_min_abs_projection(path, K, ax.u);
   real threshold = p.elongation_threshold > 0.0 ? p.elongation_threshold
-                   : p.kernels > 1             ? real(p.kernels)
-                                               : kRealMax;
+                   : p.kernels > 1              ? real(p.kernels)
+                                                : kRealMax;
   // Below these the RDF is a point, or a line, at the precision's resolution.
   real point_sigma = kDoublePrecision ? 1e-9 : 1e-5;
   real line_sigma = kDoublePrecision ? 1e-12 : 1e-6;
@@ -214,7 +243,8 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     // A vanishing RDF: the fraction of the path inside the disk.
     for (int k = 0; k < K; ++k) {
       if (path.valid[k] && path.valid[k + 1]) {
-        in_light += path_average(table_f, table_s, tinfo, path.centre[k], path.centre[k + 1], 0.0, R);
+        in_light +=
+            path_average(table_f, table_s, tinfo, path.centre[k], path.centre[k + 1], 0.0, R);
       }
     }
     in_light *= inv_k;
@@ -224,9 +254,12 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     // of the width of the mass-versus-position bump (disk radius + RDF spread along the
     // path), at most 32 per sub-segment.
     res.fallback = true;
-    if (!p.fallback_along_path) {
-      in_light = p.fallback_riemann ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
-                                    : gaussian_disk_mass(path.centre[K], cov_r, R);
+    if (min_minor > R + 12.0 * ax.s2 || min_major > R + 12.0 * ax.s1) {
+      in_light = 0.0;
+    } else if (!p.fallback_along_path) {
+      in_light = p.fallback_riemann
+                     ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
+                     : gaussian_disk_mass(path.centre[K], cov_r, R);
     } else {
       for (int k = 0; k < K; ++k) {
         if (!(path.valid[k] && path.valid[k + 1])) continue;
@@ -247,7 +280,16 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     }
   } else {
     KernelSet ks = elliptical_kernels(fits, finfo, p.kernels, ax.s2, ax.s1);
+    // The principal-frame cull for the kernels: circles of at most the largest kernel's
+    // deviation, offset along the major axis by at most the largest offset.
+    real sigma_max = 0.0;
+    real offset_max = 0.0;
     for (int q = 0; q < ks.count; ++q) {
+      sigma_max = max(sigma_max, ks.sigma[q]);
+      offset_max = max(offset_max, abs(ks.offset[q]));
+    }
+    bool culled = min_minor > R + 12.0 * sigma_max || min_major > R + offset_max + 12.0 * sigma_max;
+    for (int q = 0; q < ks.count && !culled; ++q) {
       vec2 offset = ks.offset[q] * ax.u;
       real along = 0.0;
       for (int k = 0; k < K; ++k) {

@@ -44,7 +44,10 @@ SG_FN real wave_phase(IN(Wave) w, real x, real z, real dt) {
   return wrap_angle(w.a * x + w.b * z + w.theta0 + w.c * dt);
 }
 
-SG_FN real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
+// The sums over the waves at one point and time: the definitions. The CPU engine replaces
+// the two that every method calls by vectorised equivalents (SG_CPU_WAVE_SUMS below;
+// kernel/cpu/wave_sums.h), tested equal to these.
+SG_FN real wave_sum_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
   real h = 0.0;
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
@@ -54,7 +57,7 @@ SG_FN real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real 
 }
 
 // (dh/dx, dh/dz)
-SG_FN vec2 water_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
+SG_FN vec2 wave_sum_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
   vec2 g = vec2(0.0);
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
@@ -63,6 +66,18 @@ SG_FN vec2 water_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, rea
   }
   return g;
 }
+
+#ifdef SG_CPU_WAVE_SUMS
+real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
+vec2 water_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
+#else
+SG_FN real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
+  return wave_sum_height(waves, f, x, z, dt);
+}
+SG_FN vec2 water_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
+  return wave_sum_gradient(waves, f, x, z, dt);
+}
+#endif
 
 // The unnormalised normal (-dh/dx, 1, -dh/dz) of the scene spec for gradient g.
 SG_FN vec3 normal_direction(vec2 g) {

@@ -17,8 +17,8 @@ void KernelFrameInputs::build(const FrameContext& ctx) {
 }
 
 bool KernelFrameInputs::current(const FrameContext& ctx) const {
-  return built_ && model_ == ctx.model.id && frame_ == ctx.time.frame &&
-         start_ == ctx.time.start && end_ == ctx.time.end && seed_ == ctx.seed;
+  return built_ && model_ == ctx.model.id && frame_ == ctx.time.frame && start_ == ctx.time.start &&
+         end_ == ctx.time.end && seed_ == ctx.seed;
 }
 
 void KernelFrameInputs::check(const FrameContext& ctx) const {

@@ -12,7 +12,7 @@ RadianceWeights stratified_pixel(const KernelFrameInputs& in, int i, int j,
     kf::SampleCounts nf;
     nf.sx = n.sx;
     nf.sy = n.sy;
-    nf.st = n.st;
+    nf.nt = n.nt;
     nf.time_at_frame = n.time_at_frame;
     return to_weights(kf::float_stratified_pixel(wave_buffer(in.f()), in.f().frame, nf, i, j));
   }

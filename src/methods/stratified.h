@@ -22,7 +22,7 @@ inline kd::SampleCounts kernel_sample_counts(const StratifiedSettings& s) {
   kd::SampleCounts n;
   n.sx = s.samples.sx;
   n.sy = s.samples.sy;
-  n.st = s.samples.st;
+  n.nt = s.samples.st;
   n.time_at_frame = s.time_at_frame;
   return n;
 }

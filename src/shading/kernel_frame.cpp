@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "base/error.h"
+#include "kernel/cpu/wave_sums.h"
 
 namespace sg {
 namespace {
@@ -74,25 +75,41 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
   });
   const int stride = f.wave_stride;
   out.texels.assign(static_cast<size_t>(n) * stride, V4(0));
+  // The arrays are padded with waves of amplitude 0 to a multiple of the widest vector.
+  const int lanes = wave_simd::kLanePadding;
+  const int np = (n + lanes - 1) / lanes * lanes;
+  for (auto* v : {&out.A, &out.a, &out.b, &out.theta0, &out.c, &out.slope})
+    v->assign(np, R(0));
+  out.rot_c.assign(static_cast<size_t>(np) * segments, R(0));
+  out.rot_s.assign(static_cast<size_t>(np) * segments, R(0));
   const double xc = c.position().x, zc = c.position().z, t = ft.end;
   for (int q = 0; q < n; ++q) {
     const int i = out.order[q];
     const double k = std::hypot(w.a[i], w.b[i]);
-    const double theta0 = reduce_angle(w.a[i] * xc + w.b[i] * zc + reduce_angle(w.c[i] * t) +
-                                       reduce_angle(w.phi[i]));
+    const double theta0 =
+        reduce_angle(w.a[i] * xc + w.b[i] * zc + reduce_angle(w.c[i] * t) + reduce_angle(w.phi[i]));
     V4* tx = &out.texels[static_cast<size_t>(q) * stride];
     tx[0] = V4(R(w.A[i]), R(w.a[i]), R(w.b[i]), R(theta0));
     tx[1] = V4(R(w.c[i]), R(k), R(w.A[i] * k), 0);
+    out.A[q] = tx[0].x;
+    out.a[q] = tx[0].y;
+    out.b[q] = tx[0].z;
+    out.theta0[q] = tx[0].w;
+    out.c[q] = tx[1].x;
+    out.slope[q] = tx[1].z;
     for (int s = 0; s < segments; ++s) {
       const double delta = reduce_angle(w.c[i] * (ft.duration() * (segments - s) / segments));
       V4& r = tx[2 + s / 2];
+      const R rc = R(std::cos(delta)), rs = R(std::sin(delta));
       if (s % 2 == 0) {
-        r.x = R(std::cos(delta));
-        r.y = R(std::sin(delta));
+        r.x = rc;
+        r.y = rs;
       } else {
-        r.z = R(std::cos(delta));
-        r.w = R(std::sin(delta));
+        r.z = rc;
+        r.w = rs;
       }
+      out.rot_c[static_cast<size_t>(s) * np + q] = rc;
+      out.rot_s[static_cast<size_t>(s) * np + q] = rs;
     }
   }
 }

@@ -27,9 +27,26 @@ namespace sg {
 
 template <class Frame, class Vec4>
 struct KernelInputs {
+  using Real = decltype(Frame{}.duration);
   Frame frame{};
   std::vector<Vec4> texels;  // the wave buffer (kernel/waves.glsl: layout)
   std::vector<int> order;    // file index of the wave at each position of the buffer
+  // The same waves as arrays (the CPU engine's vectorised sums): amplitude, wave vector,
+  // phase at the display time, angular frequency, slope amplitude; rotations [k][wave].
+  std::vector<Real> A, a, b, theta0, c, slope, rot_c, rot_s;
+  wave_simd::Arrays<Real> arrays() const {
+    wave_simd::Arrays<Real> w;
+    w.A = A.data();
+    w.a = a.data();
+    w.b = b.data();
+    w.theta0 = theta0.data();
+    w.c = c.data();
+    w.slope = slope.data();
+    w.rot_c = rot_c.data();
+    w.rot_s = rot_s.data();
+    w.count = static_cast<int>(A.size());
+    return w;
+  }
 };
 using KernelInputsD = KernelInputs<kd::Frame, kd::vec4>;
 using KernelInputsF = KernelInputs<kf::Frame, kf::vec4>;
@@ -55,11 +72,15 @@ void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments,
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsF& out);
 
-inline kd::WaveBuffer wave_buffer(const KernelInputsD& in) {
-  return kd::WaveBuffer{in.texels.data(), static_cast<int>(in.texels.size())};
+// The wave buffer of `in` for the kernel; `vectorised`: with the arrays, so that the CPU
+// engine's vectorised sums run (else the kernel's own loops, the definitions).
+inline kd::WaveBuffer wave_buffer(const KernelInputsD& in, bool vectorised = true) {
+  return kd::WaveBuffer{in.texels.data(), static_cast<int>(in.texels.size()),
+                        vectorised ? in.arrays() : wave_simd::Arrays<double>{}};
 }
-inline kf::WaveBuffer wave_buffer(const KernelInputsF& in) {
-  return kf::WaveBuffer{in.texels.data(), static_cast<int>(in.texels.size())};
+inline kf::WaveBuffer wave_buffer(const KernelInputsF& in, bool vectorised = true) {
+  return kf::WaveBuffer{in.texels.data(), static_cast<int>(in.texels.size()),
+                        vectorised ? in.arrays() : wave_simd::Arrays<float>{}};
 }
 
 // A host point (world coordinates) in the kernel's camera-relative coordinates, and back.

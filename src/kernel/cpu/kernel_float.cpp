@@ -3,9 +3,14 @@
 // nothing but glm and the kernel, whose literals are then floats, as in GLSL.
 #include "kernel/kernel_float.h"
 
+#include "kernel/cpu/wave_sums.h"
+
 namespace sg::kf {
 
+#define SG_CPU_WAVE_SUMS
 #include "kernel/kernel.glsl"
+#undef SG_CPU_WAVE_SUMS
+#include "kernel/cpu/wave_sums_hooks.inc"
 
 vec4 float_point_pixel(const WaveBuffer& waves, const Frame& f, int i, int j) {
   return point_pixel(waves, f, i, j);
@@ -25,6 +30,12 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
 }
 real float_erfc(real x) {
   return erfc(x);
+}
+real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z, real dt) {
+  return water_height(waves, f, x, z, dt);
+}
+vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt) {
+  return water_gradient(waves, f, x, z, dt);
 }
 
 }  // namespace sg::kf

@@ -1,0 +1,274 @@
+// The CPU engine's vectorised sums over the waves (kernel/cpu/wave_sums.h): each function
+// is the kernel loop named beside it, with the waves in SIMD lanes.
+#include "kernel/cpu/wave_sums.h"
+
+#include <cstdint>
+
+// Highway's per-target compilation: this file is included once per instruction set. The
+// order of these lines matters, so they are kept out of clang-format's include sorting.
+// clang-format off
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "kernel/cpu/wave_sums.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+#include <hwy/contrib/math/math-inl.h>
+// clang-format on
+
+HWY_BEFORE_NAMESPACE();
+namespace sg::wave_simd {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// kernel/special.glsl, wrap_angle: x - 2 pi round(x / 2 pi), 2 pi split Cody-Waite style.
+template <class D, class V>
+HWY_INLINE V Wrap(D d, V x) {
+  using T = hn::TFromD<D>;
+  const V k = hn::Floor(hn::MulAdd(x, hn::Set(d, T(0.15915494309189533577)), hn::Set(d, T(0.5))));
+  const V r = hn::NegMulAdd(k, hn::Set(d, T(6.28125)), x);
+  return hn::NegMulAdd(k, hn::Set(d, T(0.0019353071795864769252867665590)), r);
+}
+
+// The phase a x + b z + theta0 + c dt (kernel/waves.glsl, wave_phase), wrapped.
+template <class D, class V>
+HWY_INLINE V Phase(D d, const V a, const V b, const V theta0, const V c, V x, V z, V dt) {
+  return Wrap(d, hn::MulAdd(c, dt, hn::Add(hn::MulAdd(a, x, hn::Mul(b, z)), theta0)));
+}
+
+template <class T>
+T HeightT(const Arrays<T>& w, T x0, T z0, T dt0) {
+  const hn::ScalableTag<T> d;
+  const size_t N = hn::Lanes(d);
+  const auto x = hn::Set(d, x0), z = hn::Set(d, z0), dt = hn::Set(d, dt0);
+  auto h = hn::Zero(d);
+  for (size_t i = 0; i < size_t(w.count); i += N) {
+    const auto th = Phase(d, hn::LoadU(d, w.a + i), hn::LoadU(d, w.b + i),
+                          hn::LoadU(d, w.theta0 + i), hn::LoadU(d, w.c + i), x, z, dt);
+    h = hn::MulAdd(hn::LoadU(d, w.A + i), hn::Sin(d, th), h);
+  }
+  return hn::GetLane(hn::SumOfLanes(d, h));
+}
+
+template <class T>
+void GradientT(const Arrays<T>& w, T x0, T z0, T dt0, T& gx0, T& gz0) {
+  const hn::ScalableTag<T> d;
+  const size_t N = hn::Lanes(d);
+  const auto x = hn::Set(d, x0), z = hn::Set(d, z0), dt = hn::Set(d, dt0);
+  auto gx = hn::Zero(d), gz = hn::Zero(d);
+  for (size_t i = 0; i < size_t(w.count); i += N) {
+    const auto a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i);
+    const auto th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), hn::LoadU(d, w.c + i), x, z, dt);
+    const auto k = hn::Mul(hn::LoadU(d, w.A + i), hn::Cos(d, th));
+    gx = hn::MulAdd(k, a, gx);
+    gz = hn::MulAdd(k, b, gz);
+  }
+  gx0 = hn::GetLane(hn::SumOfLanes(d, gx));
+  gz0 = hn::GetLane(hn::SumOfLanes(d, gz));
+}
+
+// kernel/reflection_path.glsl, path_gradients_add: the display time's gradient and, by
+// cos(theta - c dt) = cos(theta) cos(c dt) + sin(theta) sin(c dt), the others'.
+template <class T>
+void PathT(const Arrays<T>& w, T x0, T z0, int K, T* gx_out, T* gz_out) {
+  const hn::ScalableTag<T> d;
+  const size_t N = hn::Lanes(d);
+  const auto x = hn::Set(d, x0), z = hn::Set(d, z0), zero = hn::Zero(d);
+  decltype(hn::Zero(d)) gx[kMaxInstants], gz[kMaxInstants];
+  for (int k = 0; k <= K; ++k)
+    gx[k] = gz[k] = hn::Zero(d);
+  const size_t n = size_t(w.count);
+  for (size_t i = 0; i < n; i += N) {
+    const auto a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i);
+    const auto th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), zero, x, z, zero);
+    const auto A = hn::LoadU(d, w.A + i);
+    const auto s = hn::Sin(d, th), c = hn::Cos(d, th);
+    const auto Ac = hn::Mul(A, c);
+    gx[K] = hn::MulAdd(Ac, a, gx[K]);
+    gz[K] = hn::MulAdd(Ac, b, gz[K]);
+    for (int k = 0; k < K; ++k) {
+      const auto ck = hn::MulAdd(c, hn::LoadU(d, w.rot_c + k * n + i),
+                                 hn::Mul(s, hn::LoadU(d, w.rot_s + k * n + i)));
+      const auto Ack = hn::Mul(A, ck);
+      gx[k] = hn::MulAdd(Ack, a, gx[k]);
+      gz[k] = hn::MulAdd(Ack, b, gz[k]);
+    }
+  }
+  for (int k = 0; k <= K; ++k) {
+    gx_out[k] = hn::GetLane(hn::SumOfLanes(d, gx[k]));
+    gz_out[k] = hn::GetLane(hn::SumOfLanes(d, gz[k]));
+  }
+}
+
+// kernel/staa.glsl, wave_sum_staa: Eq. 20's split, the resolved waves' path and Hessian
+// and the aliasing waves' NDF (kernel/ndf.glsl), in one pass.
+template <class T>
+void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
+  const hn::ScalableTag<T> d;
+  using V = decltype(hn::Zero(d));
+  const size_t N = hn::Lanes(d);
+  const int K = in.segments;
+  const V zero = hn::Zero(d), one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
+  const V x = hn::Set(d, in.x), z = hn::Set(d, in.z);
+  const V j00 = hn::Set(d, in.j00), j01 = hn::Set(d, in.j01), j10 = hn::Set(d, in.j10),
+          j11 = hn::Set(d, in.j11);
+  const V i00 = hn::Set(d, in.i00), i01 = hn::Set(d, in.i01), i10 = hn::Set(d, in.i10),
+          i11 = hn::Set(d, in.i11);
+  const V start = hn::Set(d, in.alias_start);
+  const V width = hn::Set(d, in.alias_end - in.alias_start);
+  const V inv_two_pi = hn::Set(d, T(0.15915494309189533577));
+  const V limit = hn::Set(d, in.limit);
+  V gx[kMaxInstants], gz[kMaxInstants];
+  for (int k = 0; k <= K; ++k)
+    gx[k] = gz[k] = zero;
+  V hxx = zero, hxz = zero, hzz = zero, mx = zero, mz = zero, cxx = zero, cxz = zero, czz = zero,
+    any = zero;
+  const size_t n = size_t(w.count);
+  for (size_t i = 0; i < n; i += N) {
+    const V a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i), A = hn::LoadU(d, w.A + i);
+    const V th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), zero, x, z, zero);
+    const V s = hn::Sin(d, th), c = hn::Cos(d, th);
+    // kernel/aliasing.glsl: the projected frequency and Eq. 20.
+    const V fx = hn::Abs(hn::MulAdd(a, j00, hn::Mul(b, j01)));
+    const V fy = hn::Abs(hn::MulAdd(a, j10, hn::Mul(b, j11)));
+    const V rad = in.max_norm ? hn::Max(fx, fy) : hn::Sqrt(hn::MulAdd(fx, fx, hn::Mul(fy, fy)));
+    V alpha = hn::Min(one, hn::Max(zero, hn::Div(hn::Sub(hn::Mul(rad, inv_two_pi), start), width)));
+    // kernel/ndf.glsl, footprint_half_width.
+    const V kk = hn::MulAdd(a, a, hn::Mul(b, b));
+    V D = zero;
+    if (in.invertible) {
+      const V qx = hn::Abs(hn::MulAdd(i00, a, hn::Mul(i10, b)));
+      const V qy = hn::Abs(hn::MulAdd(i01, a, hn::Mul(i11, b)));
+      D = hn::Div(hn::Mul(half, kk), hn::Max(hn::Max(qx, qy), hn::Set(d, T(1e-30))));
+    }
+    if (in.curvature) {
+      const V dev = hn::Mul(hn::Mul(hn::LoadU(d, w.slope + i), D), D);
+      alpha = hn::Max(alpha, hn::Min(one, hn::Max(zero, hn::Sub(hn::Div(dev, limit), one))));
+    }
+    const V resolved = hn::Mul(hn::Sub(one, alpha), A);
+    const V rc = hn::Mul(resolved, c);
+    gx[K] = hn::MulAdd(rc, a, gx[K]);
+    gz[K] = hn::MulAdd(rc, b, gz[K]);
+    for (int k = 0; k < K; ++k) {
+      const V ck = hn::MulAdd(c, hn::LoadU(d, w.rot_c + k * n + i),
+                              hn::Mul(s, hn::LoadU(d, w.rot_s + k * n + i)));
+      const V rk = hn::Mul(resolved, ck);
+      gx[k] = hn::MulAdd(rk, a, gx[k]);
+      gz[k] = hn::MulAdd(rk, b, gz[k]);
+    }
+    const V rs = hn::Mul(resolved, s);
+    hxx = hn::NegMulAdd(rs, hn::Mul(a, a), hxx);
+    hxz = hn::NegMulAdd(rs, hn::Mul(a, b), hxz);
+    hzz = hn::NegMulAdd(rs, hn::Mul(b, b), hzz);
+    const V aliasing = hn::Mul(alpha, A);
+    if (hn::AllFalse(d, hn::Gt(aliasing, zero))) continue;
+    any = hn::Add(any, aliasing);
+    V v;  // the wave's variance factor: J - K^2 (per pixel) or A^2 / 2 (uniform)
+    if (in.per_pixel) {
+      // kernel/ndf.glsl, wave_moment_factors (Eqs. 23-24).
+      const V sd = hn::Sin(d, D), cd = hn::Cos(d, D);
+      const auto small = hn::Lt(D, hn::Set(d, T(1e-4)));
+      const V inv_d = hn::Div(one, hn::Max(D, hn::Set(d, T(1e-4))));
+      const V D2 = hn::Mul(D, D);
+      const V sinc1 = hn::IfThenElse(small, hn::NegMulAdd(D2, hn::Set(d, T(1.0 / 6.0)), one),
+                                     hn::Mul(sd, inv_d));
+      const V sinc2 = hn::IfThenElse(small, hn::NegMulAdd(D2, hn::Set(d, T(2.0 / 3.0)), one),
+                                     hn::Mul(hn::Mul(sd, cd), inv_d));
+      const V cos_2t = hn::MulSub(hn::Add(c, c), c, one);
+      const V Kf = hn::Mul(hn::Mul(aliasing, c), sinc1);
+      const V Jf =
+          hn::Mul(hn::Mul(hn::Mul(half, aliasing), aliasing), hn::MulAdd(cos_2t, sinc2, one));
+      mx = hn::NegMulAdd(Kf, a, mx);
+      mz = hn::NegMulAdd(Kf, b, mz);
+      v = hn::NegMulAdd(Kf, Kf, Jf);
+    } else {
+      v = hn::Mul(hn::Mul(half, aliasing), aliasing);
+    }
+    cxx = hn::MulAdd(v, hn::Mul(a, a), cxx);
+    cxz = hn::MulAdd(v, hn::Mul(a, b), cxz);
+    czz = hn::MulAdd(v, hn::Mul(b, b), czz);
+  }
+  auto sum = [&](V v) { return hn::GetLane(hn::SumOfLanes(d, v)); };
+  for (int k = 0; k <= K; ++k) {
+    out.gx[k] = sum(gx[k]);
+    out.gz[k] = sum(gz[k]);
+  }
+  out.hxx = sum(hxx);
+  out.hxz = sum(hxz);
+  out.hzz = sum(hzz);
+  out.mx = sum(mx);
+  out.mz = sum(mz);
+  out.cxx = sum(cxx);
+  out.cxz = sum(cxz);
+  out.czz = sum(czz);
+  out.any = sum(any) > T(0);
+}
+
+double HeightD(const Arrays<double>& w, double x, double z, double dt) {
+  return HeightT(w, x, z, dt);
+}
+float HeightF(const Arrays<float>& w, float x, float z, float dt) {
+  return HeightT(w, x, z, dt);
+}
+void GradientD(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz) {
+  GradientT(w, x, z, dt, gx, gz);
+}
+void GradientF(const Arrays<float>& w, float x, float z, float dt, float& gx, float& gz) {
+  GradientT(w, x, z, dt, gx, gz);
+}
+void PathD(const Arrays<double>& w, double x, double z, int K, double* gx, double* gz) {
+  PathT(w, x, z, K, gx, gz);
+}
+void PathF(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz) {
+  PathT(w, x, z, K, gx, gz);
+}
+void StaaD(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out) {
+  StaaT(w, in, out);
+}
+void StaaF(const Arrays<float>& w, const StaaPassIn<float>& in, StaaPassOut<float>& out) {
+  StaaT(w, in, out);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace sg::wave_simd
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace sg::wave_simd {
+HWY_EXPORT(HeightD);
+HWY_EXPORT(HeightF);
+HWY_EXPORT(GradientD);
+HWY_EXPORT(GradientF);
+HWY_EXPORT(PathD);
+HWY_EXPORT(PathF);
+HWY_EXPORT(StaaD);
+HWY_EXPORT(StaaF);
+
+double height(const Arrays<double>& w, double x, double z, double dt) {
+  return HWY_DYNAMIC_DISPATCH(HeightD)(w, x, z, dt);
+}
+float height(const Arrays<float>& w, float x, float z, float dt) {
+  return HWY_DYNAMIC_DISPATCH(HeightF)(w, x, z, dt);
+}
+void gradient(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz) {
+  HWY_DYNAMIC_DISPATCH(GradientD)(w, x, z, dt, gx, gz);
+}
+void gradient(const Arrays<float>& w, float x, float z, float dt, float& gx, float& gz) {
+  HWY_DYNAMIC_DISPATCH(GradientF)(w, x, z, dt, gx, gz);
+}
+void path(const Arrays<double>& w, double x, double z, int K, double* gx, double* gz) {
+  HWY_DYNAMIC_DISPATCH(PathD)(w, x, z, K, gx, gz);
+}
+void path(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz) {
+  HWY_DYNAMIC_DISPATCH(PathF)(w, x, z, K, gx, gz);
+}
+void staa_pass(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out) {
+  HWY_DYNAMIC_DISPATCH(StaaD)(w, in, out);
+}
+void staa_pass(const Arrays<float>& w, const StaaPassIn<float>& in, StaaPassOut<float>& out) {
+  HWY_DYNAMIC_DISPATCH(StaaF)(w, in, out);
+}
+const char* target() {
+  const int64_t targets = hwy::SupportedTargets() & HWY_TARGETS;
+  return targets ? hwy::TargetName(targets & -targets) : "none";
+}
+}  // namespace sg::wave_simd
+#endif

@@ -1,0 +1,58 @@
+// The CPU engine's vectorised sums over the waves: the same arithmetic as the kernel's
+// loops (kernel/waves.glsl, wave_sum_height and wave_sum_gradient;
+// kernel/reflection_path.glsl, wave_sum_path; kernel/staa.glsl, wave_sum_staa), run across
+// the waves in SIMD lanes with Highway (sine and cosine: Highway's contrib math, 3 ULP)
+// and dispatched at run time to the host's widest instruction set. The kernel's loops are
+// the definition; kernel_wave_sums_test holds these equal to them (they differ only in
+// rounding: the order of the sums and the sine's last bits).
+//
+// The kernel reaches them through its SG_CPU_WAVE_SUMS hooks (kernel/cpu/kernel_double.cpp,
+// kernel/cpu/kernel_float.cpp); this interface has plain numbers only. The arrays are
+// padded to a multiple of kLanePadding with waves of amplitude 0 (shading/kernel_frame.h),
+// so the vectors need no tail.
+#pragma once
+
+#include "kernel/cpp_prelude.h"
+
+namespace sg::wave_simd {
+
+inline constexpr int kLanePadding = 16;
+inline constexpr int kMaxInstants = SG_MAX_SEGMENTS + 1;
+
+template <class T>
+struct StaaPassIn {
+  T x = 0, z = 0;                        // the point (camera-relative)
+  T j00 = 0, j01 = 0, j10 = 0, j11 = 0;  // the footprint's Jacobian J, column-major
+  T i00 = 0, i01 = 0, i10 = 0, i11 = 0;  // its inverse (0 when J is singular)
+  bool invertible = false;
+  T alias_start = 0, alias_end = 1;
+  bool max_norm = true;
+  bool per_pixel = true;
+  bool curvature = false;
+  T limit = 0;  // curvature limit times the light's radius
+  int segments = 1;
+};
+
+template <class T>
+struct StaaPassOut {
+  T gx[kMaxInstants], gz[kMaxInstants];  // resolved gradients at the instants
+  T hxx = 0, hxz = 0, hzz = 0;           // resolved Hessian
+  T mx = 0, mz = 0;                      // NDF mean
+  T cxx = 0, cxz = 0, czz = 0;           // NDF covariance
+  bool any = false;
+};
+
+double height(const Arrays<double>& w, double x, double z, double dt);
+float height(const Arrays<float>& w, float x, float z, float dt);
+void gradient(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz);
+void gradient(const Arrays<float>& w, float x, float z, float dt, float& gx, float& gz);
+// The gradients at the K + 1 instants of a path (every wave at full amplitude).
+void path(const Arrays<double>& w, double x, double z, int segments, double* gx, double* gz);
+void path(const Arrays<float>& w, float x, float z, int segments, float* gx, float* gz);
+void staa_pass(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out);
+void staa_pass(const Arrays<float>& w, const StaaPassIn<float>& in, StaaPassOut<float>& out);
+
+// The instruction set the sums run on, as Highway names it ("AVX3", "AVX2", ...).
+const char* target();
+
+}  // namespace sg::wave_simd

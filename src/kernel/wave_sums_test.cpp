@@ -1,0 +1,187 @@
+// The CPU engine's vectorised sums over the waves (kernel/cpu/wave_sums.h) against the
+// kernel's loops, the definitions (kernel/waves.glsl, reflection_path.glsl, staa.glsl), in
+// double and float, and the kernel methods with and without them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "kernel/kernel_float.h"
+#include "math/rng.h"
+#include "shading/kernel_frame.h"
+#include "shading/kernel_table.h"
+#include "shading/path_table.h"
+#include "testing/testing.h"
+
+namespace sg {
+namespace {
+
+Scene random_waves_scene(int n, uint64_t seed) {
+  Pcg32 rng(seed, 3);
+  std::vector<Wave> waves;
+  for (int i = 0; i < n; ++i) {
+    const double k = 0.2 * std::pow(100.0, rng.uniform()), dir = kTwoPi * rng.uniform();
+    waves.push_back(Wave{0.3 / k / std::sqrt(double(n)) * rng.uniform(),
+                         {k * std::cos(dir), k * std::sin(dir)},
+                         std::sqrt(9.81 * k),
+                         kTwoPi * rng.uniform()});
+  }
+  Scene s = testing::small_scene(waves, 160, 90);
+  s.camera.position = vec3(13.7, 3.1, -2.2);  // not at the origin: camera-relative data
+  s.animation.t0 = 1234.5;
+  return s;
+}
+
+// What rounding the phases carry at camera-relative (x, z): 8 rounding units of the
+// largest |a x| + |b z| + pi, the phase before its reduction, plus the sine's few units.
+double phase_rounding(const Scene& s, double x, double z, double eps) {
+  double big = 0;
+  for (const Wave& w : s.surface.waves)
+    big = std::max(big, std::fabs(w.wave_vector.x * x) + std::fabs(w.wave_vector.y * z) + kPi);
+  return 8 * eps * big;
+}
+
+TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
+  for (int n : {1, 5, 16, 17, 64, 100}) {
+    const Scene s = random_waves_scene(n, 11 + n);
+    const SceneModel m(s);
+    KernelInputsD in;
+    build_kernel_inputs(m, frame_time(s, 3), 3, 0, in);
+    const kd::WaveBuffer simd = wave_buffer(in, true), loop = wave_buffer(in, false);
+    const kd::Frame& f = in.frame;
+    double hscale = 0, gscale = 0, kscale = 0;
+    for (const Wave& w : s.surface.waves) {
+      hscale += w.amplitude;
+      gscale += w.amplitude * length(w.wave_vector);
+      kscale = std::max(kscale, length(w.wave_vector));
+    }
+    Pcg32 rng(n, 5);
+    for (int q = 0; q < 50; ++q) {
+      const double x = 200 * (rng.uniform() - 0.5), z = -300 * rng.uniform(),
+                   dt = -0.03 * rng.uniform();
+      // The sums round each phase a x + b z + theta0 in another order (fused multiply-adds):
+      // they agree to the phase's rounding times the amplitudes.
+      const double tol = phase_rounding(s, x, z, 1.1e-16);
+      EXPECT_NEAR(kd::water_height(simd, f, x, z, dt), kd::water_height(loop, f, x, z, dt),
+                  tol * hscale);
+      const vec2 g = kd::water_gradient(simd, f, x, z, dt),
+                 h = kd::water_gradient(loop, f, x, z, dt);
+      EXPECT_NEAR(g.x, h.x, tol * gscale);
+      EXPECT_NEAR(g.y, h.y, tol * gscale);
+      const kd::PathGradients p = kd::path_gradients(simd, f, vec3(x, 0, z)),
+                              r = kd::path_gradients(loop, f, vec3(x, 0, z));
+      for (int k = 0; k <= f.segments; ++k) {
+        EXPECT_NEAR(p.g[k].x, r.g[k].x, tol * gscale) << k;
+        EXPECT_NEAR(p.g[k].y, r.g[k].y, tol * gscale) << k;
+      }
+    }
+    // The staa pass at pixel footprints, with each NDF and with the curvature limit.
+    for (int variant = 0; variant < 3; ++variant) {
+      kd::StaaParams p{};
+      p.per_pixel_ndf = variant != 1;
+      p.alias_start = 0.3;
+      p.alias_end = 0.8;
+      p.nyquist_max = variant != 2;
+      p.footprint = 1;
+      p.curvature_limit = variant == 2 ? 1.0 : 0.0;
+      int aliasing = 0;
+      for (int j = 0; j < s.height; j += 7) {
+        for (int i = 0; i < s.width; i += 13) {
+          const kd::Footprint fp = kd::pixel_footprint(simd, f, i + 0.5, j + 0.5, 0.0, false);
+          if (!fp.hit) continue;
+          const kd::StaaSums a = kd::staa_wave_pass(simd, f, p, fp),
+                             b = kd::staa_wave_pass(loop, f, p, fp);
+          const double tol = phase_rounding(s, fp.point.x, fp.point.z, 1.1e-16);
+          ASSERT_EQ(a.any_alias, b.any_alias) << i << "," << j;
+          aliasing += a.any_alias;
+          for (int k = 0; k <= f.segments; ++k) {
+            EXPECT_NEAR(a.path.g[k].x, b.path.g[k].x, tol * gscale);
+            EXPECT_NEAR(a.path.g[k].y, b.path.g[k].y, tol * gscale);
+          }
+          for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(a.hess[c], b.hess[c], tol * kscale * gscale) << c;
+            EXPECT_NEAR(a.ndf.cov[c], b.ndf.cov[c], tol * gscale * gscale) << c;
+          }
+          EXPECT_NEAR(a.ndf.mean.x, b.ndf.mean.x, tol * gscale);
+          EXPECT_NEAR(a.ndf.mean.y, b.ndf.mean.y, tol * gscale);
+        }
+      }
+      if (n >= 16) {
+        EXPECT_GT(aliasing, 0) << "the test must see aliasing waves";
+      }
+    }
+  }
+}
+
+TEST(KernelWaveSums, VectorisedFloatSumsEqualTheFloatKernelLoops) {
+  const Scene s = random_waves_scene(64, 3);
+  const SceneModel m(s);
+  KernelInputsF in;
+  build_kernel_inputs(m, frame_time(s, 3), 1, 0, in);
+  const kf::WaveBuffer simd = wave_buffer(in, true), loop = wave_buffer(in, false);
+  double hscale = 0, gscale = 0;
+  for (const Wave& w : s.surface.waves) {
+    hscale += w.amplitude;
+    gscale += w.amplitude * length(w.wave_vector);
+  }
+  Pcg32 rng(9, 5);
+  for (int q = 0; q < 200; ++q) {
+    const float x = float(200 * (rng.uniform() - 0.5)), z = float(-300 * rng.uniform()),
+                dt = float(-0.03 * rng.uniform());
+    const double tol = phase_rounding(s, x, z, 6e-8);
+    EXPECT_NEAR(kf::float_water_height(simd, in.frame, x, z, dt),
+                kf::float_water_height(loop, in.frame, x, z, dt), tol * hscale);
+    const kf::vec2 g = kf::float_water_gradient(simd, in.frame, x, z, dt),
+                   h = kf::float_water_gradient(loop, in.frame, x, z, dt);
+    EXPECT_NEAR(g.x, h.x, tol * gscale);
+    EXPECT_NEAR(g.y, h.y, tol * gscale);
+  }
+}
+
+TEST(KernelWaveSums, StaaPixelsWithAndWithoutVectorisedSumsAgree) {
+  // staa end to end (its values are smooth in the sums): every pixel with the vectorised
+  // sums against the kernel's loops.
+  Scene s = testing::project_scene("medium");
+  s.width = 96;
+  s.height = 54;
+  const SceneModel m(s);
+  const PathTables& tables = PathTables::shared();
+  const KernelFitTexture& fits = kernel_fit_texture();
+  for (int footprint : {0, 1}) {
+    KernelInputsD in;
+    build_kernel_inputs(m, frame_time(s, 2), 1, 0, in);
+    kd::StaaParams p{};
+    p.per_pixel_ndf = true;
+    p.ndf_mean_shift = true;
+    p.kernels = 9;
+    p.fallback_along_path = true;
+    p.riemann_cells = 32;
+    p.alias_start = footprint ? 0.3 : 0.2;
+    p.alias_end = footprint ? 0.8 : 0.5;
+    p.nyquist_max = true;
+    p.footprint = footprint;
+    double worst = 0;
+    int lit = 0;
+    for (int j = 0; j < s.height; ++j) {
+      for (int i = 0; i < s.width; ++i) {
+        kd::StaaPath pa, pb;
+        const kd::StaaResult a =
+            kd::staa_pixel(wave_buffer(in, true), tables.f_texture(), tables.s_texture(),
+                           tables.kernel_info(), fits.view(), fits.info, in.frame, p, i, j, pa);
+        const kd::StaaResult b =
+            kd::staa_pixel(wave_buffer(in, false), tables.f_texture(), tables.s_texture(),
+                           tables.kernel_info(), fits.view(), fits.info, in.frame, p, i, j, pb);
+        lit += a.in_light > 1e-3;
+        for (int c = 0; c < 4; ++c)
+          worst = std::max(worst, std::fabs(a.weights[c] - b.weights[c]));
+      }
+    }
+    std::printf(
+        "staa (footprint %d), vectorised against loop sums: max |difference| %.3g, %d lit\n",
+        footprint, worst, lit);
+    EXPECT_GT(lit, 10);
+    EXPECT_LT(worst, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace sg

@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""Holds the shading kernel's sources (src/kernel/*.glsl) to the subset of GLSL 4.50 that is
+also C++20 (the list is in src/kernel/cpp_prelude.h), then compiles the kernel as a GLSL
+compute shader with glslangValidator, the Khronos reference compiler.
+
+Usage: check_subset.py SOURCE_DIR [GLSLANG_VALIDATOR]
+Exit status 0 when every rule holds and the shader compiles; each violation is printed as
+file:line: rule.
+"""
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+# Tokens of C++ (or of GLSL only) that the subset excludes, with the reason printed.
+FORBIDDEN = [
+    (r"::", "no scope resolution (std::, namespaces)"),
+    (r"\b(template|typename|namespace|using|class|public|private|protected|virtual)\b",
+     "no C++ declarations"),
+    (r"\b(auto|nullptr|new|delete|throw|try|catch|static|thread_local|constexpr|inline|"
+     r"mutable|operator|this|sizeof)\b", "no C++-only keywords"),
+    (r"->", "no pointers"),
+    (r"\b(float|double|dvec\d|dmat\d)\b", "scalars are `real` (the precision is the prelude's)"),
+    (r"\b\d+\.\d*f\b|\b\d+f\b", "no float suffix on literals"),
+    # (glm has no swizzles: a multi-component one would not compile in C++ either)
+    (r"\.(?:[xyzw]{2,4}|[rgba]{2,4}|[stpq]{2,4})\b(?!\s*\()", "no swizzles beyond one component"),
+    (r"\b(in|out|inout)\s+\w+\s+\w+\s*[,)]", "parameters as IN(T), OUT(T), INOUT(T)"),
+    (r"\b(uniform|buffer|shared|layout|discard|gl_\w+)\b", "no shader-stage GLSL in the kernel"),
+    (r"\b(sample|input|output|filter|common|partition|active|flat|smooth|patch|precise|"
+     r"subroutine|coherent|volatile|restrict|readonly|writeonly|resource|invariant|"
+     r"centroid|noperspective|attribute|varying|lowp|mediump|highp|precision|superp|"
+     r"fixed|half|long|short|unsigned|goto|union|enum|typedef|extern|external|interface|"
+     r"cast|asm|noinline|hvec\d|fvec\d)\b", "a GLSL reserved word used as a name"),
+]
+
+# A function definition at the top level: a return type, a name, a parameter list, "{".
+DEFINITION = re.compile(r"^(?P<head>[A-Za-z_][\w ]*?)\b(?P<name>\w+)\s*\([^;]*$")
+
+
+def strip_comments(line):
+    return line.split("//", 1)[0]
+
+
+def check_file(path, problems):
+    lines = path.read_text().splitlines()
+    in_cpu_hook = False
+    for number, raw in enumerate(lines, 1):
+        line = strip_comments(raw)
+        where = f"{path}:{number}"
+        if line.startswith("#ifdef SG_CPU_WAVE_SUMS"):
+            in_cpu_hook = True
+        elif line.startswith("#else") or line.startswith("#endif"):
+            in_cpu_hook = False
+        if line.startswith("#"):
+            if not re.match(r"#(include \"kernel/[\w/]+\.glsl\"|ifdef SG_CPU_WAVE_SUMS|ifndef|"
+                            r"define|else|endif)", line):
+                problems.append(f"{where}: preprocessor line outside the subset: {line.strip()}")
+            if line.startswith("#include") and path.name != "kernel.glsl":
+                problems.append(f"{where}: only kernel.glsl lists the files")
+            continue
+        for pattern, rule in FORBIDDEN:
+            if re.search(pattern, line):
+                problems.append(f"{where}: {rule}: {raw.strip()}")
+        m = DEFINITION.match(line)
+        if m and not line.startswith(" ") and not in_cpu_hook:
+            head = m.group("head").split()
+            if head and head[0] not in ("SG_FN", "struct", "const", "return", "else"):
+                problems.append(f"{where}: a kernel function is marked SG_FN: {raw.strip()}")
+
+
+def expand(source_dir, name, seen):
+    """The file with its #include lines replaced by the files, as the GL engine does."""
+    out = []
+    for line in (source_dir / name).read_text().splitlines():
+        m = re.match(r'\s*#include "(.*)"', line)
+        if m:
+            out.append(expand(source_dir, m.group(1), seen))
+        else:
+            out.append(line)
+    return "\n".join(out)
+
+
+# A main that calls every entry point, so that the compiler checks all of the kernel.
+TEST_MAIN = """
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform writeonly image2D out_image;
+uniform samplerBuffer waves;
+uniform sampler2D table_f;
+uniform sampler2DArray table_s;
+uniform sampler2D fits;
+uniform Frame frame;
+uniform StaaParams params;
+uniform SampleCounts counts;
+uniform PathTableInfo tinfo;
+uniform KernelFitInfo finfo;
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  vec4 w = point_pixel(waves, frame, p.x, p.y);
+  w += stratified_pixel(waves, frame, counts, p.x, p.y);
+  w += staa_temporal_pixel(waves, frame, p.x, p.y);
+  StaaPath path;
+  StaaResult r = staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, frame, params, p.x,
+                            p.y, path);
+  imageStore(out_image, p, w + r.weights);
+}
+"""
+
+
+def main():
+    source_dir = Path(sys.argv[1]) / "src"
+    validator = sys.argv[2] if len(sys.argv) > 2 else "glslangValidator"
+    problems = []
+    files = sorted((source_dir / "kernel").glob("*.glsl"))
+    for path in files:
+        check_file(path, problems)
+    for p in problems:
+        print(p)
+    shader = "#version 450\n" + (source_dir / "kernel/glsl_prelude.glsl").read_text() + "\n"
+    shader += expand(source_dir, "kernel/interface.glsl", set()) + "\n"
+    shader += expand(source_dir, "kernel/kernel.glsl", set()) + "\n" + TEST_MAIN
+    with tempfile.NamedTemporaryFile("w", suffix=".comp", delete=False) as f:
+        f.write(shader)
+        shader_path = f.name
+    result = subprocess.run([validator, shader_path], capture_output=True, text=True)
+    if result.returncode != 0:
+        print("glslangValidator rejects the kernel as GLSL 4.50:")
+        print(result.stdout + result.stderr)
+        problems.append("glsl")
+    print(f"{len(files)} kernel files checked, {len(problems)} problem(s)")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
