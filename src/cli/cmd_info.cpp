@@ -124,9 +124,9 @@ void run_info(const InfoArgs& a) {
         "resolution   waves per pixel resolved (f <= %g cycles/pixel), in transition, "
         "aliasing (f >= %g), water at rest\n",
         ap.start, ap.end);
-    std::printf("             rows       distance m          resolved  transition  aliasing\n");
+    std::printf("             rows       distance (m)        resolved  transition  aliasing\n");
     for (const ResolutionBand& b : res.bands) {
-      std::printf("             %4d-%-4d  %8.4g to %-8.4g %8.1f  %10.1f  %8.1f\n", b.row_first,
+      std::printf("             %4d-%-4d  %8.1f to %-7.1f %8.1f  %10.1f  %8.1f\n", b.row_first,
                   b.row_last, b.distance_first, b.distance_last, b.resolved, b.transition,
                   b.aliasing);
     }

@@ -103,6 +103,19 @@ TEST(Sampling, SignificantHeightIsTheSpectrumsOverTheBand) {
   std::printf("[ figure ] worst relative Hs error over 27 seas: %.3g\n", worst);
 }
 
+// One wave per stratum: wave i's ln k lies in [i, i + 1] strata widths from ln k_min.
+TEST(Sampling, OneWavePerStratumOfLnK) {
+  for (SpectrumKind kind : {SpectrumKind::jonswap, SpectrumKind::tma}) {
+    const Ocean o = generate(sea(kind, 300));
+    const double du = std::log(o.wind.k_max / o.wind.k_min) / 300;
+    for (int i = 0; i < 300; ++i) {
+      const double u = std::log(length(o.wind.waves[i].wave_vector) / o.wind.k_min) / du;
+      EXPECT_GE(u, i - 1e-9) << i;
+      EXPECT_LE(u, i + 1 + 1e-9) << i;
+    }
+  }
+}
+
 // Energy per frequency bin of width 0.1 omega_peak, bins centred on the formula's peak:
 // the fullest bin is the one holding the peak.
 TEST(Sampling, SampledEnergyPeaksAtTheFormulasPeak) {
