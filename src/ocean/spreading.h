@@ -23,7 +23,7 @@
 //   wind-generated waves", Phil. Trans. R. Soc. Lond. A 315, 509-562)
 //       D = beta / (2 tanh(beta pi)) sech^2(beta theta),
 //       beta = 2.61 (omega / omega_p)^1.3  (omega / omega_p < 0.95; their data start at
-//              0.56, sunglint extends the branch below as Horvath 2015 does),
+//              0.56, sunglint extends the branch below, where little energy lies),
 //       beta = 2.28 (omega / omega_p)^-1.3 (0.95 <= omega / omega_p < 1.6),
 //   and above, Banner 1990 ("Equilibrium spectra of wind waves", J. Phys. Oceanogr. 20,
 //   966-984): beta = 10^(-0.4 + 0.8393 exp(-0.567 ln((omega / omega_p)^2))).
