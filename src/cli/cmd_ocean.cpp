@@ -5,6 +5,7 @@
 //
 // Exit codes: 2 for a bad flag value (the message names the flag), 1 when the work fails
 // (an unreadable template, an unwritable output).
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
