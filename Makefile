@@ -1,11 +1,11 @@
 # sunglint: `make demo` and `make test` set everything up on a fresh Debian 12 machine
 # (packages through scripts/install-deps.sh, as root or through sudo), build in Release
-# and run. Other targets: build, bench, sanitize, format, format-check, clean.
+# and run. Other targets: build, bench, sanitize, format, format-check, clean, ocean-scenes.
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build test demo bench sanitize format format-check clean
+.PHONY: all deps configure build test demo bench sanitize format format-check clean ocean-scenes
 
 all: build
 
@@ -30,6 +30,10 @@ demo: build
 
 bench: build
 	$(BUILD)/sunglint bench scenes/simple.json scenes/smooth.json scenes/medium.json scenes/high.json
+
+# The spectrum-generated scenes (scenes/ocean-*.json) from `sunglint ocean` (docs/ocean.md).
+ocean-scenes: build
+	bash scripts/ocean-scenes.sh $(BUILD)/sunglint
 
 # The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (Debug build).
 sanitize: deps

@@ -1,4 +1,6 @@
-// `sunglint info SCENE [--json] [--waves]`: what a scene holds.
+// `sunglint info SCENE [--json] [--waves] [--width W] [--height H] [--bands N]`: what a
+// scene holds, and how many of its waves each band of the image resolves at that size
+// (cli/wave_resolution.h).
 //
 // The slope statistics are those of the sum of sines averaged over space and time
 // (Podee et al. 2021, Eq. 3, summed over waves): covariance
@@ -12,7 +14,10 @@
 #include <limits>
 #include <memory>
 
+#include "base/error.h"
+#include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/wave_resolution.h"
 #include "scene/light.h"
 #include "scene/scene.h"
 #include "scene/waves.h"
@@ -38,10 +43,28 @@ std::string rgb_text(const Rgb& c) {
 struct InfoArgs {
   std::string scene;
   bool json = false, waves = false;
+  int width = 0, height = 0, bands = 3;
+  double alias_start = kFootprintAliasRange.start, alias_end = kFootprintAliasRange.end;
 };
 
 void run_info(const InfoArgs& a) {
   Scene s = load_scene(a.scene);
+  apply_image_size(s, a.width, a.height);
+  if (a.bands < 1 || a.bands > 1000) throw Error("--bands: must be in [1, 1000]");
+  if (!(a.alias_start >= 0 && a.alias_start < a.alias_end && std::isfinite(a.alias_end)))
+    throw Error("--alias-start, --alias-end: need 0 <= start < end");
+  AliasingParams ap;
+  ap.start = a.alias_start;
+  ap.end = a.alias_end;
+  const WaveResolution res = wave_resolution(s, a.bands, ap);
+  nlohmann::json jbands = nlohmann::json::array();
+  for (const ResolutionBand& b : res.bands) {
+    jbands.push_back({{"rows", {b.row_first, b.row_last}},
+                      {"distance_m", {b.distance_first, b.distance_last}},
+                      {"resolved", b.resolved},
+                      {"transition", b.transition},
+                      {"aliasing", b.aliasing}});
+  }
   WaveField w(s.surface.waves);
   LightModel light(s.light);
   double lmin = std::numeric_limits<double>::infinity(), lmax = 0;
@@ -89,6 +112,10 @@ void run_info(const InfoArgs& a) {
         {"fps", s.animation.fps},
         {"frames", s.animation.frames},
         {"shutter", s.animation.shutter}}},
+      {"wave_resolution",
+       {{"alias_range_cycles_per_pixel", {ap.start, ap.end}},
+        {"water_row_first", res.water_row_first},
+        {"bands", jbands}}},
   };
   if (a.json) {
     std::printf("%s\n", j.dump(2).c_str());
@@ -114,6 +141,20 @@ void run_info(const InfoArgs& a) {
   }
   std::printf("animation    %d frames at %g fps from t0 = %g s, shutter %g\n", s.animation.frames,
               s.animation.fps, s.animation.t0, s.animation.shutter);
+  if (res.bands.empty()) {
+    std::printf("resolution   no row of the image sees the water\n");
+  } else {
+    std::printf(
+        "resolution   waves per pixel resolved (f <= %g cycles/pixel), in transition, "
+        "aliasing (f >= %g), water at rest\n",
+        ap.start, ap.end);
+    std::printf("             rows       distance (m)        resolved  transition  aliasing\n");
+    for (const ResolutionBand& b : res.bands) {
+      std::printf("             %4d-%-4d  %8.1f to %-7.1f %8.1f  %10.1f  %8.1f\n", b.row_first,
+                  b.row_last, b.distance_first, b.distance_last, b.resolved, b.transition,
+                  b.aliasing);
+    }
+  }
   if (a.waves) {
     std::printf("\n   #  amplitude  wavelength  direction(deg)  period(s)  phase\n");
     for (size_t k = 0; k < s.surface.waves.size(); ++k) {
@@ -135,6 +176,15 @@ void add_info_command(CLI::App& app) {
   c->add_option("scene", a->scene, "Scene file")->required();
   c->add_flag("--json", a->json, "Print JSON");
   c->add_flag("--waves", a->waves, "List every wave");
+  c->add_option("--width", a->width, "Image width for the resolution table (default: the scene's)");
+  c->add_option("--height", a->height,
+                "Image height for the resolution table (default: the scene's, or the width's "
+                "aspect ratio)");
+  c->add_option("--bands", a->bands, "Bands of water rows in the resolution table (3)");
+  c->add_option("--alias-start", a->alias_start,
+                "Start of the transition region, cycles per pixel (staa's default 0.3)");
+  c->add_option("--alias-end", a->alias_end,
+                "End of the transition region, cycles per pixel (staa's default 0.8)");
   c->callback([a] { run_info(*a); });
 }
 

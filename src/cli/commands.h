@@ -13,5 +13,6 @@ void add_info_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_report_command(CLI::App& app);
+void add_ocean_command(CLI::App& app);
 
 }  // namespace sg

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   sg::add_bench_command(app);
   sg::add_compare_command(app);
   sg::add_report_command(app);
+  sg::add_ocean_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

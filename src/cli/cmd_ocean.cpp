@@ -1,0 +1,221 @@
+// `sunglint ocean -o OUT.json [--spectrum ...] [--template FILE]`: a scene whose waves are
+// sampled from a directional wave spectrum (ocean/ocean.h), written as explicit waves so
+// that every renderer reads it. docs/ocean.md describes the spectra, the sampling and
+// every flag's range.
+//
+// Exit codes: 2 for a bad flag value (the message names the flag), 1 when the work fails
+// (an unreadable template, an unwritable output).
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "cli/commands.h"
+#include "math/vec.h"
+#include "ocean/ocean.h"
+
+namespace sg {
+namespace {
+
+// A usage error: CLI11 prints it and exits with status 2.
+[[noreturn]] void usage(const std::string& message) {
+  throw CLI::ParseError(message, 2);
+}
+
+struct OceanArgs {
+  std::string out, template_path, name;
+  std::string spectrum = "jonswap", spreading = "cos2s";
+  std::string wind_speed, wind_direction, fetch, depth, gamma, waves, wavelengths, seed;
+  std::string swell_height, swell_period, swell_direction, swell_spread, swell_gamma, swell_waves;
+  CLI::App* app = nullptr;
+  bool given(const std::string& flag) const { return app->count(flag) > 0; }
+};
+
+double parse_double(const std::string& text, const std::string& flag) {
+  double v = 0;
+  auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v))
+    usage(flag + ": expected a finite number (got '" + text + "')");
+  return v;
+}
+
+int parse_int(const std::string& text, const std::string& flag) {
+  int v = 0;
+  auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || p != text.data() + text.size())
+    usage(flag + ": expected an integer (got '" + text + "')");
+  return v;
+}
+
+uint64_t parse_u64(const std::string& text, const std::string& flag) {
+  uint64_t v = 0;
+  auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || p != text.data() + text.size())
+    usage(flag + ": expected an integer in [0, 2^64) (got '" + text + "')");
+  return v;
+}
+
+// "MIN-MAX": the dash that separates them is the first one after a digit or a dot (not
+// an exponent's sign).
+void parse_band(const std::string& text, double& lo, double& hi) {
+  size_t dash = std::string::npos;
+  for (size_t i = 1; i < text.size(); ++i) {
+    const char prev = text[i - 1];
+    if (text[i] == '-' && (std::isdigit(static_cast<unsigned char>(prev)) || prev == '.')) {
+      dash = i;
+      break;
+    }
+  }
+  if (dash == std::string::npos)
+    usage("--wavelengths: expected MIN-MAX in metres, e.g. 0.1-1000 (got '" + text + "')");
+  lo = parse_double(text.substr(0, dash), "--wavelengths");
+  hi = parse_double(text.substr(dash + 1), "--wavelengths");
+}
+
+ocean::OceanParams params_of(const OceanArgs& a) {
+  using namespace ocean;
+  OceanParams p;
+  if (a.spectrum == "jonswap") {
+    p.spectrum = SpectrumKind::jonswap;
+  } else if (a.spectrum == "pierson-moskowitz") {
+    p.spectrum = SpectrumKind::pierson_moskowitz;
+  } else if (a.spectrum == "tma") {
+    p.spectrum = SpectrumKind::tma;
+  } else {
+    usage("--spectrum: must be jonswap, pierson-moskowitz or tma (got '" + a.spectrum + "')");
+  }
+  if (a.spreading == "cos2s") {
+    p.spreading = SpreadingKind::cos2s;
+  } else if (a.spreading == "hasselmann") {
+    p.spreading = SpreadingKind::hasselmann;
+  } else if (a.spreading == "donelan-banner") {
+    p.spreading = SpreadingKind::donelan_banner;
+  } else {
+    usage("--spreading: must be cos2s, hasselmann or donelan-banner (got '" + a.spreading + "')");
+  }
+  const bool pm = p.spectrum == SpectrumKind::pierson_moskowitz;
+  const bool tma = p.spectrum == SpectrumKind::tma;
+  if (pm && a.given("--fetch"))
+    usage("--fetch: only with --spectrum jonswap or tma (Pierson-Moskowitz is fully developed)");
+  if (pm && a.given("--gamma"))
+    usage(
+        "--gamma: only with --spectrum jonswap or tma (Pierson-Moskowitz has no peak "
+        "enhancement)");
+  if (!tma && a.given("--depth"))
+    usage("--depth: only with --spectrum tma (the others are deep water)");
+  if (tma && !a.given("--depth")) usage("--depth: required with --spectrum tma");
+  if (a.given("--wind-speed")) p.wind_speed = parse_double(a.wind_speed, "--wind-speed");
+  if (a.given("--wind-direction"))
+    p.wind_direction_deg = parse_double(a.wind_direction, "--wind-direction");
+  if (a.given("--fetch")) p.fetch_km = parse_double(a.fetch, "--fetch");
+  if (a.given("--gamma")) p.gamma = parse_double(a.gamma, "--gamma");
+  if (a.given("--depth")) p.depth = parse_double(a.depth, "--depth");
+  if (a.given("--waves")) p.waves = parse_int(a.waves, "--waves");
+  if (a.given("--wavelengths")) parse_band(a.wavelengths, p.wavelength_min, p.wavelength_max);
+  if (a.given("--seed")) p.seed = parse_u64(a.seed, "--seed");
+
+  p.swell.enabled = a.given("--swell-height");
+  for (const char* f : {"--swell-period", "--swell-direction", "--swell-spread", "--swell-gamma",
+                        "--swell-waves"}) {
+    if (!p.swell.enabled && a.given(f)) usage(std::string(f) + ": needs --swell-height");
+  }
+  if (p.swell.enabled) {
+    p.swell.height = parse_double(a.swell_height, "--swell-height");
+    if (a.given("--swell-period")) p.swell.period = parse_double(a.swell_period, "--swell-period");
+    if (a.given("--swell-direction"))
+      p.swell.direction_deg = parse_double(a.swell_direction, "--swell-direction");
+    if (a.given("--swell-spread")) p.swell.spread = parse_double(a.swell_spread, "--swell-spread");
+    if (a.given("--swell-gamma")) p.swell.gamma = parse_double(a.swell_gamma, "--swell-gamma");
+    if (a.given("--swell-waves")) p.swell.waves = parse_int(a.swell_waves, "--swell-waves");
+  }
+  try {
+    validate(p);
+  } catch (const Error& e) {
+    usage(e.what());
+  }
+  return p;
+}
+
+void run_ocean(const OceanArgs& a) {
+  const ocean::OceanParams p = params_of(a);
+  const std::filesystem::path out(a.out);
+  if (out.extension() != ".json") usage("--out: must name a .json file (got '" + a.out + "')");
+  const Scene templ =
+      a.template_path.empty() ? ocean::default_template() : load_scene(a.template_path);
+  ocean::Ocean o;
+  try {
+    o = ocean::generate(p);
+  } catch (const Error& e) {
+    usage(e.what());  // a band without energy: a bad --wavelengths
+  }
+  const std::string name = a.name.empty() ? out.stem().string() : a.name;
+  const Scene scene = ocean::ocean_scene(templ, o, name);
+  write_file_atomic(a.out, scene_to_json(scene) + "\n");
+
+  const ocean::Dispersion water = ocean::water(p);
+  auto describe = [&](const char* what, const ocean::SampledComponent& c,
+                      const ocean::Spectrum& s) {
+    const double wp = s.peak(), kp = water.wavenumber(wp);
+    std::printf(
+        "  %-6s %5zu waves, wavelengths %.4g to %.4g m, Hs %.4g m, peak %.4g m (%.4g s), "
+        "max steepness A|k| %.3g\n",
+        what, c.waves.size(), kTwoPi / c.k_max, kTwoPi / c.k_min, 4 * std::sqrt(c.variance),
+        kTwoPi / kp, kTwoPi / wp, c.max_steepness);
+  };
+  std::printf("%s: %zu waves, Hs %.4g m -> %s\n", name.c_str(), o.waves.size(),
+              4 * std::sqrt(o.variance), a.out.c_str());
+  describe(ocean::to_string(p.spectrum).c_str(), o.wind, o.wind_spectrum);
+  if (p.swell.enabled) describe("swell", o.swell, o.swell_spectrum);
+}
+
+}  // namespace
+
+void add_ocean_command(CLI::App& app) {
+  auto a = std::make_shared<OceanArgs>();
+  CLI::App* c = app.add_subcommand(
+      "ocean", "Write a scene whose waves are sampled from a directional wave spectrum");
+  a->app = c;
+  c->footer(
+      "Directions (--wind-direction, --swell-direction) are where the waves travel towards, in "
+      "degrees in the x-z plane measured from -z (straight ahead of the default camera) towards "
+      "+x (to its right): 0 runs away from the camera towards the sun, 90 to the right, 180 "
+      "towards the camera. See docs/ocean.md.");
+  c->add_option("-o,--out", a->out, "Output scene file (.json)")->required();
+  c->add_option("--template", a->template_path,
+                "Scene whose camera, light, image, animation and surface settings are kept "
+                "(default: a camera 2.5 m above the sea looking ahead, the sun 12 degrees high "
+                "ahead, 640x360, 60 frames at 30 fps)");
+  c->add_option("--name", a->name, "Scene name (default: the output file's stem)");
+  c->add_option("--spectrum", a->spectrum, "jonswap, pierson-moskowitz or tma")
+      ->capture_default_str();
+  c->add_option("--wind-speed", a->wind_speed, "Wind speed 10 m above the sea, m/s, 1 to 30 (10)");
+  c->add_option("--wind-direction", a->wind_direction,
+                "Direction the wind sea travels towards, degrees, -360 to 360 (0)");
+  c->add_option("--fetch", a->fetch, "Fetch, km, 1 to 10000 (100); jonswap and tma");
+  c->add_option("--depth", a->depth, "Water depth, m, 1 to 10000; tma only (required there)");
+  c->add_option("--gamma", a->gamma, "Peak enhancement, 1 to 10 (3.3); jonswap and tma");
+  c->add_option("--spreading", a->spreading, "cos2s, hasselmann or donelan-banner")
+      ->capture_default_str();
+  c->add_option("--waves", a->waves, "Waves of the wind sea, 16 to 65536 (256)");
+  c->add_option("--wavelengths", a->wavelengths,
+                "Band of wavelengths MIN-MAX, m, within 0.01-10000 (0.1-1000); trimmed where "
+                "the spectrum has no energy");
+  c->add_option("--seed", a->seed, "Random seed of the wavenumbers, directions and phases (0)");
+  c->add_option("--swell-height", a->swell_height,
+                "Add a swell of this significant height, m, 0.01 to 10");
+  c->add_option("--swell-period", a->swell_period, "Swell peak period, s, 4 to 25 (12)");
+  c->add_option("--swell-direction", a->swell_direction,
+                "Direction the swell travels towards, degrees (0)");
+  c->add_option("--swell-spread", a->swell_spread,
+                "Swell's cos-2s spreading parameter s_max, 1 to 200 (75: a long-travelled swell)");
+  c->add_option("--swell-gamma", a->swell_gamma, "Swell's peak enhancement, 1 to 10 (3.3)");
+  c->add_option("--swell-waves", a->swell_waves, "Waves of the swell, 16 to 65536 (64)");
+  c->callback([a] { run_ocean(*a); });
+}
+
+}  // namespace sg

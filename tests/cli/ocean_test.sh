@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# End-to-end checks of `sunglint ocean` and of the resolution table of `sunglint info`:
+# bad flag values exit with status 2 and a message naming the flag and leave no file,
+# failed work exits with 1, the same arguments write the same bytes, the generated scenes
+# pass the loader, and the shipped spectrum scenes are what scripts/ocean-scenes.sh writes.
+# Usage: ocean_test.sh SUNGLINT SOURCE_DIR WORK_DIR
+set -u
+bin=$1 src=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+fails=0 passes=0
+ok() { passes=$((passes + 1)); }
+bad() {
+  echo "FAIL $*"
+  fails=$((fails + 1))
+}
+
+# expect_rc NAME RC PATTERN CMD...: the command exits with RC and prints PATTERN.
+expect_rc() {
+  local name=$1 want=$2 pattern=$3
+  shift 3
+  local out rc
+  out=$("$@" 2>&1)
+  rc=$?
+  if [ $rc -eq "$want" ] && grep -qF -- "$pattern" <<<"$out"; then ok; else
+    bad "$name: rc=$rc (wanted $want), wanted '$pattern', got: $out"
+  fi
+}
+usage() {  # usage NAME PATTERN FLAGS...: exit 2, the message, no output file
+  local name=$1 pattern=$2
+  shift 2
+  expect_rc "$name" 2 "$pattern" "$bin" ocean -o "$work/bad.json" "$@"
+  if [ -e "$work/bad.json" ] || compgen -G "$work/bad.json.tmp*" >/dev/null; then
+    bad "$name: left a file behind"
+  else ok; fi
+}
+
+usage "wind speed range" "--wind-speed: must be in [1, 30] m/s (got 45)" --wind-speed 45
+usage "wind speed not a number" "--wind-speed: expected a finite number (got 'abc')" --wind-speed abc
+usage "wind speed nan" "--wind-speed: expected a finite number (got 'nan')" --wind-speed nan
+usage "direction range" "--wind-direction: must be in [-360, 360] degrees (got 400)" --wind-direction 400
+usage "too few waves" "--waves: must be in [16, 65536] (got 8)" --waves 8
+usage "too many waves" "--waves: must be in [16, 65536] (got 70000)" --waves 70000
+usage "waves not an integer" "--waves: expected an integer (got '1.5')" --waves 1.5
+usage "fetch range" "--fetch: must be in [1, 10000] km (got 0.5)" --fetch 0.5
+usage "gamma range" "--gamma: must be in [1, 10] (got 0.5)" --gamma 0.5
+usage "unknown spectrum" "--spectrum: must be jonswap, pierson-moskowitz or tma (got 'foo')" --spectrum foo
+usage "unknown spreading" "--spreading: must be cos2s, hasselmann or donelan-banner (got 'x')" --spreading x
+usage "fetch with PM" "--fetch: only with --spectrum jonswap or tma" --spectrum pierson-moskowitz --fetch 10
+usage "gamma with PM" "--gamma: only with --spectrum jonswap or tma" --spectrum pierson-moskowitz --gamma 2
+usage "depth without TMA" "--depth: only with --spectrum tma" --depth 10
+usage "TMA without depth" "--depth: required with --spectrum tma" --spectrum tma
+usage "depth range" "--depth: must be in [1, 10000] m (got 0.5)" --spectrum tma --depth 0.5
+usage "band order" "--wavelengths: need MIN < MAX (got 5-2)" --wavelengths 5-2
+usage "band syntax" "--wavelengths: expected MIN-MAX in metres" --wavelengths 5
+usage "band range" "--wavelengths: must be in [0.01, 10000] m (got 0.001)" --wavelengths 0.001-10
+usage "band without energy" "--wavelengths: the jonswap spectrum has no energy between 2000 m and 5000 m" --wavelengths 2000-5000
+usage "swell flag without swell" "--swell-period: needs --swell-height" --swell-period 10
+usage "swell period range" "--swell-period: must be in [4, 25] s (got 40)" --swell-height 1 --swell-period 40
+usage "seed" "--seed: expected an integer in [0, 2^64) (got '-1')" --seed -1
+expect_rc "output extension" 2 "--out: must name a .json file" "$bin" ocean -o "$work/bad.txt"
+expect_rc "missing template" 1 "missing.json: cannot read" \
+  "$bin" ocean -o "$work/t.json" --template "$work/missing.json"
+expect_rc "unwritable output" 1 "does not exist" "$bin" ocean -o "$work/no/such/dir/o.json"
+expect_rc "help names the direction convention" 0 "measured from -z" "$bin" ocean --help
+
+# Same arguments, same bytes; another seed, another file; the loader reads them.
+args=(--spectrum tma --depth 20 --wind-speed 12 --wind-direction -30 --spreading hasselmann
+  --waves 300 --wavelengths 0.05-500 --swell-height 0.8 --swell-direction 60 --name sea)
+expect_rc "generate" 0 "Hs" "$bin" ocean -o "$work/a.json" "${args[@]}"
+expect_rc "generate again" 0 "Hs" "$bin" ocean -o "$work/b.json" "${args[@]}"
+expect_rc "another seed" 0 "Hs" "$bin" ocean -o "$work/c.json" "${args[@]}" --seed 7
+if cmp -s "$work/a.json" "$work/b.json"; then ok; else bad "same arguments wrote different bytes"; fi
+if cmp -s "$work/a.json" "$work/c.json"; then bad "another seed wrote the same bytes"; else ok; fi
+expect_rc "loader reads the scene" 0 "waves        364," "$bin" info "$work/a.json"
+expect_rc "the largest sea" 0 "65536 waves" "$bin" ocean -o "$work/big.json" --waves 65536
+expect_rc "info reads the largest sea" 0 "waves        65536," "$bin" info "$work/big.json"
+
+# The template's view is kept (a 30 degree field of view here); the name follows the
+# output file.
+sed 's/"vfov_deg": 40.0/"vfov_deg": 30.0/' "$src/scenes/simple.json" >"$work/template.json"
+expect_rc "template" 0 "Hs" "$bin" ocean -o "$work/tpl.json" --template "$work/template.json"
+if grep -q '"vfov_deg": 30.0' "$work/tpl.json"; then ok; else bad "the template's view was not kept"; fi
+if [ "$("$bin" info --json "$work/tpl.json" | grep -c '"name": "tpl"')" = 1 ]; then ok; else
+  bad "the scene is not named after its file"
+fi
+
+# The resolution table: text and JSON, at the size asked for.
+expect_rc "resolution table" 0 "resolved  transition  aliasing" "$bin" info "$work/a.json"
+expect_rc "resolution at another size" 0 '"image": [' \
+  "$bin" info --json --width 320 --bands 5 "$work/a.json"
+if [ "$("$bin" info --json --width 320 --bands 5 "$work/a.json" | grep -c '"resolved"')" = 5 ]; then
+  ok
+else bad "info --json --bands 5 did not list 5 bands"; fi
+expect_rc "bad bands" 1 "--bands: must be in [1, 1000]" "$bin" info --bands 0 "$work/a.json"
+
+# The shipped spectrum scenes are the script's output, byte for byte.
+mkdir -p "$work/scenes"
+if bash "$src/scripts/ocean-scenes.sh" "$bin" "$work/scenes" >/dev/null; then ok; else
+  bad "scripts/ocean-scenes.sh failed"
+fi
+for s in ocean-wind ocean-swell; do
+  if cmp -s "$work/scenes/$s.json" "$src/scenes/$s.json"; then ok; else
+    bad "scenes/$s.json differs from scripts/ocean-scenes.sh's output"
+  fi
+done
+
+echo "ocean CLI checks: $passes passed, $fails failed"
+[ $fails -eq 0 ]
