@@ -1,11 +1,11 @@
 # sunglint: `make demo` and `make test` set everything up on a fresh Debian 12 machine
 # (packages through scripts/install-deps.sh, as root or through sudo), build in Release
-# and run. Other targets: build, bench, sanitize, format, format-check, clean, ocean-scenes.
+# and run. Other targets: build, bench, pictures, sanitize, format, format-check, clean, ocean-scenes.
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build test demo bench sanitize format format-check clean ocean-scenes
+.PHONY: all deps configure build test demo pictures bench sanitize format format-check clean ocean-scenes
 
 all: build
 
@@ -27,6 +27,10 @@ test: build
 # and the README's demo section from its results.json.
 demo: build
 	bash scripts/demo.sh $(if $(FULL),--full) $(if $(DOCS),--docs) $(BUILD)/sunglint
+
+# The README's pictures and videos of the three picture scenes (scripts/pictures.sh).
+pictures: build
+	bash scripts/pictures.sh $(BUILD)/sunglint
 
 bench: build
 	$(BUILD)/sunglint bench scenes/simple.json scenes/smooth.json scenes/medium.json scenes/high.json

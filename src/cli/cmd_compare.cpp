@@ -144,6 +144,12 @@ void run_compare(const CompareArgs& a) {
       std::printf("%-10s %-32s %9.5f %9.5f %9.5f %9.5f %10.3g\n", s.name.c_str(), v.label.c_str(),
                   v.at(Region::image).rmse, v.at(Region::image).temporal_error,
                   v.at(Region::near).rmse, v.at(Region::far).rmse, v.ms_per_frame);
+      const auto& ch = v.at(Region::image).channels;
+      if (ch.size() == 3) {  // colour: each channel's RMSE and temporal error
+        std::printf("%-10s %-32s %9s R %.5f G %.5f B %.5f, temporal R %.5f G %.5f B %.5f\n", "", "",
+                    "", ch[0].rmse, ch[1].rmse, ch[2].rmse, ch[0].temporal_error,
+                    ch[1].temporal_error, ch[2].temporal_error);
+      }
     }
   }
   std::printf("report: %s/index.html (results.json, results.csv, results.md beside it)\n",
@@ -158,7 +164,7 @@ void add_compare_command(CLI::App& app) {
       "compare",
       "Render methods on scenes against a cached reference and write a report (metrics, "
       "near/far water halves, equal-cost curve, pictures, videos, index.html)");
-  c->add_option("scenes", a->scenes, "Scene files (sunglint-scene/1 JSON)");
+  c->add_option("scenes", a->scenes, "Scene files (sunglint-scene/1 or /2 JSON)");
   c->add_option("--method,-m", a->methods,
                 "A method variant 'NAME [FLAGS]' with the flags of render, e.g. -m point -m "
                 "'supersample --samples 6x6x1'; repeat for each variant")

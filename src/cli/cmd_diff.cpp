@@ -1,6 +1,7 @@
 // `sunglint diff A B [--frames A-B] [--out diff.png] [--json]`: the metrics of A against
 // B (the reference), on linear values; for sequences also the temporal error and the
-// flicker energy of each.
+// flicker energy of each. Colour images are measured over all channels and per channel
+// (R, G, B); a grey image against a colour one counts as three equal channels.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -24,20 +25,50 @@ struct DiffArgs {
   bool json = false;
 };
 
+constexpr const char* kChannelNames[3] = {"R", "G", "B"};
+
 nlohmann::json to_json(const ImageMetrics& m) {
-  return {{"rmse", m.rmse},
-          {"psnr", std::isfinite(m.psnr) ? nlohmann::json(m.psnr) : nlohmann::json("inf")},
-          {"mean_a", m.mean_a},
-          {"mean_b", m.mean_b},
-          {"max_abs", m.max_abs},
-          {"pixels", m.pixels}};
+  nlohmann::json j = {
+      {"rmse", m.rmse},
+      {"psnr", std::isfinite(m.psnr) ? nlohmann::json(m.psnr) : nlohmann::json("inf")},
+      {"mean_a", m.mean_a},
+      {"mean_b", m.mean_b},
+      {"max_abs", m.max_abs},
+      {"pixels", m.pixels}};
+  if (m.channels.size() == 3) {  // colour: each channel's figures too
+    j["channels"] = nlohmann::json::object();
+    for (int c = 0; c < 3; ++c) {
+      const ChannelMetrics& x = m.channels[c];
+      j["channels"][kChannelNames[c]] = {
+          {"rmse", x.rmse}, {"mean_a", x.mean_a}, {"mean_b", x.mean_b}, {"max_abs", x.max_abs}};
+    }
+  }
+  return j;
+}
+
+// " (R x, G y, B z)" of three per-channel figures; "" for a grey comparison.
+template <typename T, typename F>
+std::string per_channel(const std::vector<T>& channels, F value) {
+  if (channels.size() != 3) return "";
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "  (R %.6g, G %.6g, B %.6g)", value(channels[0]),
+                value(channels[1]), value(channels[2]));
+  return buf;
 }
 
 void print_metrics(const ImageMetrics& m) {
-  std::printf("rmse     %.6g\n", m.rmse);
+  auto rmse = [](const ChannelMetrics& c) { return c.rmse; };
+  auto max_abs = [](const ChannelMetrics& c) { return c.max_abs; };
+  std::printf("rmse     %.6g%s\n", m.rmse, per_channel(m.channels, rmse).c_str());
   std::printf("psnr     %.2f dB\n", m.psnr);
   std::printf("mean     %.6g (A)  %.6g (B)\n", m.mean_a, m.mean_b);
-  std::printf("max_abs  %.6g\n", m.max_abs);
+  if (m.channels.size() == 3) {
+    for (int c = 0; c < 3; ++c) {
+      std::printf("mean %s   %.6g (A)  %.6g (B)\n", kChannelNames[c], m.channels[c].mean_a,
+                  m.channels[c].mean_b);
+    }
+  }
+  std::printf("max_abs  %.6g%s\n", m.max_abs, per_channel(m.channels, max_abs).c_str());
   std::printf("pixels   %ld\n", m.pixels);
 }
 
@@ -90,6 +121,16 @@ void run_diff(const DiffArgs& d) {
                         {"temporal_error", s.temporal_error},
                         {"flicker_a", s.flicker_a},
                         {"flicker_b", s.flicker_b}};
+    if (s.channels.size() == 3) {
+      j["channels"] = nlohmann::json::object();
+      for (int c = 0; c < 3; ++c) {
+        const SequenceChannelMetrics& x = s.channels[c];
+        j["channels"][kChannelNames[c]] = {{"rmse", x.rmse},
+                                           {"temporal_error", x.temporal_error},
+                                           {"flicker_a", x.flicker_a},
+                                           {"flicker_b", x.flicker_b}};
+      }
+    }
     for (size_t k = 0; k < s.frames.size(); ++k) {
       auto fj = to_json(s.frames[k]);
       fj["frame"] = r.first + static_cast<int>(k);
@@ -103,8 +144,12 @@ void run_diff(const DiffArgs& d) {
     std::printf("%5d  %.6f  %8.2f  %.6f\n", r.first + static_cast<int>(k), s.frames[k].rmse,
                 s.frames[k].psnr, s.frames[k].max_abs);
   }
-  std::printf("rmse            %.6g (all frames)\n", s.rmse);
-  std::printf("temporal_error  %.6g\n", s.temporal_error);
+  auto rmse = [](const SequenceChannelMetrics& c) { return c.rmse; };
+  auto temporal = [](const SequenceChannelMetrics& c) { return c.temporal_error; };
+  std::printf("rmse            %.6g (all frames)%s\n", s.rmse,
+              per_channel(s.channels, rmse).c_str());
+  std::printf("temporal_error  %.6g%s\n", s.temporal_error,
+              per_channel(s.channels, temporal).c_str());
   std::printf("flicker         %.6g (A)  %.6g (B)\n", s.flicker_a, s.flicker_b);
 }
 

@@ -14,7 +14,8 @@
 namespace sg {
 
 void store_pixel(const FrameContext& ctx, Image& out, int i, int j, const RadianceWeights& w) {
-  out.at(i, j) = static_cast<float>(ctx.model.radiances.apply(w, 0));
+  for (int c = 0; c < out.channels; ++c)
+    out.at(i, j, c) = static_cast<float>(ctx.model.radiances.apply(w, c));
 }
 
 void Method::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1, Image& out) const {

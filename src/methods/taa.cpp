@@ -28,8 +28,9 @@ void TaaMethod::reset() {
 
 void TaaMethod::begin_frame(const FrameContext& ctx) {
   const SceneModel& m = ctx.model;
-  if (has_history_ && (ctx.time.frame != last_frame_ + 1 || history_.width != m.width() ||
-                       history_.height != m.height())) {
+  if (has_history_ &&
+      (ctx.time.frame != last_frame_ + 1 || history_.width != m.width() ||
+       history_.height != m.height() || history_.channels != (m.scene.grey() ? 1 : 3))) {
     reset();  // a cut: the history belongs to another sequence
   }
   jitter_ = taa_jitter(ctx.time.frame, options_.jitter_count);
@@ -81,17 +82,19 @@ void TaaMethod::end_frame(const FrameContext& ctx, Image& img) {
   tbb::parallel_for(tbb::blocked_range<int>(0, img.height), [&](const tbb::blocked_range<int>& r) {
     for (int j = r.begin(); j < r.end(); ++j) {
       for (int i = 0; i < img.width; ++i) {
-        const double c = current.at(i, j);
         const vec2 p = vec2(i + 0.5, j + 0.5) - motion_[static_cast<size_t>(j) * img.width + i];
-        double h;
-        if (!sample_history(history_, p, o.history, h)) {
-          img.at(i, j) = static_cast<float>(c);
-          continue;
+        for (int ch = 0; ch < img.channels; ++ch) {  // each channel alone, clamp included
+          const double c = current.at(i, j, ch);
+          double h;
+          if (!sample_history(history_, p, o.history, h, ch)) {
+            img.at(i, j, ch) = static_cast<float>(c);
+            continue;
+          }
+          if (o.clamp != TaaClamp::none) {
+            h = clip_to_box(h, neighbourhood_box(current, i, j, o.clamp, o.gamma, ch));
+          }
+          img.at(i, j, ch) = static_cast<float>(taa_blend(h, c, o.alpha));
         }
-        if (o.clamp != TaaClamp::none) {
-          h = clip_to_box(h, neighbourhood_box(current, i, j, o.clamp, o.gamma));
-        }
-        img.at(i, j) = static_cast<float>(taa_blend(h, c, o.alpha));
       }
     }
   });

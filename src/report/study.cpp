@@ -146,7 +146,8 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   std::vector<bool> have(n, false);
   for (int q = 0; q < n; ++q) {
     auto f = cache_->load(label, k[q]);
-    if (f && f->image.width == model.width() && f->image.height == model.height()) {
+    if (f && f->image.width == model.width() && f->image.height == model.height() &&
+        f->image.channels == (model.scene.grey() ? 1 : 3)) {
       s.frames[q] = std::move(f->image);
       ms[q] = f->ms;
       have[q] = true;
@@ -212,8 +213,53 @@ VariantResult Study::measure(const StudyVariant& v, const Sequence& s,
     o.flicker = m.flicker_a;
     o.flicker_reference = m.flicker_b;
     o.pixels = m.frames.front().pixels;
+    if (m.channels.size() == 3) {
+      for (const SequenceChannelMetrics& c : m.channels)
+        o.channels.push_back({c.rmse, c.temporal_error, c.flicker_a});
+    }
   }
   return r;
+}
+
+// The pixel where `a` has its largest temporal error against `ref` (summed over frame pairs
+// and channels), among the pixels of `mask`; {-1, -1} with fewer than two frames.
+std::pair<int, int> largest_temporal_error(const std::vector<Image>& a,
+                                           const std::vector<Image>& ref,
+                                           const std::vector<unsigned char>& mask) {
+  if (a.size() < 2 || ref.size() != a.size()) return {-1, -1};
+  const Image& first = a.front();
+  std::vector<double> te(first.pixels(), 0.0);
+  const int n = std::max(first.channels, ref.front().channels);
+  for (size_t f = 1; f < a.size(); ++f) {
+    for (size_t k = 0; k < te.size(); ++k) {
+      for (int c = 0; c < n; ++c) {
+        const double da = double(channel_value(a[f], k, c)) - channel_value(a[f - 1], k, c);
+        const double dr = double(channel_value(ref[f], k, c)) - channel_value(ref[f - 1], k, c);
+        te[k] += (da - dr) * (da - dr);
+      }
+    }
+  }
+  size_t best = 0;
+  double best_te = -1;
+  for (size_t k = 0; k < te.size(); ++k) {
+    if (mask[k] && te[k] > best_te) {
+      best = k;
+      best_te = te[k];
+    }
+  }
+  return {static_cast<int>(best % first.width), static_cast<int>(best / first.width)};
+}
+
+// The value of pixel (x, y), the mean over its channels, in each frame.
+std::vector<double> pixel_trace(const std::vector<Image>& frames, int x, int y) {
+  std::vector<double> t;
+  for (const Image& f : frames) {
+    double v = 0;
+    for (int c = 0; c < f.channels; ++c)
+      v += f.at(x, y, c);
+    t.push_back(v / f.channels);
+  }
+  return t;
 }
 
 SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug) {
@@ -264,6 +310,28 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
     }
   }
 
+  // The flicker plot: the pixel where point sampling (else the first method) has its
+  // largest temporal error on the water, and every column's value there over time.
+  r.channels = ref.frames.front().channels;
+  if (!seqs.empty()) {
+    size_t by = 0;
+    for (size_t m = 0; m < c_.methods.size(); ++m) {
+      if (c_.methods[m].name == "point") {
+        by = m;
+        break;
+      }
+    }
+    const std::vector<unsigned char> everywhere(ref.frames.front().pixels(), 1);
+    const auto [x, y] = largest_temporal_error(seqs[by].frames, ref.frames,
+                                               w.water_pixels > 0 ? w.water : everywhere);
+    if (x >= 0) {
+      r.flicker_pixel = FlickerPixel{x, y, r.methods[by].label};
+      r.reference.trace = pixel_trace(ref.frames, x, y);
+      for (size_t m = 0; m < seqs.size(); ++m)
+        r.methods[m].trace = pixel_trace(seqs[m].frames, x, y);
+    }
+  }
+
   if (!c_.pictures && !c_.video) return r;
   report(done_weight_ / total_weight_, tag + "pictures and video");
   const int W = scene.width, H = scene.height, n = static_cast<int>(ref.frames.size());
@@ -272,7 +340,8 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   const Image& ref_shown = ref.frames.back();
   r.far_crop = best_crop(ref_shown, w.far, cw, ch);
   r.near_crop = best_crop(ref_shown, w.near, cw, ch, &r.far_crop);
-  const std::vector<unsigned char> all(ref_shown.size(), 1);
+  const std::vector<unsigned char> all(ref_shown.pixels(), 1);
+  const int C = ref_shown.channels;
   const std::vector<unsigned char>& error_mask = w.water_pixels > 0 ? w.water : all;
   for (const auto& s : seqs) {
     r.error_range =
@@ -294,13 +363,14 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   fs::create_directories(fs::path(c_.out_dir) / img_dir);
   const uint8_t kBackground = 24, kNear[3] = {255, 160, 32}, kFar[3] = {64, 200, 255};
   std::vector<std::vector<Picture>> grid(5);
+  std::vector<std::vector<Picture>> crops;  // per column: near and far at kCropScale:1
   // Display frames of every column: all frames for the video, the last for pictures.
   std::vector<std::vector<std::vector<uint8_t>>> shown(cols.size());
   for (size_t col = 0; col < cols.size(); ++col) {
     const auto& frames = cols[col]->frames;
     for (int f = c_.video ? 0 : n - 1; f < n; ++f)
       shown[col].push_back(display_srgb8(frames[f], c_.display));
-    Picture pic = grey_picture(W, H, shown[col].back());
+    Picture pic = to_picture(W, H, C, shown[col].back());
     Picture marked = pic;
     if (col == 0) {
       draw_box(marked, r.near_crop, kNear);
@@ -323,9 +393,17 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
     grid[2].push_back(error_crop(r.near_crop));
     grid[3].push_back(zoomed_crop(pic, r.far_crop, z, W, H, kBackground));
     grid[4].push_back(error_crop(r.far_crop));
+    crops.push_back(
+        {enlarged_crop(pic, r.near_crop, kCropScale), enlarged_crop(pic, r.far_crop, kCropScale)});
     if (c_.pictures) {
       results[col]->picture = img_dir + "/" + slugs[col] + ".png";
       write_picture((fs::path(c_.out_dir) / results[col]->picture).string(), pic);
+      results[col]->near_crop_picture = img_dir + "/" + slugs[col] + "-near.png";
+      results[col]->far_crop_picture = img_dir + "/" + slugs[col] + "-far.png";
+      write_picture((fs::path(c_.out_dir) / results[col]->near_crop_picture).string(),
+                    crops.back()[0]);
+      write_picture((fs::path(c_.out_dir) / results[col]->far_crop_picture).string(),
+                    crops.back()[1]);
       if (col > 0) {
         results[col]->error_map = img_dir + "/" + slugs[col] + "-error.png";
         write_picture((fs::path(c_.out_dir) / results[col]->error_map).string(), err);
@@ -335,27 +413,38 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   if (c_.pictures) {
     r.grid = "img/" + scene_slug + "-grid.png";
     write_picture((fs::path(c_.out_dir) / r.grid).string(), compose_grid(grid, 2, kBackground));
+    r.crops = "img/" + scene_slug + "-crops.png";
+    write_picture((fs::path(c_.out_dir) / r.crops).string(), compose_grid(crops, 2, kBackground));
   }
   if (c_.video) {
     // Two rows: the frames, and their near crops zoomed; columns as in the grid.
     const int gap = 2, VW = int(cols.size()) * W + (int(cols.size()) - 1) * gap, VH = 2 * H + gap;
-    std::vector<std::vector<uint8_t>> frames(n, std::vector<uint8_t>(size_t(VW) * VH, kBackground));
+    std::vector<std::vector<uint8_t>> frames(
+        n, std::vector<uint8_t>(size_t(VW) * VH * C, kBackground));
     for (int f = 0; f < n; ++f) {
       for (size_t col = 0; col < cols.size(); ++col) {
-        const Picture pic = grey_picture(W, H, shown[col][f]);
+        const Picture pic = to_picture(W, H, C, shown[col][f]);
         const Picture crop = zoomed_crop(pic, r.near_crop, z, W, H, kBackground);
         const int x0 = int(col) * (W + gap);
         for (int j = 0; j < H; ++j) {
           for (int i = 0; i < W; ++i) {
-            frames[f][size_t(j) * VW + x0 + i] = shown[col][f][size_t(j) * W + i];
-            frames[f][size_t(H + gap + j) * VW + x0 + i] = crop.at(i, j)[0];
+            for (int c = 0; c < C; ++c) {
+              frames[f][(size_t(j) * VW + x0 + i) * C + c] =
+                  shown[col][f][(size_t(j) * W + i) * C + c];
+              frames[f][(size_t(H + gap + j) * VW + x0 + i) * C + c] = crop.at(i, j)[c];
+            }
           }
         }
       }
     }
     fs::create_directories(fs::path(c_.out_dir) / "video");
     r.video = "video/" + scene_slug + ".mp4";
-    encode_h264((fs::path(c_.out_dir) / r.video).string(), VW, VH, scene.animation.fps, frames);
+    const std::string video = (fs::path(c_.out_dir) / r.video).string();
+    if (C == 1) {
+      encode_h264(video, VW, VH, scene.animation.fps, frames);
+    } else {
+      encode_h264_rgb(video, VW, VH, scene.animation.fps, frames);
+    }
   }
   return r;
 }

@@ -1,5 +1,7 @@
-// Loading `sunglint-scene/1` files: parse, check every key against its rule, reject
-// unknown keys. Each rule lives in one place below; docs/scene-format-notes.md lists them.
+// Loading `sunglint-scene/1` and `/2` files: parse, check every key against its rule,
+// reject unknown keys. Each rule lives in one place below; docs/scene-format-notes.md lists
+// them. Format /2 adds [r, g, b] radiances and the sky gradient (read_radiance, read_sky);
+// a /1 file that uses them is an error naming the key.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -17,6 +19,7 @@ namespace {
 using json = nlohmann::json;
 
 constexpr const char* kFormat = "sunglint-scene/1";
+constexpr const char* kFormat2 = "sunglint-scene/2";
 constexpr int kMaxImageSide = 16384;
 
 // A JSON object being read: remembers which keys were consumed so that the rest can be
@@ -124,6 +127,61 @@ void require_nonzero(const vec3& v, const std::string& path) {
   require(length(v) > 1e-12, path, "must not be zero-length");
 }
 
+const std::string kNeeds2 = std::string("needs \"format\": \"") + kFormat2 + "\"";
+
+// A radiance (format /2): a number (grey: three equal channels) or [r, g, b], each finite
+// and >= 0. Format /1 (version 1) has numbers only.
+Rgb read_radiance(ObjectReader& o, const std::string& key, double fallback, int version) {
+  if (!o.has(key)) return Rgb(fallback);
+  const std::string p = o.key_path(key);
+  const json& v = o.get(key);
+  const std::string shape = "must be a number or an array of 3 numbers [r, g, b]";
+  if (v.is_array()) {
+    require(version >= 2, p, "an [r, g, b] radiance " + kNeeds2);
+    require(v.size() == 3, p, shape);
+    Rgb c;
+    for (int k = 0; k < 3; ++k) {
+      const std::string pk = p + "[" + std::to_string(k) + "]";
+      c[k] = ObjectReader::as_number(v[k], pk);
+      require(c[k] >= 0, pk, "must be >= 0");
+    }
+    return c;
+  }
+  if (version >= 2 && !v.is_number()) ObjectReader::fail(p, shape);
+  const double x = ObjectReader::as_number(v, p);
+  require(x >= 0, p, "must be >= 0");
+  return Rgb(x);
+}
+
+// `sky`: a constant `radiance`, or (format /2) `zenith` and `horizon` with an optional
+// `exponent` (default 0.5, > 0); not both forms.
+SkyDesc read_sky(ObjectReader o, int version) {
+  const bool z = o.has("zenith"), h = o.has("horizon");
+  if (version < 2) {
+    for (const char* k : {"zenith", "horizon", "exponent"}) {
+      require(!o.has(k), o.key_path(k), kNeeds2);
+    }
+  }
+  SkyDesc sky;
+  if (!z && !h) {
+    require(!o.has("exponent"), o.key_path("exponent"),
+            "needs the gradient sky (sky.zenith and sky.horizon)");
+    sky = SkyDesc::constant(read_radiance(o, "radiance", 0.0, version));
+  } else {
+    require(!o.has("radiance"), o.key_path("radiance"),
+            "not allowed with sky.zenith and sky.horizon (a sky is constant or a gradient)");
+    require(z, o.key_path("zenith"), "missing (required with sky.horizon)");
+    require(h, o.key_path("horizon"), "missing (required with sky.zenith)");
+    sky.gradient = true;
+    sky.zenith = read_radiance(o, "zenith", 0.0, version);
+    sky.horizon = read_radiance(o, "horizon", 0.0, version);
+    sky.exponent = o.number_or("exponent", 0.5);
+    require(sky.exponent > 0, o.key_path("exponent"), "must be > 0");
+  }
+  o.finish();
+  return sky;
+}
+
 CameraDesc read_camera(ObjectReader o) {
   CameraDesc c;
   c.position = o.vector<3>("position");
@@ -141,16 +199,14 @@ CameraDesc read_camera(ObjectReader o) {
   return c;
 }
 
-LightDesc read_light(ObjectReader o) {
+LightDesc read_light(ObjectReader o, int version) {
   LightDesc l;
   l.direction = o.vector<3>("direction");
   require_nonzero(l.direction, o.key_path("direction"));
   l.angular_radius_deg = o.number("angular_radius_deg");
   require(l.angular_radius_deg > 0 && l.angular_radius_deg < 90, o.key_path("angular_radius_deg"),
           "must be in (0, 90)");
-  const double radiance = o.number_or("radiance", 1.0);
-  require(radiance >= 0, o.key_path("radiance"), "must be >= 0");
-  l.radiance = Rgb(radiance);
+  l.radiance = read_radiance(o, "radiance", 1.0, version);
   l.visible = o.boolean_or("visible", false);
   o.finish();
   return l;
@@ -167,16 +223,14 @@ Wave read_wave(ObjectReader o) {
   return w;
 }
 
-SurfaceDesc read_surface(ObjectReader o) {
+SurfaceDesc read_surface(ObjectReader o, int version) {
   SurfaceDesc s;
   s.geometry = o.choice_or("geometry", {"flat", "displaced"}, "flat") == "flat"
                    ? Geometry::flat
                    : Geometry::displaced;
   s.fresnel = o.choice_or("fresnel", {"none", "schlick"}, "none") == "none" ? FresnelMode::none
                                                                             : FresnelMode::schlick;
-  const double sea = o.number_or("sea_radiance", 0.0);
-  require(sea >= 0, o.key_path("sea_radiance"), "must be >= 0");
-  s.sea_radiance = Rgb(Rgb(sea));
+  s.sea_radiance = read_radiance(o, "sea_radiance", 0.0, version);
   const std::string wpath = o.key_path("waves");
   const json& waves = o.get("waves");
   require(waves.is_array(), wpath, "must be an array of wave objects");
@@ -293,8 +347,10 @@ Scene parse_scene(const std::string& text, const std::string& name) {
   try {
     ObjectReader top(j, "");
     const std::string format = top.string("format");
-    require(format == kFormat, "format",
-            std::string("must be \"") + kFormat + "\" (got \"" + format + "\")");
+    require(format == kFormat || format == kFormat2, "format",
+            std::string("must be \"") + kFormat + "\" or \"" + kFormat2 + "\" (got \"" + format +
+                "\")");
+    const int version = format == kFormat ? 1 : 2;
     Scene s;
     s.name = top.has("name") ? top.string("name") : std::filesystem::path(name).stem().string();
     {
@@ -308,15 +364,9 @@ Scene parse_scene(const std::string& text, const std::string& name) {
       img.finish();
     }
     s.camera = read_camera(top.object("camera"));
-    s.light = read_light(top.object("light"));
-    if (top.has("sky")) {
-      ObjectReader sky = top.object("sky");
-      const double radiance = sky.number_or("radiance", 0.0);
-      require(radiance >= 0, "sky.radiance", "must be >= 0");
-      s.sky = SkyDesc::constant(Rgb(radiance));
-      sky.finish();
-    }
-    s.surface = read_surface(top.object("surface"));
+    s.light = read_light(top.object("light"), version);
+    if (top.has("sky")) s.sky = read_sky(top.object("sky"), version);
+    s.surface = read_surface(top.object("surface"), version);
     s.animation = read_animation(top.object("animation"));
     top.finish();
     return s;
@@ -334,10 +384,22 @@ bool Scene::grey() const {
   return g(light.radiance) && g(sky.zenith) && g(sky.horizon) && g(surface.sea_radiance);
 }
 
+int Scene::format_version() const {
+  return grey() && !sky.gradient ? 1 : 2;
+}
+
 std::string scene_to_json(const Scene& s) {
   auto v3 = [](const vec3& v) { return json::array({v.x, v.y, v.z}); };
-  // Grey radiances as one number (format /1); colour is written by format /2.
+  // Grey radiances as one number (format /1); colour and the gradient sky need format /2.
+  // A scene that needs neither is written as /1, byte for byte as before /2 existed (the
+  // study's cache keys hash this text).
   auto radiance = [&](const Rgb& c) { return c.x == c.y && c.y == c.z ? json(c.x) : v3(c); };
+  json sky = {{"radiance", radiance(s.sky.zenith)}};
+  if (s.sky.gradient) {
+    sky = {{"zenith", radiance(s.sky.zenith)},
+           {"horizon", radiance(s.sky.horizon)},
+           {"exponent", s.sky.exponent}};
+  }
   json waves = json::array();
   for (const Wave& w : s.surface.waves) {
     waves.push_back({{"amplitude", w.amplitude},
@@ -346,7 +408,7 @@ std::string scene_to_json(const Scene& s) {
                      {"phase", w.phase}});
   }
   json j = {
-      {"format", kFormat},
+      {"format", s.format_version() == 1 ? kFormat : kFormat2},
       {"name", s.name},
       {"image", {{"width", s.width}, {"height", s.height}}},
       {"camera",
@@ -359,7 +421,7 @@ std::string scene_to_json(const Scene& s) {
         {"angular_radius_deg", s.light.angular_radius_deg},
         {"radiance", radiance(s.light.radiance)},
         {"visible", s.light.visible}}},
-      {"sky", {{"radiance", radiance(s.sky.zenith)}}},
+      {"sky", sky},
       {"surface",
        {{"geometry", s.surface.geometry == Geometry::flat ? "flat" : "displaced"},
         {"fresnel", s.surface.fresnel == FresnelMode::none ? "none" : "schlick"},

@@ -169,5 +169,66 @@ expect_ok "diff picture" "$bin" diff "$work/r1.exr" "$work/r3.pfm" --out "$work/
 expect_ok "info" "$bin" info "$scene" --waves
 expect_ok "info json" "$bin" info "$scene" --json
 
+# Colour (format /2): RGB files, per-channel metrics; the display pipeline and videos.
+colour=$src/scenes/sunset.json
+expect_ok "colour exr" "$bin" render "$colour" -m point --width 32 -q --out "$work/c.exr"
+expect_ok "colour pfm" "$bin" render "$colour" -m point --width 32 -q --out "$work/c.pfm"
+[ "$(head -c 2 "$work/c.pfm")" = PF ] && passes=$((passes + 1)) || { echo "FAIL colour pfm is not PF"; fails=$((fails + 1)); }
+[ "$(head -c 2 "$work/r3.pfm")" = Pf ] && passes=$((passes + 1)) || { echo "FAIL grey pfm is not Pf"; fails=$((fails + 1)); }
+out=$("$bin" diff "$work/c.exr" "$work/c.pfm" --json 2>&1)
+if grep -q '"rmse": 0.0' <<<"$out" && grep -q '"B": {' <<<"$out"; then passes=$((passes + 1)); else
+  echo "FAIL colour diff (EXR and PFM of one frame): $out"
+  fails=$((fails + 1))
+fi
+expect_ok "colour frame 1" "$bin" render "$colour" -m point --width 32 -q --out "$work/c2.exr" --frame 1
+out=$("$bin" diff "$work/c2.exr" "$work/c.exr" 2>&1)
+grep -q '^rmse .*(R .*, G .*, B .*)' <<<"$out" && passes=$((passes + 1)) || { echo "FAIL per-channel diff: $out"; fails=$((fails + 1)); }
+# PNG colour type (IHDR byte 25): 2 = RGB for colour, 0 = grey.
+png_type() { od -An -tu1 -j25 -N1 "$1" | tr -d ' '; }
+expect_ok "colour png" "$bin" render "$colour" -m point --width 32 -q --out "$work/c.png"
+expect_ok "colour png display" "$bin" render "$colour" -m point --width 32 -q --display --out "$work/cd.png"
+expect_ok "grey png display" "$bin" render "$scene" -m point --width 32 -q --display --out "$work/gd.png"
+if [ "$(png_type "$work/c.png")" = 2 ] && [ "$(png_type "$work/gd.png")" = 0 ] && ! cmp -s "$work/c.png" "$work/cd.png"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL png colour types or --display has no effect"
+  fails=$((fails + 1))
+fi
+# --video: the range in one command, no --out needed, same bytes twice.
+expect_ok "video" "$bin" render "$colour" -m point --width 32 --frames 0-3 -q --video "$work/v.mp4"
+expect_ok "video again" "$bin" render "$colour" -m point --width 32 --frames 0-3 -q --video "$work/v2.mp4"
+if [ "$(od -An -c -j4 -N4 "$work/v.mp4" | tr -d ' ')" = ftyp ] && cmp -s "$work/v.mp4" "$work/v2.mp4"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL --video: no MP4, or two runs differ"
+  fails=$((fails + 1))
+fi
+expect_ok "video and frames" "$bin" render "$scene" -m point --width 32 --frames 0-1 -q \
+  --video "$work/g.mp4" --display --out "$work/vf_%d.png"
+[ -s "$work/g.mp4" ] && [ -s "$work/vf_1.png" ] && passes=$((passes + 1)) || { echo "FAIL --video with --out"; fails=$((fails + 1)); }
+# Bad combinations name the flag and fail before rendering: the reference at 64x64x64
+# samples per pixel would take minutes.
+slow=(-m reference --samples 64x64x64)
+expect_fail "video without frames" "--video: needs --frames A-B" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --video "$work/x.mp4"
+expect_fail "video not mp4" "--video: must be an .mp4 file (got '$work/x.avi')" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/x.avi"
+expect_fail "video folder" "--video: folder '$work/nope' does not exist" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/nope/x.mp4"
+expect_fail "display exr" "--display: applies to .png output" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --display --out "$work/x.exr"
+expect_fail "no glare alone" "--no-glare: needs --display or --video" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --no-glare --out "$work/x.png"
+expect_fail "no output" "--out: required (or --video FILE.mp4 with --frames A-B)" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}"
+expect_fail "video and frame" "--frame" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --frame 2 --video "$work/x.mp4"
+expect_fail "video without ffmpeg" "--video: ffmpeg: not found" \
+  env PATH=/nonexistent "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/x.mp4"
+for f in x.mp4 x.avi x.exr x.png; do expect_no_file "bad video/display flags" "$work/$f"; done
+expect_fail "format /1 with colour" "light.radiance: an [r, g, b] radiance needs" \
+  "$bin" render "$src/tests/scenes/bad/v1_rgb_light.json" -m point --out "$work/x.exr"
+expect_ok "info colour" "$bin" info "$colour"
+
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
