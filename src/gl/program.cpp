@@ -221,6 +221,9 @@ void Program::set(std::string_view name, glm::ivec2 v) const {
 void Program::set(std::string_view name, glm::ivec3 v) const {
   glProgramUniform3iv(id_, uniform_location(name), 1, glm::value_ptr(v));
 }
+void Program::set(std::string_view name, glm::ivec4 v) const {
+  glProgramUniform4iv(id_, uniform_location(name), 1, glm::value_ptr(v));
+}
 void Program::set(std::string_view name, const glm::mat4& v) const {
   glProgramUniformMatrix4fv(id_, uniform_location(name), 1, GL_FALSE, glm::value_ptr(v));
 }

@@ -84,6 +84,7 @@ class Program {
   void set(std::string_view name, glm::vec4 v) const;
   void set(std::string_view name, glm::ivec2 v) const;
   void set(std::string_view name, glm::ivec3 v) const;
+  void set(std::string_view name, glm::ivec4 v) const;
   void set(std::string_view name, const glm::mat4& v) const;
 
   // Binds uniform block `name` to binding point `binding` (or throws naming it);
