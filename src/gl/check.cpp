@@ -15,9 +15,11 @@ namespace {
 std::mutex pending_mutex;
 std::vector<std::string> pending;
 
-void GLAPIENTRY on_debug_message(GLenum /*source*/, GLenum type, GLuint id, GLenum severity,
+void GLAPIENTRY on_debug_message(GLenum source, GLenum type, GLuint id, GLenum severity,
                                  GLsizei length, const GLchar* message, const void* /*user*/) {
   if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
+  // Compile errors arrive through the shader's log, which Program maps to file:line.
+  if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
   std::string text =
       length >= 0 ? std::string(message, static_cast<size_t>(length)) : std::string(message);
   while (!text.empty() && (text.back() == '\n' || text.back() == ' '))

@@ -1,7 +1,8 @@
 // GL error checking. OpenGL reports errors out of band: glGetError's sticky flags, and
 // (KHR_debug, core in 4.3) a callback with a message. `enable_debug_output` installs the
 // callback, synchronous so that a message arrives inside the call that caused it; it keeps
-// errors and high-severity messages. `check_errors(what)` drains both and throws a GlError
+// errors and high-severity messages, except the shader compiler's (Program reports those
+// from the shader's log, with file and line). `check_errors(what)` drains both and throws a GlError
 // naming `what` when there was any. The wrappers of this layer call it after their GL calls;
 // a dispatch loop calls it once per frame. Debug builds create their contexts with the debug
 // flag and the callback on (ContextOptions::debug), release builds rely on glGetError.
