@@ -2,8 +2,6 @@
 // can give OpenGL 4.5. These tests make their own contexts (not the shared fixture's).
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <epoxy/gl.h>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +9,7 @@
 
 #include "gl/context.h"
 #include "gl/error.h"
+#include "testing/child_process.h"
 #include "testing/gl_context.h"
 
 namespace sg::gl {
@@ -75,46 +74,39 @@ TEST(HeadlessContext, TwoContextsAtOnce) {
 
 // The exit codes of the child of BelowFourFiveIsAClearError.
 constexpr int kRefused = 0, kMade = 1, kNotMesa = 77, kNoGl = 78;
-int child_code = -1;
-bool record_code(int status) {
-  child_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return child_code == kRefused || child_code == kNotMesa || child_code == kNoGl;
-}
 
 TEST(HeadlessContext, BelowFourFiveIsAClearError) {
-  // Mesa caps its version with MESA_GL_VERSION_OVERRIDE, read once per process, so the
-  // check runs in a child that makes no context before it (death-test style "threadsafe"
-  // re-executes this test alone, and nothing before EXPECT_EXIT touches GL).
-  GTEST_FLAG_SET(death_test_style, "threadsafe");
-  EXPECT_EXIT(
-      {
-        setenv("MESA_GL_VERSION_OVERRIDE", "4.3", 1);
-        try {
-          HeadlessContext ctx;
-          const bool mesa = ctx.info().gl_version.find("Mesa") != std::string::npos;
-          std::fprintf(stderr, "%s %s\n", mesa ? "made" : "not Mesa",
-                       ctx.info().gl_version.c_str());
-          std::exit(mesa ? kMade : kNotMesa);
-        } catch (const Unavailable& e) {
-          std::fprintf(stderr, "%s\n", e.what());
-          std::exit(std::string(e.what()).find("no OpenGL 4.5 core context") != std::string::npos
-                        ? kRefused
-                        : kNoGl);
-        }
-      },
-      record_code, "OpenGL 4.5 unavailable: .*no OpenGL 4.5 core context|not Mesa|unavailable");
-  if (child_code == kNotMesa) GTEST_SKIP() << "needs Mesa (MESA_GL_VERSION_OVERRIDE)";
-  if (child_code == kNoGl) {
-    // The child's error did not name 4.5: a failure where GL works (this process can make a
-    // context now, without the override), a skip where there is none at all.
+  // Mesa caps its version with MESA_GL_VERSION_OVERRIDE, read once per process: the context
+  // is made in a fresh child process (testing/child_process.h).
+  if (sg::testing::in_child()) {
+    setenv("MESA_GL_VERSION_OVERRIDE", "4.3", 1);
     try {
       HeadlessContext ctx;
-      FAIL() << "the refusal did not say \"no OpenGL 4.5 core context\" (see the child's stderr)";
+      const bool mesa = ctx.info().gl_version.find("Mesa") != std::string::npos;
+      std::fprintf(stderr, "made %s\n", ctx.info().gl_version.c_str());
+      std::exit(mesa ? kMade : kNotMesa);
+    } catch (const Unavailable& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      std::exit(std::string(e.what()).find("no OpenGL 4.5 core context") != std::string::npos
+                    ? kRefused
+                    : kNoGl);
+    }
+  }
+  const sg::testing::ChildResult child = sg::testing::run_child();
+  if (child.exit_code == kNotMesa) GTEST_SKIP() << "needs Mesa (MESA_GL_VERSION_OVERRIDE)";
+  if (child.exit_code == kNoGl) {
+    // The child's error did not name 4.5: a failure where GL works (this process can make a
+    // context, without the override), a skip where there is none at all.
+    try {
+      HeadlessContext ctx;
+      FAIL() << "the refusal did not say \"no OpenGL 4.5 core context\":\n" << child.output;
     } catch (const Unavailable& e) {
       if (sg::testing::gl_required()) FAIL() << e.what();
       GTEST_SKIP() << e.what();
     }
   }
+  EXPECT_EQ(child.exit_code, kRefused) << child.output;
+  EXPECT_NE(child.output.find("OpenGL 4.5 unavailable: "), std::string::npos) << child.output;
 }
 
 TEST(Platform, Names) {

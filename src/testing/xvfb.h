@@ -1,7 +1,9 @@
 // An X server for the tests of windows: starts `Xvfb -displayfd` (it picks a free display
 // number, so tests running at once get their own), sets DISPLAY, and stops it when
-// destroyed. Where Xvfb is missing or does not start, `reason` says why and the tests skip
-// (fail under SUNGLINT_REQUIRE_GL=1, as in CI). Shell tests use `xvfb-run -a` instead.
+// destroyed. With SUNGLINT_TEST_DISPLAY set, the tests use that display instead
+// (scripts/gpu-run.sh --x starts one Xvfb, with the Mesa pieces its GLX needs). Where Xvfb is
+// missing or does not start, `reason` says why and the tests skip (fail under
+// SUNGLINT_REQUIRE_GL=1, as in CI). Shell tests use `xvfb-run -a` instead.
 #pragma once
 
 #include <poll.h>
@@ -19,6 +21,11 @@ namespace sg::testing {
 class Xvfb {
  public:
   explicit Xvfb(const std::string& screen = "1280x1024x24") {
+    if (const char* given = std::getenv("SUNGLINT_TEST_DISPLAY"); given && *given) {
+      display_ = given;
+      setenv("DISPLAY", given, 1);
+      return;
+    }
     int fds[2];
     if (pipe(fds) != 0) {
       reason_ = "pipe failed";

@@ -4,7 +4,6 @@
 // display that does not open, and with OpenGL below 4.5.
 #include <gtest/gtest.h>
 #include <imgui.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <memory>
@@ -14,6 +13,7 @@
 #include "gl/error.h"
 #include "gl/program.h"
 #include "gl/texture.h"
+#include "testing/child_process.h"
 #include "testing/gl_context.h"
 #include "testing/xvfb.h"
 #include "viewer/texture_view.h"
@@ -132,35 +132,29 @@ TEST(WindowErrors, DisplayThatDoesNotOpen) {
   }
 }
 
-// The exit codes of the child of BelowFourFive.
+// The exit codes of the child of BelowFourFiveIsAClearError.
 constexpr int kRefused = 0, kMade = 1, kNotMesa = 77, kOther = 78;
-int child_code = -1;
-bool record_code(int status) {
-  child_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return child_code == kRefused || child_code == kNotMesa;
-}
 
 TEST_F(WindowTest, BelowFourFiveIsAClearError) {
-  // Mesa reads MESA_GL_VERSION_OVERRIDE once per process: the window is made in a child
-  // that re-executes this test alone (death-test style "threadsafe").
-  GTEST_FLAG_SET(death_test_style, "threadsafe");
-  EXPECT_EXIT(
-      {
-        setenv("MESA_GL_VERSION_OVERRIDE", "4.3", 1);
-        try {
-          Window w({64, 64, "old GL"});
-          const bool mesa = w.info().gl_version.find("Mesa") != std::string::npos;
-          std::fprintf(stderr, "%s %s\n", mesa ? "made" : "not Mesa", w.info().gl_version.c_str());
-          std::exit(mesa ? kMade : kNotMesa);
-        } catch (const gl::Unavailable& e) {
-          std::fprintf(stderr, "%s\n", e.what());
-          std::exit(std::string(e.what()).find("no OpenGL 4.5 core window: ") != std::string::npos
-                        ? kRefused
-                        : kOther);
-        }
-      },
-      record_code, "no OpenGL 4.5 core window: .+|not Mesa");
-  if (child_code == kNotMesa) GTEST_SKIP() << "needs Mesa (MESA_GL_VERSION_OVERRIDE)";
+  // Mesa reads MESA_GL_VERSION_OVERRIDE once per process: the window is made in a fresh
+  // child process (testing/child_process.h) on this test's display.
+  if (sg::testing::in_child()) {
+    setenv("MESA_GL_VERSION_OVERRIDE", "4.3", 1);
+    try {
+      Window w({64, 64, "old GL"});
+      const bool mesa = w.info().gl_version.find("Mesa") != std::string::npos;
+      std::fprintf(stderr, "made %s\n", w.info().gl_version.c_str());
+      std::exit(mesa ? kMade : kNotMesa);
+    } catch (const gl::Unavailable& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      std::exit(std::string(e.what()).find("no OpenGL 4.5 core window: ") != std::string::npos
+                    ? kRefused
+                    : kOther);
+    }
+  }
+  const sg::testing::ChildResult child = sg::testing::run_child();
+  if (child.exit_code == kNotMesa) GTEST_SKIP() << "needs Mesa (MESA_GL_VERSION_OVERRIDE)";
+  EXPECT_EQ(child.exit_code, kRefused) << child.output;
 }
 
 }  // namespace
