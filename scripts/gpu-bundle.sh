@@ -126,7 +126,16 @@ for pkg in "${glvnd_pkgs[@]}"; do
 done
 cp -a "$stage/deb/usr/lib/x86_64-linux-gnu/"lib*.so.* "$stage/engine/glvnd/"
 
+# The viewer's part depends only on the installed packages and on which libraries the engine
+# part already carries: it is cached (the compression takes minutes) under that key.
+x_pkgs=(xvfb x11-xkb-utils xkb-data libgl1-mesa-dri libllvm15)
 if [ $with_x = 1 ]; then
+  x_key=$({ for pkg in "${x_pkgs[@]}"; do dpkg-query -W -f='${Package} ${Version}\n' "$pkg" 2>/dev/null || echo "$pkg ?"; done
+    (cd "$stage/engine/lib" && ls -R); echo "$fast"; } | sha256sum | cut -c1-16)
+  x_cache=$debs/x11-$x_key.tar.xz
+  echo "$(for pkg in "${x_pkgs[@]}"; do dpkg-query -W -f='${Package}_${Version} ' "$pkg" 2>/dev/null; done)" >>"$stage/debs.txt"
+fi
+if [ $with_x = 1 ] && [ ! -f "$x_cache" ]; then
   echo "gpu-bundle: Xvfb, xkbcomp, Mesa's swrast_dri.so, XKB data" >&2
   xvfb=$(command -v Xvfb) || die "Xvfb not installed (Debian package xvfb)"
   xkbcomp=$(command -v xkbcomp) || die "xkbcomp not installed (Debian package x11-xkb-utils)"
@@ -139,7 +148,6 @@ if [ $with_x = 1 ]; then
   EXISTING="$stage/engine/lib $stage/engine/lib/compat" \
     copy_libs "$stage/x11/lib" "$xvfb" "$xkbcomp" "$dri"
   cp -a /usr/share/X11/xkb "$stage/x11/share/X11/xkb"
-  echo "xvfb $(dpkg-query -W -f='${Version}' xvfb 2>/dev/null || echo '?'), libgl1-mesa-dri $(dpkg-query -W -f='${Version}' libgl1-mesa-dri 2>/dev/null || echo '?')" >>"$stage/debs.txt"
 fi
 
 # Strip the libraries too (most Debian ones are; a few keep symbol tables).
@@ -150,9 +158,16 @@ rm -rf "$out"
 mkdir -p "$out"
 xzopts=(-T1 --x86 --lzma2=preset=9e,dict=64MiB)
 [ $fast = 1 ] && xzopts=(-T2 -1)
-tar -C "$stage/engine" --owner=0 --group=0 -cf - . | xz "${xzopts[@]}" >"$out/engine.tar.xz"
+pack() { tar -C "$1" --sort=name --owner=0 --group=0 -cf - . | xz "${xzopts[@]}"; }
+pack "$stage/engine" >"$out/engine.tar.xz"
 if [ $with_x = 1 ]; then
-  tar -C "$stage/x11" --owner=0 --group=0 -cf - . | xz "${xzopts[@]}" >"$out/x11.tar.xz"
+  if [ ! -f "$x_cache" ]; then
+    pack "$stage/x11" >"$x_cache.tmp"
+    mv "$x_cache.tmp" "$x_cache"
+  else
+    echo "gpu-bundle: Xvfb and Mesa's pieces from the cache ($x_cache)" >&2
+  fi
+  cp "$x_cache" "$out/x11.tar.xz"
 fi
 
 source_dir=$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$build/CMakeCache.txt")
@@ -170,8 +185,8 @@ build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$build/CMakeCache.txt")
   echo "engine.tar.xz:"
   (cd "$stage/engine" && find . -type f -printf '  %10s %p\n' | sort -k2)
   if [ $with_x = 1 ]; then
-    echo "x11.tar.xz (XKB data: $(du -sb "$stage/x11/share" | cut -f1) bytes):"
-    (cd "$stage/x11" && find . -path ./share -prune -o -type f -printf '  %10s %p\n' | sort -k2)
+    echo "x11.tar.xz (files in bin/, dri/, lib/; the XKB data in share/):"
+    tar -tvJf "$out/x11.tar.xz" | awk '$1 !~ /^d/ && $6 !~ /share/ { printf "  %10s %s\n", $3, $6 }'
   fi
 } >"$out/MANIFEST.txt"
 

@@ -17,6 +17,7 @@ std::array<int, 2> group_counts(int width, int height, int local_x, int local_y)
 
 void dispatch_2d(const Program& program, int width, int height) {
   const std::array<int, 3> local = program.local_size();
+  if (local[0] == 0) throw GlError("dispatch_2d: not a compute program");
   if (local[2] != 1)
     throw GlError("dispatch_2d: the program's local_size_z is " + std::to_string(local[2]) +
                   ", not 1");

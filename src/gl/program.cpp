@@ -158,6 +158,7 @@ Program& Program::operator=(Program&& o) noexcept {
   if (this != &o) {
     if (id_) glDeleteProgram(id_);
     id_ = o.id_;
+    local_size_ = o.local_size_;
     o.id_ = 0;
   }
   return *this;
@@ -165,7 +166,12 @@ Program& Program::operator=(Program&& o) noexcept {
 
 Program Program::compute(std::span<const ShaderSource> sources, std::string_view header) {
   GLuint cs = compile(GL_COMPUTE_SHADER, "compute", sources, header);
-  return Program(link({cs}, names_of(sources)));
+  Program p(link({cs}, names_of(sources)));
+  GLint size[3] = {0, 0, 0};
+  glGetProgramiv(p.id_, GL_COMPUTE_WORK_GROUP_SIZE, size);
+  check_errors("glGetProgramiv(GL_COMPUTE_WORK_GROUP_SIZE)");
+  p.local_size_ = {size[0], size[1], size[2]};
+  return p;
 }
 
 Program Program::graphics(std::span<const ShaderSource> vertex,
@@ -182,13 +188,6 @@ Program Program::graphics(std::span<const ShaderSource> vertex,
   for (const ShaderSource& s : fragment)
     names.push_back(s.name);
   return Program(link({vs, fs}, names));
-}
-
-std::array<int, 3> Program::local_size() const {
-  GLint size[3] = {0, 0, 0};
-  glGetProgramiv(id_, GL_COMPUTE_WORK_GROUP_SIZE, size);
-  check_errors("glGetProgramiv(GL_COMPUTE_WORK_GROUP_SIZE)");
-  return {size[0], size[1], size[2]};
 }
 
 GLint Program::uniform_location(std::string_view name) const {

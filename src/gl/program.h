@@ -57,7 +57,7 @@ class Program {
  public:
   Program() = default;
   ~Program();
-  Program(Program&& o) noexcept : id_(o.id_) { o.id_ = 0; }
+  Program(Program&& o) noexcept : id_(o.id_), local_size_(o.local_size_) { o.id_ = 0; }
   Program& operator=(Program&& o) noexcept;
   Program(const Program&) = delete;
   Program& operator=(const Program&) = delete;
@@ -70,8 +70,8 @@ class Program {
   GLuint id() const { return id_; }
   void use() const { glUseProgram(id_); }
 
-  // The compute shader's local_size (x, y, z).
-  std::array<int, 3> local_size() const;
+  // The compute shader's local_size (x, y, z), read once at link time; 0s for graphics.
+  std::array<int, 3> local_size() const { return local_size_; }
 
   // The location of an active uniform; GlError naming it when the program has none (the
   // compiler drops unused uniforms, so a typo or an unused one is caught here).
@@ -96,6 +96,7 @@ class Program {
   explicit Program(GLuint id) : id_(id) {}
   GLuint block_index(std::string_view name) const;
   GLuint id_ = 0;
+  std::array<int, 3> local_size_ = {0, 0, 0};
 };
 
 }  // namespace sg::gl
