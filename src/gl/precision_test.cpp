@@ -2,8 +2,10 @@
 // same float inputs as std::sin, std::exp, std::sqrt in float, both against double. It
 // states the bounds the GL engine may rely on and prints the measured errors (recorded in
 // docs/gpu.md): exp within (4 + 2|x|) ULP (GLSL's ARB_shader_precision, core since 4.1, says
-// 3 + 2|x|, which llvmpipe exceeds by a little near 0), sqrt within 3 ULP, sin within 2^-11
-// absolute on [-pi, pi] (GLSL states nothing for it; this is Vulkan's bound). Larger arguments of
+// 3 + 2|x|, which llvmpipe exceeds by a little near 0), sqrt within 5 ULP (GLSL: as
+// 1 / inversesqrt(x), 2 ULP then a division of 2.5), sin within 2^-11 absolute on [-pi, pi]
+// (GLSL states nothing for it; this is Vulkan's bound), x * b - x within 3 ULP whether
+// rounded once or twice. Larger arguments of
 // sin are measured, not bounded: the engine reduces its phases in double on the host.
 #include <gtest/gtest.h>
 
@@ -119,7 +121,7 @@ TEST_F(Precision, ExpWithinGlslBound) {
   EXPECT_LE(worst_allowed, 1.0);
 }
 
-TEST_F(Precision, SqrtWithinThreeUlp) {
+TEST_F(Precision, SqrtWithinFiveUlp) {
   const Results r = run(0.0f, 1e4f, 1 << 16, 4);
   MaxError gpu, cpu;
   for (size_t i = 0; i < r.x.size(); ++i) {
@@ -128,15 +130,18 @@ TEST_F(Precision, SqrtWithinThreeUlp) {
     cpu.add(std::sqrt(std::abs(r.x[i])), ref);
   }
   print("sqrt, [0, 1e4]", gpu, cpu);
-  EXPECT_LE(gpu.ulp, 3.0);
+  EXPECT_LE(gpu.ulp, 5.0);
 }
 
 TEST_F(Precision, MultiplyAddContraction) {
   // x * b - x: rounded twice in C++ (no contraction at -O2 on x86-64 without -ffp-contract),
   // once if the GPU fuses it into an fma. Counts which the GPU did; either is legal GLSL
-  // (without `precise`), which is why GPU-CPU parity is checked with tolerances.
+  // (without `precise`), which is why GPU-CPU parity is checked with tolerances. Both are
+  // within 3 ULP of the exact value (the product's rounding is up to 2 ULP of the result;
+  // the subtraction is exact, Sterbenz).
   const Results r = run(-1e3f, 1e3f, 1 << 16, 5);
   size_t separate = 0, fused = 0, other = 0;
+  double worst = 0;
   for (size_t i = 0; i < r.x.size(); ++i) {
     const float x = r.x[i];
     volatile float product = x * kB;  // volatile: keep the two roundings
@@ -149,10 +154,12 @@ TEST_F(Precision, MultiplyAddContraction) {
       ++fused;
     else
       ++other;
+    worst = std::max(worst, ulps(g, double(x) * double(kB) - double(x)));
   }
-  std::printf("x * b - x: %zu as two roundings, %zu as one (fma), %zu neither, of %zu\n", separate,
-              fused, other, r.x.size());
-  EXPECT_EQ(other, 0u);
+  std::printf(
+      "x * b - x: %zu as two roundings, %zu as one (fma), %zu neither, of %zu; max %.3g ulp\n",
+      separate, fused, other, r.x.size(), worst);
+  EXPECT_LE(worst, 3.0);
 }
 
 }  // namespace

@@ -104,14 +104,70 @@ int count_lines(std::string_view text) {
 
 }  // namespace
 
+namespace {
+
+// `#include "name"` at the start of a line (after blanks): the name, else "".
+std::string include_target(std::string_view line) {
+  size_t k = line.find_first_not_of(" \t");
+  if (k == std::string_view::npos || line.substr(k, 8) != "#include") return "";
+  k = line.find('"', k + 8);
+  const size_t end = k == std::string_view::npos ? k : line.find('"', k + 1);
+  if (end == std::string_view::npos) return "";
+  return std::string(line.substr(k + 1, end - k - 1));
+}
+
+void expand(const std::vector<EmbeddedFile>& table, const std::string& name,
+            const std::string& from, std::vector<std::string>& stack,
+            std::vector<std::string>& done, std::vector<ShaderSource>& out) {
+  for (const std::string& s : stack)
+    if (s == name) throw Error(from + ": #include \"" + name + "\" makes a cycle");
+  for (const std::string& d : done)
+    if (d == name) throw Error(from + ": #include \"" + name + "\": included twice");
+  const EmbeddedFile* file = nullptr;
+  for (const EmbeddedFile& f : table)
+    if (f.name == name) file = &f;
+  if (!file) throw Error(from + ": #include \"" + name + "\": no such embedded file");
+  stack.push_back(name);
+  done.push_back(name);
+  const std::string_view text = file->bytes;
+  ShaderSource piece{name, "", 1};
+  int line = 1;
+  for (size_t pos = 0; pos < text.size(); ++line) {
+    size_t end = text.find('\n', pos);
+    end = end == std::string_view::npos ? text.size() : end + 1;
+    const std::string_view l = text.substr(pos, end - pos);
+    const std::string target = include_target(l);
+    if (target.empty()) {
+      piece.text += l;
+    } else {
+      if (!piece.text.empty()) out.push_back(piece);
+      expand(table, target, name + ":" + std::to_string(line), stack, done, out);
+      piece = ShaderSource{name, "", line + 1};
+    }
+    pos = end;
+  }
+  if (!piece.text.empty()) out.push_back(piece);
+  stack.pop_back();
+}
+
+}  // namespace
+
+std::vector<ShaderSource> expand_includes(const std::vector<EmbeddedFile>& table,
+                                          std::string_view root) {
+  std::vector<std::string> stack, done;
+  std::vector<ShaderSource> out;
+  expand(table, std::string(root), "expand_includes", stack, done, out);
+  return out;
+}
+
 AssembledShader assemble_shader(std::span<const ShaderSource> sources, std::string_view header) {
   AssembledShader a;
   a.text = "#version 450 core\n";
   a.text += header;
   if (a.text.back() != '\n') a.text += '\n';
-  a.parts.push_back({"<header>", 1});
+  a.parts.push_back({"<header>", 1, 1});
   for (const ShaderSource& s : sources) {
-    a.parts.push_back({s.name, count_lines(a.text) + 1});
+    a.parts.push_back({s.name, count_lines(a.text) + 1, s.first_line});
     a.text += s.text;
     if (!s.text.empty() && s.text.back() != '\n') a.text += '\n';
   }
@@ -123,7 +179,7 @@ std::string AssembledShader::locate(int line) const {
   for (const Part& p : parts)
     if (p.first_line <= line) part = &p;
   if (!part) return "<line " + std::to_string(line) + ">";
-  return part->name + ":" + std::to_string(line - part->first_line + 1);
+  return part->name + ":" + std::to_string(line - part->first_line + part->source_line);
 }
 
 std::string map_shader_log(std::string_view log, const AssembledShader& shader) {

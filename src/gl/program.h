@@ -30,16 +30,27 @@ namespace sg::gl {
 struct ShaderSource {
   std::string name;  // the file it came from, as the logs name it
   std::string text;
+  int first_line = 1;  // the line of that file the text begins at
 };
 
 // The source called `name` in an embedded table (cmake/sg_embed.cmake).
 ShaderSource embedded_source(const std::vector<EmbeddedFile>& table, std::string_view name);
 
+// The file `root` of an embedded table with its `#include "name"` lines (names as in the
+// table, e.g. "kernel/waves.glsl") replaced by those files, recursively: the pieces in
+// order, each with its file's name and first line, so that errors name the included file
+// and line. A file not in the table, an include cycle or a file included twice (the kernel's
+// files have no include guards, as in C++ it would not compile) throws an sg::Error naming
+// the file and the line of the include.
+std::vector<ShaderSource> expand_includes(const std::vector<EmbeddedFile>& table,
+                                          std::string_view root);
+
 // The text handed to the driver and where each part begins.
 struct AssembledShader {
   struct Part {
-    std::string name;  // "<header>" for the #version line and the header
-    int first_line;    // line of the text (from 1) that is the part's line 1
+    std::string name;     // "<header>" for the #version line and the header
+    int first_line;       // line of the text (from 1) where the part begins
+    int source_line = 1;  // the line of its file that is
   };
   std::string text;  // "#version 450 core\n" + header + each source (with a final newline)
   std::vector<Part> parts;

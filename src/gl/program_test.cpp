@@ -35,6 +35,62 @@ TEST(ShaderAssembly, TextAndLineTable) {
   EXPECT_EQ(a.locate(0), "<line 0>");
 }
 
+TEST(ShaderAssembly, PartsStartingMidFile) {
+  const ShaderSource sources[] = {{"a.glsl", "x\n", 1}, {"b.glsl", "y\nz\n", 7}};
+  const AssembledShader a = assemble_shader(sources, "");
+  EXPECT_EQ(a.locate(2), "a.glsl:1");
+  EXPECT_EQ(a.locate(3), "b.glsl:7");
+  EXPECT_EQ(a.locate(4), "b.glsl:8");
+}
+
+// kernel.glsl includes constants.glsl and waves.glsl (which includes nothing), with text
+// before, between and after.
+const std::vector<EmbeddedFile> kIncludeTable = {
+    {"kernel/kernel.glsl",
+     "// kernel\n#include \"kernel/constants.glsl\"\n  #include \"kernel/waves.glsl\"\nfloat k;\n"},
+    {"kernel/constants.glsl", "const float c = 1.0;\n"},
+    {"kernel/waves.glsl", "// waves\nfloat w;\n"},
+    {"cycle/a.glsl", "#include \"cycle/b.glsl\"\n"},
+    {"cycle/b.glsl", "\n#include \"cycle/a.glsl\"\n"},
+    {"twice.glsl", "#include \"kernel/constants.glsl\"\n#include \"kernel/constants.glsl\"\n"},
+    {"missing.glsl", "x\n#include \"kernel/nope.glsl\"\n"},
+};
+
+TEST(ShaderIncludes, ExpandedInOrderWithTheirLines) {
+  const std::vector<ShaderSource> parts = expand_includes(kIncludeTable, "kernel/kernel.glsl");
+  ASSERT_EQ(parts.size(), 4u);
+  EXPECT_EQ(parts[0].name, "kernel/kernel.glsl");
+  EXPECT_EQ(parts[0].text, "// kernel\n");
+  EXPECT_EQ(parts[0].first_line, 1);
+  EXPECT_EQ(parts[1].name, "kernel/constants.glsl");
+  EXPECT_EQ(parts[1].first_line, 1);
+  EXPECT_EQ(parts[2].name, "kernel/waves.glsl");
+  EXPECT_EQ(parts[3].name, "kernel/kernel.glsl");
+  EXPECT_EQ(parts[3].text, "float k;\n");
+  EXPECT_EQ(parts[3].first_line, 4);
+  const AssembledShader a = assemble_shader(parts, "");
+  // Text: #version, "// kernel", c, "// waves", "float w;", "float k;".
+  EXPECT_EQ(a.locate(3), "kernel/constants.glsl:1");
+  EXPECT_EQ(a.locate(5), "kernel/waves.glsl:2");
+  EXPECT_EQ(a.locate(6), "kernel/kernel.glsl:4");
+}
+
+TEST(ShaderIncludes, ErrorsNameTheInclude) {
+  auto message = [](const char* root) {
+    try {
+      expand_includes(kIncludeTable, root);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("cycle/a.glsl"), "cycle/b.glsl:2: #include \"cycle/a.glsl\" makes a cycle");
+  EXPECT_EQ(message("twice.glsl"),
+            "twice.glsl:2: #include \"kernel/constants.glsl\": included twice");
+  EXPECT_EQ(message("missing.glsl"),
+            "missing.glsl:2: #include \"kernel/nope.glsl\": no such embedded file");
+}
+
 TEST(ShaderLog, MesaFormat) {
   EXPECT_EQ(map_shader_log("0:8(12): error: `undeclared' undeclared", three_parts()),
             "kernel/waves.glsl:3(12): error: `undeclared' undeclared");
@@ -90,6 +146,18 @@ TEST_F(ShaderCompile, ErrorNamesTheSecondSourceAndItsLine) {
     EXPECT_NE(what.find("undeclared_name"), std::string::npos) << what;
     EXPECT_EQ(what.find("prelude.glsl:"), std::string::npos) << what;
     std::cout << what << "\n";
+  }
+}
+
+TEST_F(ShaderCompile, ErrorInAnIncludedFileNamesIt) {
+  const std::vector<EmbeddedFile> table = {
+      {"main.glsl", "layout(local_size_x = 1) in;\n#include \"lib.glsl\"\nvoid main() {}\n"},
+      {"lib.glsl", "// lib\n\nfloat f() { return missing_name; }\n"}};
+  try {
+    Program::compute(expand_includes(table, "main.glsl"));
+    FAIL() << "compiled";
+  } catch (const GlError& e) {
+    EXPECT_NE(std::string(e.what()).find("lib.glsl:3"), std::string::npos) << e.what();
   }
 }
 
