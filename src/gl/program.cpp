@@ -1,5 +1,6 @@
 #include "gl/program.h"
 
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 #include <regex>
 
@@ -29,10 +30,11 @@ std::string program_log(GLuint program) {
   return log;
 }
 
+// The files of the sources, each once (a file split by its includes is several sources).
 std::vector<std::string> names_of(std::span<const ShaderSource> sources) {
   std::vector<std::string> names;
   for (const ShaderSource& s : sources)
-    names.push_back(s.name);
+    if (std::find(names.begin(), names.end(), s.name) == names.end()) names.push_back(s.name);
   return names;
 }
 
