@@ -8,16 +8,21 @@
 # the bundle carries come from the bundle), copies the checkout and .gpu into it, and runs
 # scripts/gpu-run.sh there under chroot. Needs root (chroot, mount). Logs in .gpu-out/bare/.
 #
-#   sudo scripts/gpu-bare-check.sh [--no-libstdcxx] [--x] [-- COMMAND...]
+#   sudo scripts/gpu-bare-check.sh [--no-libstdcxx] [--no-xz] [--x] [-- COMMAND...]
 #
-# Arguments after --no-libstdcxx go to gpu-run.sh. --no-libstdcxx leaves libstdc++ and
-# libgcc_s out of the root, so that gpu-run.sh must take the bundle's (lib/compat).
+# The arguments after the first two options go to gpu-run.sh. --no-libstdcxx leaves
+# libstdc++ and libgcc_s out of the root, so that gpu-run.sh must take the bundle's
+# (lib/compat); --no-xz leaves the xz program out and puts python3 in, which then unpacks.
 set -euo pipefail
 no_cxx=0
-if [ "${1:-}" = --no-libstdcxx ]; then
-  no_cxx=1
-  shift
-fi
+no_xz=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    --no-libstdcxx) no_cxx=1; shift ;;
+    --no-xz) no_xz=1; shift ;;
+    *) break ;;
+  esac
+done
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 [ "$(id -u)" = 0 ] || { echo "gpu-bare-check: needs root (chroot, mount)" >&2; exit 1; }
 [ -f "$repo/.gpu/engine.tar.xz" ] || { echo "gpu-bare-check: no .gpu bundle (scripts/gpu-bundle.sh)" >&2; exit 1; }
@@ -62,9 +67,22 @@ copy_system() {
 tools=(bash env cat cp mkdir rm ln ls sed awk grep tar xz mktemp mkfifo date dirname basename
   tee sort head tail cut tr sleep stat du find wc id uname realpath)
 paths=()
-for t in "${tools[@]}"; do paths+=("$(readlink -f "$(type -P "$t")")"); done
+if [ $no_xz = 1 ]; then
+  # Debian's python3 and its standard library (no site packages).
+  tools=("${tools[@]/#xz/}")
+  py=/usr/bin/python3
+  stdlib=$("$py" -c 'import sysconfig; print(sysconfig.get_paths()["stdlib"])')
+  mkdir -p "$root$stdlib"
+  (cd "$stdlib" && tar --exclude=./site-packages --exclude=./dist-packages --exclude=./test -cf - .) |
+    tar -C "$root$stdlib" -xf -
+  paths+=("$(readlink -f "$py")" "$("$py" -c 'import _lzma; print(_lzma.__file__)')")
+  cp -L "$(ldconfig -p | awk '$1 == "liblzma.so.5" { print $NF; exit }')" "$root$lib/"
+  ln -s "$(basename "$(readlink -f "$py")")" "$root/usr/bin/python3"
+fi
+for t in "${tools[@]}"; do [ -n "$t" ] && paths+=("$(readlink -f "$(type -P "$t")")"); done
 copy_system "${paths[@]}"
 for t in "${tools[@]}"; do
+  [ -n "$t" ] || continue
   [ -e "$root/usr/bin/$t" ] || ln -s "$(readlink -f "$(type -P "$t")")" "$root/usr/bin/$t"
 done
 ln -sf bash "$root/usr/bin/sh"

@@ -47,10 +47,21 @@ die() { say "$*"; exit 1; }
 root=${SG_GPU_ROOT:-/tmp/sunglint-gpu}
 rm -rf "$root"
 mkdir -p "$root"
-tar -C "$root" -xJf "$bundle/engine.tar.xz" || die "cannot unpack $bundle/engine.tar.xz"
+# tar -J needs the xz program, which a bare image may lack; Python's tarfile reads xz too.
+unpack() {
+  if command -v xz >/dev/null 2>&1; then
+    tar -C "$root" -xJf "$1"
+  elif command -v python3 >/dev/null 2>&1; then
+    python3 -c 'import sys, tarfile; tarfile.open(sys.argv[1]).extractall(sys.argv[2])' "$1" "$root"
+  else
+    say "neither xz nor python3 here"
+    return 1
+  fi
+}
+unpack "$bundle/engine.tar.xz" || die "cannot unpack $bundle/engine.tar.xz"
 if [ $with_x = 1 ]; then
   [ -f "$bundle/x11.tar.xz" ] || die "--x: $bundle/x11.tar.xz missing (bundle made with --no-x)"
-  tar -C "$root" -xJf "$bundle/x11.tar.xz" || die "cannot unpack $bundle/x11.tar.xz"
+  unpack "$bundle/x11.tar.xz" || die "cannot unpack $bundle/x11.tar.xz"
 fi
 sed -n '1,8p' "$bundle/MANIFEST.txt" >>"$log"
 
