@@ -4,9 +4,10 @@
 // docs/gpu.md): exp within (4 + 2|x|) ULP (GLSL's ARB_shader_precision, core since 4.1, says
 // 3 + 2|x|, which llvmpipe exceeds by a little near 0), sqrt within 5 ULP (GLSL: as
 // 1 / inversesqrt(x), 2 ULP then a division of 2.5), sin within 2^-11 absolute on [-pi, pi]
-// (GLSL states nothing for it; this is Vulkan's bound), x * b - x within 3 ULP whether
-// rounded once or twice. Larger arguments of
-// sin are measured, not bounded: the engine reduces its phases in double on the host.
+// (GLSL states nothing for it; this is Vulkan's bound) and within 1e-3 and 1e-2 up to 100
+// and 1e4 radians (loose: a GPU's fast sin loses accuracy with the argument, which is why
+// the engine reduces its phases in double on the host), x * b - x within 3 ULP whether
+// rounded once or twice.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -59,11 +60,14 @@ double ulps(double got, double ref) {
   return std::abs(got - ref) / ulp;
 }
 
+// The largest errors; a NaN result makes them NaN (std::max would drop it), which fails
+// every bound.
 struct MaxError {
   double abs = 0, ulp = 0;
   void add(double got, double ref) {
-    abs = std::max(abs, std::abs(got - ref));
-    ulp = std::max(ulp, ulps(got, ref));
+    const double e = std::abs(got - ref), u = ulps(got, ref);
+    if (std::isnan(e) || e > abs) abs = e;  // once NaN, stays NaN
+    if (std::isnan(u) || u > ulp) ulp = u;
   }
 };
 
@@ -86,7 +90,9 @@ TEST_F(Precision, SinOnMinusPiToPi) {
 }
 
 TEST_F(Precision, SinOnLargeArguments) {
-  // Measured only: phases of the waves reach thousands of radians before reduction.
+  // Phases of the waves reach thousands of radians before reduction. Loose bounds, for a
+  // broken sin: a GPU's fast sin reduces x / 2 pi in float, an error of about |x| 2^-24
+  // radians (6e-4 at 1e4); llvmpipe measured 8e-8.
   for (float range : {100.0f, 1e4f}) {
     const Results r = run(-range, range, 1 << 16, 2);
     MaxError gpu, cpu;
@@ -98,7 +104,7 @@ TEST_F(Precision, SinOnLargeArguments) {
     char what[64];
     std::snprintf(what, sizeof what, "sin, [-%g, %g]", range, range);
     print(what, gpu, cpu);
-    EXPECT_LE(gpu.abs, 2.0);  // a value in [-1, 1] at all
+    EXPECT_LE(gpu.abs, range <= 100.0f ? 1e-3 : 1e-2) << what;
   }
 }
 
