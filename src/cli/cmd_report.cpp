@@ -8,6 +8,8 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "base/output_path.h"
+#include "cli/args.h"
 #include "cli/commands.h"
 #include "report/results.h"
 
@@ -30,9 +32,18 @@ std::string relative_to(const fs::path& target, const fs::path& from_file) {
 }
 
 void run_report(const ReportArgs& a) {
-  if (a.markdown.empty() && a.readme.empty()) {
-    throw Error("report: give --markdown FILE and/or --readme FILE");
+  check_usage([&] {
+    if (a.markdown.empty() && a.readme.empty()) {
+      throw Error("report: give --markdown FILE and/or --readme FILE");
+    }
+  });
+  // Every output can be written before anything is.
+  if (!a.markdown.empty()) check_output_file(a.markdown, false);
+  if (!a.readme.empty()) {
+    check_readable_file(a.readme);
+    check_output_file(a.readme, false);
   }
+  if (!a.images.empty() && !a.no_images) prepare_output_folder(a.images, "--images");
   StudyResults r = results_from_json(read_file(a.results), a.results);
   const fs::path study = fs::absolute(a.results).parent_path();
   // Grid pictures: copied into --images when given, else linked inside the study folder.
@@ -45,7 +56,6 @@ void run_report(const ReportArgs& a) {
     }
     fs::path src = study / sc.grid;
     if (!a.images.empty()) {
-      fs::create_directories(a.images);
       fs::path dst = fs::path(a.images) / src.filename();
       write_file_atomic(dst.string(), read_file(src.string()));
       src = dst;

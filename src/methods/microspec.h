@@ -1,6 +1,6 @@
 // The micro-specular highlight (`--method microspec`): Podee, Max, Iwasaki, Dobashi,
-// "Micro-specular-highlight real-time rendering" (shared/papers/
-// podee-micro-specular-highlight.txt), Sec. 3, on the water of the scene spec.
+// "Micro-specular-highlight real-time rendering" (docs/references.md),
+// Sec. 3, on the water of the scene spec.
 //
 // Reflection vector selection (Sec. 3.1). At the frame time t_f, the camera rays through
 // the pixel's four corners meet the water (flat or displaced, as the scene says); each

@@ -1,7 +1,7 @@
 // Geometric specular anti-aliasing (`--method specaa`): the filtering kernel of Kaplanyan,
 // Hill, Patney, Lefohn 2016 (HPG) with the projected-half-vector derivatives of Tokuyoshi
-// and Kaplanyan 2019 (I3D), as Chermain et al. 2021 use them (shared/papers/
-// chermain2021-geometric-glint-antialiasing.txt, Sec. 4.1, 6.1, Eqs. 7, 20-21). The kernel
+// and Kaplanyan 2019 (I3D), as Chermain et al. 2021 use them (Sec. 4.1,
+// 6.1, Eqs. 7, 20-21; docs/references.md). The kernel
 // itself, its constants and its conversion to the NDF plane: shading/specular_aa.h.
 //
 // Per pixel, at the frame time t_f (stateless: one frame, no history):

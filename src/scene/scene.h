@@ -1,7 +1,7 @@
-// A scene as the file format `sunglint-scene/1` defines it (shared spec
-// scene-format.md): the water waves, the camera, the light, sky and sea radiances, and
-// the animation's timing. Values are stored as given (directions not yet normalised);
-// the models built from a scene (waves.h, camera.h, light.h) derive what rendering needs.
+// A scene as the file format `sunglint-scene/1` defines it (docs/scene-format.md): the
+// water waves, the camera, the light, sky and sea radiances, and the animation's timing.
+// Values are stored as given (directions not yet normalised); the models built from a
+// scene (waves.h, camera.h, light.h) derive what rendering needs.
 #pragma once
 
 #include <string>
