@@ -30,7 +30,11 @@ double BrunetonMethod::shade(const FrameContext& ctx, int i, int j) const {
   vec3 P = rest.point;
   if (m.displaced()) {
     const RayHit hit = intersect_displaced(m.waves.weighted(w), o, d, t);
-    if (!hit.hit) return miss_radiance(m, d);
+    if (!hit.hit) {
+      if (hit.exhausted) count_fallback();  // a march that found no water: the sky
+      return miss_radiance(m, d);
+    }
+    if (!(hit.s > 0)) return fallback(ctx, i, j);  // the camera is under the surface
     P = hit.point;
   }
   const vec3 v = normalize(o - P);
@@ -68,8 +72,9 @@ double BrunetonMethod::shade(const FrameContext& ctx, int i, int j) const {
                 : effective_fresnel_integral(v_ts, sigma2);
   }
   const double below = below_horizon_fraction(v, n, tx, ty, sigma2);
-  return combine_radiance(m, F_bar, 0, below) +
-         F_sun * x * (m.light.radiance - m.scene.sky_radiance);
+  return finite_or_fallback(
+      combine_radiance(m, F_bar, 0, below) + F_sun * x * (m.light.radiance - m.scene.sky_radiance),
+      ctx, i, j);
 }
 
 }  // namespace sg

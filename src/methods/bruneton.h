@@ -46,14 +46,19 @@
 // A pixel whose ray misses the water (on the rest plane) sees the sky (miss_radiance).
 #pragma once
 
+#include "methods/fallback.h"
 #include "methods/method.h"
 
 namespace sg {
 
-class BrunetonMethod final : public Method {
+// Fallback (methods/fallback.h): where the camera is under the filtered surface (the hit is the
+// camera: no view direction) or the BRDF's value is not finite, the pixel gets the spec's radiance
+// along its centre ray (what `point` returns) and is counted.
+class BrunetonMethod final : public Method, public FallbackCounter {
  public:
   explicit BrunetonMethod(BrunetonOptions o) : options_(o) {}
   std::string name() const override { return "bruneton"; }
+  void begin_frame(const FrameContext&) override { reset_fallbacks(); }
   double shade(const FrameContext& ctx, int i, int j) const override;
 
  private:

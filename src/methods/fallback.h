@@ -4,16 +4,25 @@
 // finite), it falls back to a defined value (each method's header says which) and counts
 // the pixel here, so that `sunglint render` can report how many pixels of a frame did.
 //
+// The fallback value is the spec's radiance along the ray through the pixel centre at the
+// frame time (what `point` returns): defined wherever the scene is valid, also with the
+// camera under the surface (the spec's convention: the ray hits at the camera).
+//
 // A method opts in by deriving from FallbackCounter: it calls reset_fallbacks() in
-// begin_frame and count_fallback() from shade (any thread). fallback_pixels(method) reads
-// the count of the last frame, or -1 for a method that does not count.
+// begin_frame and fallback() (any thread) where its model fails, or finite_or_fallback()
+// on its value. fallback_pixels(method) reads the count of the last frame, or -1 for a
+// method that does not count.
 #pragma once
 
 #include <atomic>
+#include <cmath>
 
 #include "methods/method.h"
 
 namespace sg {
+
+// The radiance along the ray through the centre of pixel (i, j) at the frame time.
+double centre_ray_radiance(const FrameContext& ctx, int i, int j);
 
 class FallbackCounter {
  public:
@@ -23,6 +32,15 @@ class FallbackCounter {
  protected:
   void reset_fallbacks() { fallbacks_.store(0, std::memory_order_relaxed); }
   void count_fallback() const { fallbacks_.fetch_add(1, std::memory_order_relaxed); }
+  // Counts pixel (i, j) and returns its fallback value.
+  double fallback(const FrameContext& ctx, int i, int j) const {
+    count_fallback();
+    return centre_ray_radiance(ctx, i, j);
+  }
+  // `value` when finite, else the fallback.
+  double finite_or_fallback(double value, const FrameContext& ctx, int i, int j) const {
+    return std::isfinite(value) ? value : fallback(ctx, i, j);
+  }
 
  private:
   mutable std::atomic<long> fallbacks_{0};

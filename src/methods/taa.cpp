@@ -32,6 +32,7 @@ void TaaMethod::begin_frame(const FrameContext& ctx) {
                        history_.height != m.height())) {
     reset();  // a cut: the history belongs to another sequence
   }
+  reset_fallbacks();
   jitter_ = taa_jitter(ctx.time.frame, options_.jitter_count);
   t_prev_ = m.scene.frame_time(ctx.time.frame - 1);
   motion_.assign(static_cast<size_t>(m.width()) * m.height(), vec2(0));
@@ -92,7 +93,13 @@ void TaaMethod::end_frame(const FrameContext& ctx, Image& img) {
         if (o.clamp != TaaClamp::none) {
           h = clip_to_box(h, neighbourhood_box(current, i, j, o.clamp, o.gamma));
         }
-        img.at(i, j) = static_cast<float>(taa_blend(h, c, o.alpha));
+        const double out = taa_blend(h, c, o.alpha);
+        if (std::isfinite(out)) {
+          img.at(i, j) = static_cast<float>(out);
+        } else {
+          count_fallback();
+          img.at(i, j) = static_cast<float>(c);
+        }
       }
     }
   });
