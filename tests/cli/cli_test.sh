@@ -238,28 +238,24 @@ expect_rc "compare into a file" 1 "--out: '$work/r1.exr' is not a folder" \
 expect_rc "report into a missing folder" 1 "does not exist" \
   "$bin" report "$work/no_results.json" --markdown "$work/nodir3/r.md"
 
-# Displaced water with the camera under a crest: every method renders finite pixels
-# (diff refuses non-finite input, so diffing each image against itself checks them).
+# Displaced water with the camera under a crest: every method renders (the writers refuse
+# a non-finite pixel, so exit code 0 means every pixel is finite).
 for m in point reference supersample staa lean taa microspec specaa bruneton; do
   expect_rc "under the crests: $m" 0 "-> $work/below_$m.pfm" \
     "$bin" render "$edge/camera_below_crests.json" -m "$m" --width 48 --samples 2x2x2 \
     --lean-size 256 --taa-warmup 2 -q -o "$work/below_$m.pfm"
-  expect_rc "under the crests finite: $m" 0 "rmse     0" \
-    "$bin" diff "$work/below_$m.pfm" "$work/below_$m.pfm"
 done
+expect_rc "under the crests: finite" 0 "rmse     0" \
+  "$bin" diff "$work/below_staa.pfm" "$work/below_staa.pfm"
 # The baselines count the pixels where their model fails (here: all of frame 0).
 expect_rc "fallback pixels counted" 0 ", 1296 fallback pixels" \
   "$bin" render "$edge/camera_below_crests.json" -m lean --lean-size 256 --width 48 -q \
   -o "$work/below_lean.pfm"
-# Scenes at the edges of every range: finite, in bounded time, for every method.
-for f in "$edge"/*.json; do
-  n=$(basename "$f" .json)
-  for m in point staa lean microspec specaa bruneton; do
-    [ "$n" = camera_below_crests ] && continue
-    expect_rc "edge $n: $m" 0 "-> $work/edge.pfm" \
-      timeout 60 "$bin" render "$f" -m "$m" --width 32 --lean-size 256 -q -o "$work/edge.pfm"
-    expect_rc "edge $n finite: $m" 0 "rmse     0" "$bin" diff "$work/edge.pfm" "$work/edge.pfm"
-  done
+# The shortest and longest waves at the breaking steepness on displaced water: bounded
+# work (every method on every edge scene: EdgeScenes.EveryMethodIsFinite).
+for m in point staa; do
+  expect_rc "extreme waves: $m" 0 "-> $work/extreme.pfm" \
+    timeout 60 "$bin" render "$edge/extreme_waves.json" -m "$m" --width 64 -q -o "$work/extreme.pfm"
 done
 
 # diff refuses non-finite input, naming the file and the pixel count.
@@ -365,8 +361,17 @@ if grep -q "path-integral" <<<"$out"; then
 else
   passes=$((passes + 1))
 fi
-expect_rc "--cache-dir" 0 "cached them in $work/cache_flag/path_tables.bin" \
-  "$bin" render "$scene" -m staa --width 16 -q -o "$work/c.pfm" --cache-dir "$work/cache_flag"
+# --cache-dir wins over the environment: with the environment pointing at a folder that
+# cannot exist, the tables are read from --cache-dir's folder, silently (no generation:
+# generating them takes a minute in the sanitizer build).
+out=$(SUNGLINT_CACHE_DIR=/proc/none "$bin" render "$scene" -m staa --width 16 -q -o "$work/c.pfm" \
+  --cache-dir "$work/cache_env" 2>&1)
+if [ $? -eq 0 ] && ! grep -q "path-integral" <<<"$out"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL --cache-dir not used: $out"
+  fails=$((fails + 1))
+fi
 
 # A clone stands alone: no paths into ../shared and no internal issue numbers in the docs,
 # the README or the code's comments. (The files listed are being rewritten elsewhere;
