@@ -66,4 +66,22 @@ void prepare_output_folder(const std::string& dir, const std::string& what) {
   }
 }
 
+void check_output_folder(const std::string& dir, const std::string& what) {
+  if (dir.empty()) throw Error(what + ": give a folder");
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
+    throw Error(what + ": '" + dir + "' is not a folder");
+  }
+  fs::path p = fs::absolute(dir, ec).lexically_normal();
+  while (!p.empty() && !fs::exists(p, ec) && p != p.root_path())
+    p = p.parent_path();
+  if (!fs::is_directory(p, ec)) {
+    throw Error(what + ": cannot create folder '" + dir + "': '" + p.string() +
+                "' is not a folder");
+  }
+  if (const std::string why = probe_writable(p); !why.empty()) {
+    throw Error(what + ": cannot write in folder '" + p.string() + "': " + why);
+  }
+}
+
 }  // namespace sg

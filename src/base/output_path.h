@@ -18,4 +18,8 @@ bool check_output_file(const std::string& path, bool create_folder, const std::s
 // naming `what` (a flag such as "--out") and the folder.
 void prepare_output_folder(const std::string& dir, const std::string& what);
 
+// Checks, without creating anything, that the folder `dir` exists and accepts new files or
+// can be created (its nearest existing ancestor is a folder that accepts new files).
+void check_output_folder(const std::string& dir, const std::string& what);
+
 }  // namespace sg

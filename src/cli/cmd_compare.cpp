@@ -131,8 +131,9 @@ void run_compare(const CompareArgs& a) {
     });
     c.scenes.push_back({path, s});
   }
-  prepare_output_folder(a.out, "--out");
-  if (!a.cache.empty()) prepare_output_folder(a.cache, "--cache");
+  // The study creates them once it has checked its configuration.
+  check_output_folder(a.out, "--out");
+  if (!a.cache.empty()) check_output_folder(a.cache, "--cache");
   c.out_dir = a.out;
   c.cache_dir = a.cache;
   c.threads = a.threads;

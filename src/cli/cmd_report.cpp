@@ -37,13 +37,13 @@ void run_report(const ReportArgs& a) {
       throw Error("report: give --markdown FILE and/or --readme FILE");
     }
   });
-  // Every output can be written before anything is.
+  // Every output can be written before anything is (--images is created).
+  if (!a.images.empty() && !a.no_images) prepare_output_folder(a.images, "--images");
   if (!a.markdown.empty()) check_output_file(a.markdown, false);
   if (!a.readme.empty()) {
     check_readable_file(a.readme);
     check_output_file(a.readme, false);
   }
-  if (!a.images.empty() && !a.no_images) prepare_output_folder(a.images, "--images");
   StudyResults r = results_from_json(read_file(a.results), a.results);
   const fs::path study = fs::absolute(a.results).parent_path();
   // Grid pictures: copied into --images when given, else linked inside the study folder.

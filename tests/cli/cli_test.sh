@@ -235,6 +235,10 @@ expect_rc "diff --out --mkdir" 0 "created folder" \
   "$bin" diff "$work/r1.exr" "$work/r3.pfm" --out "$work/newdir/d.png" --mkdir
 expect_rc "compare into a file" 1 "--out: '$work/r1.exr' is not a folder" \
   "$bin" compare "$scene" -m point --frames 0-0 --width 16 --no-video -q --out "$work/r1.exr"
+expect_rc "compare into an unwritable folder" 1 "--out: cannot write in folder '$ro'" \
+  "$bin" compare "$scene" -m point --frames 0-0 --no-video -q --out "$ro/study"
+expect_fast "compare into an unwritable folder fails before rendering" 3 \
+  "$bin" compare "$scene" -m point --frames 0-0 --no-video -q --out "$ro/study"
 expect_rc "report into a missing folder" 1 "does not exist" \
   "$bin" report "$work/no_results.json" --markdown "$work/nodir3/r.md"
 
