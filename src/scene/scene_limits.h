@@ -54,7 +54,7 @@ inline constexpr double kMaxLightRadius = 89;    // degrees
 // clipping and glare stay finite.
 inline constexpr double kMaxRadiance = 1e10;
 
-// Files: a scene file is read whole; a 65536-wave spectrum is about 11 MB of JSON.
+// Files: a scene file is read whole; a 65536-wave spectrum is about 14 MB of JSON.
 inline constexpr long kMaxSceneFileBytes = 64L << 20;  // 64 MiB
 
 }  // namespace sg::limits

@@ -217,7 +217,7 @@ std::string scratch_dir(const std::string& name) {
 
 TEST(SceneLoad, WindSeasOfThousandsOfWavesLoad) {
   // Pierson-Moskowitz seas at 5 and 15 m/s, wavelengths 5 cm to 500 m, 65536 waves (about
-  // 11 MB of JSON at full precision): inside every range, under the file limit.
+  // 14 MB of JSON at full precision): inside every range, under the file limit.
   const std::string dir = scratch_dir("wind_sea");
   for (double wind : {5.0, 15.0}) {
     Scene s = testing::project_scene("simple");
