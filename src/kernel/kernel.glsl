@@ -12,6 +12,7 @@
 #include "kernel/waves.glsl"
 #include "kernel/light.glsl"
 #include "kernel/radiance.glsl"
+#include "kernel/disk_coverage.glsl"
 #include "kernel/intersect.glsl"
 #include "kernel/footprint.glsl"
 #include "kernel/aliasing.glsl"

@@ -67,7 +67,7 @@ SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) 
   real px = real(i) + 0.5;
   real py = real(j) + 0.5;
   Footprint fp = pixel_footprint(waves, f, px, py, 0.0, f.displaced);
-  if (!fp.hit) return miss_weights(f, normalize(camera_direction(f.camera, px, py)));
+  if (!fp.hit) return miss_pixel_weights(f, i, j);
   PathGradients g = path_gradients(waves, f, fp.point);
   return temporal_shares(f, g, fp.view).weights;
 }

@@ -315,7 +315,7 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
   Footprint fp = pixel_footprint(waves, f, px, py, 0.0, f.displaced);
   if (!fp.hit) {
     StaaResult r = staa_result_miss();
-    r.weights = miss_weights(f, normalize(camera_direction(f.camera, px, py)));
+    r.weights = miss_pixel_weights(f, i, j);
     for (int k = 0; k <= f.segments; ++k) {
       path.centre[k] = vec2(0.0);
       path.valid[k] = false;

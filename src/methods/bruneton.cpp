@@ -20,7 +20,7 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   const vec3 o = m.camera.position();
   const vec3 d = normalize(m.camera.direction(i + 0.5, j + 0.5));
   const PixelFootprint rest = rest_plane_footprint(m, i + 0.5, j + 0.5);
-  if (!rest.hit) return miss_weights(m, d);
+  if (!rest.hit) return miss_pixel_weights(m, i, j);
 
   // 1. Filter weights, w_p = w_n (the grid cell is the pixel).
   thread_local std::vector<double> w, wr;
@@ -32,7 +32,7 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
     const RayHit hit = intersect_displaced(m.waves.weighted(w), o, d, t);
     if (!hit.hit) {
       if (hit.exhausted) count_fallback();  // a march that found no water: the sky
-      return miss_weights(m, d);
+      return miss_pixel_weights(m, i, j);
     }
     if (!(hit.s > 0)) return fallback(ctx, i, j);  // the camera is under the surface
     P = hit.point;

@@ -10,6 +10,7 @@
 
 #include "engine/render.h"
 #include "methods/method.h"
+#include "metrics/metrics.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -88,6 +89,32 @@ TEST(Colour, GreySceneRendersOneChannel) {
   EXPECT_EQ(render(s, "point", 0, 0)[0].channels, 1);
   s.light.radiance = Rgb(1, 1, 0.5);
   EXPECT_EQ(render(s, "point", 0, 0)[0].channels, 3);
+}
+
+}  // namespace
+}  // namespace sg
+
+namespace sg {
+namespace {
+
+// The visible sun over the sky's pixels (kernel/disk_coverage.glsl): on the sunset scene
+// the methods that integrate over the pixel take the disk's coverage of each pixel, where
+// `point` tests the centre ray. Against a 12x12x2 reference at 160x90, frame 0, staa's
+// RMSE is 0.051 and point's 0.73 (before the coverage, staa's was 0.66, as point's).
+TEST(Colour, VisibleSunIsAntiAliasedOverThePixel) {
+  Scene s = testing::project_scene("sunset");
+  s.width = 160;
+  s.height = 90;
+  const SceneModel m(s);
+  RenderSettings rs;
+  MethodOptions ro;
+  ro.samples = {12, 12, 2};
+  const Image ref = render_frame(m, *make_method("reference", ro), 0, rs);
+  const double point = compare_images(render_frame(m, *make_method("point", {}), 0, rs), ref).rmse;
+  for (const char* name : {"staa", "lean", "bruneton", "specaa"}) {
+    const double e = compare_images(render_frame(m, *make_method(name, {}), 0, rs), ref).rmse;
+    EXPECT_LT(e, 0.15 * point) << name << " RMSE " << e << ", point " << point;
+  }
 }
 
 }  // namespace

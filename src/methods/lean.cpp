@@ -137,7 +137,7 @@ LeanMoments LeanMethod::lookup(const PixelFootprint& fp) const {
 RadianceWeights LeanMethod::weights(const FrameContext& ctx, int i, int j) const {
   const SceneModel& m = ctx.model;
   const PixelFootprint fp = pixel_footprint(m, i + 0.5, j + 0.5, ctx.time.end);
-  if (!fp.hit) return miss_weights(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
+  if (!fp.hit) return miss_pixel_weights(m, i, j);
   if (fp.at_camera) return fallback(ctx, i, j);
   const LeanMoments mo = lookup(fp);
   return finite_or_fallback(

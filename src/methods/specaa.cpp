@@ -62,7 +62,7 @@ RadianceWeights SpecaaMethod::shade_pixel(const FrameContext& ctx, int i, int j,
                                           const SpecaaSample& ny) const {
   const SceneModel& m = ctx.model;
   if (!own.hit) {
-    return miss_weights(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
+    return miss_pixel_weights(m, i, j);
   }
   if (own.footprint.at_camera) return fallback(ctx, i, j);
   vec2 ddx, ddy;

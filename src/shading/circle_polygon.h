@@ -2,7 +2,8 @@
 // highlight (Podee et al., "Micro-specular-highlight real-time rendering", Sec. 3.2), where
 // the light disk on the light plane meets the pixel's reflection space.
 //
-// circle_polygon_area: exact. The polygon is split into the triangles (c, a_k, a_{k+1})
+// circle_polygon_area: exact, from the kernel's disk_triangle_area
+// (kernel/disk_coverage.glsl). The polygon is split into the triangles (c, a_k, a_{k+1})
 // fanned from the disk's centre c; each triangle's intersection with the disk is found
 // exactly (its edge a_k a_{k+1} crosses the circle at most twice; the pieces inside the
 // circle contribute triangles, the pieces outside contribute circular sectors) and the

@@ -122,6 +122,19 @@ kd::Light kernel_light(const LightModel& l) {
   return k;
 }
 
+kd::Camera kernel_camera(const CameraModel& c) {
+  kd::Camera k;
+  k.position = kd::vec3(0.0, c.position().y, 0.0);
+  k.forward = c.forward();
+  k.right = c.right();
+  k.up = c.up();
+  k.half_w = c.half_w();
+  k.half_h = c.half_h();
+  k.width = c.width();
+  k.height = c.height();
+  return k;
+}
+
 kd::Footprint kernel_footprint(const SceneModel& m, const PixelFootprint& fp) {
   kd::Footprint k;
   k.hit = fp.hit;

@@ -102,6 +102,11 @@ inline RadianceWeights combine_weights(const SceneModel& m, double F, double in_
   return RadianceWeights(F * in_light, F * sky * s.y, F * sky * s.z, below + (1.0 - F) * above);
 }
 
+// Pixel (i, j) whose centre ray hits no water, for the methods that integrate over the
+// pixel: the sky at the centre, and the light over the part of the pixel square that sees
+// its disk (kernel/disk_coverage.glsl).
+RadianceWeights miss_pixel_weights(const SceneModel& m, int i, int j);
+
 // Weights along the camera ray from `origin` with direction `dir` (any length) at time t:
 // intersection (flat or displaced), normal, reflection, shading. When `hit` is given it
 // receives the intersection (for motion vectors; hit->s is along the unit direction).

@@ -1,6 +1,7 @@
 // Helpers shared by the unit tests: the project's scenes, and small scenes built in code.
 #pragma once
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -8,9 +9,16 @@
 
 namespace sg::testing {
 
+// The checkout the tests read scenes from: $SUNGLINT_SOURCE_DIR where set (a test program
+// carried to another machine, scripts/gpu-check.sh), else the one it was built from.
+inline std::string source_dir() {
+  const char* d = std::getenv("SUNGLINT_SOURCE_DIR");
+  return d && *d ? std::string(d) : std::string(SG_SOURCE_DIR);
+}
+
 // A scene shipped with the project (scenes/NAME.json).
 inline Scene project_scene(const std::string& name) {
-  return load_scene(std::string(SG_SOURCE_DIR) + "/scenes/" + name + ".json");
+  return load_scene(source_dir() + "/scenes/" + name + ".json");
 }
 
 // The camera and light of the project's scenes, with the given waves, at a small size.

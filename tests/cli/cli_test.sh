@@ -271,8 +271,9 @@ expect_rc "compare engine gl lacks taa" 2 "--method: 'taa --engine gl': --method
   "$bin" compare "$scene" -m taa --engine gl --frames 0-0 --no-video -q --out "$work/gls"
 expect_no_file "engine usage errors" "$work/x.exr"
 if "$bin" render "$scene" -m point --engine gl --width 8 -q -o "$work/glprobe.pfm" >/dev/null 2>&1; then
-  expect_ok "render gl" "$bin" render "$scene" -m staa --engine gl --width 32 -q -o "$work/gl.pfm"
-  expect_ok "render cpu float" "$bin" render "$scene" -m staa --precision float --width 32 -q -o "$work/cf.pfm"
+  # staa-temporal on the sunset: the path and the visible sun over the pixel, on both engines.
+  expect_ok "render gl" "$bin" render "$colour" -m staa-temporal --engine gl --width 48 -q -o "$work/gl.pfm"
+  expect_ok "render cpu float" "$bin" render "$colour" -m staa-temporal --precision float --width 48 -q -o "$work/cf.pfm"
   out=$("$bin" diff "$work/gl.pfm" "$work/cf.pfm" --json 2>&1)
   if python3 -c 'import json,sys; sys.exit(0 if json.loads(sys.argv[1])["rmse"] < 1e-5 else 1)' "$out"; then
     passes=$((passes + 1))
@@ -280,8 +281,8 @@ if "$bin" render "$scene" -m point --engine gl --width 8 -q -o "$work/glprobe.pf
     echo "FAIL gl vs cpu float: $out"
     fails=$((fails + 1))
   fi
-  out=$("$bin" bench "$scene" --methods "point,staa" --engine gl --width 32 --height 18 2>&1)
-  if [ "$(grep -c '| gl (GPU timer; frame' <<<"$out")" = 2 ] && grep -q '| staa | gl .* | [0-9.]* | [0-9.]* |' <<<"$out"; then
+  out=$("$bin" bench "$scene" --methods "point,staa-temporal" --engine gl --width 32 --height 18 2>&1)
+  if [ "$(grep -c '| gl (GPU timer; frame' <<<"$out")" = 2 ] && grep -q '| staa-temporal | gl .* | [0-9.]* | [0-9.]* |' <<<"$out"; then
     passes=$((passes + 1))
   else
     echo "FAIL bench --engine gl: $out"

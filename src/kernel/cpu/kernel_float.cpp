@@ -31,6 +31,9 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
 real float_erfc(real x) {
   return erfc(x);
 }
+real float_light_pixel_coverage(const Camera& c, const Light& l, int i, int j) {
+  return light_pixel_coverage(c, l, i, j);
+}
 real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z, real dt) {
   return water_height(waves, f, x, z, dt);
 }
