@@ -17,8 +17,9 @@ namespace sg {
 class StratifiedMethod final : public Method {
  public:
   StratifiedMethod(std::string name, StratifiedSettings settings,
-                   Precision precision = Precision::float64)
-      : name_(std::move(name)), settings_(settings), inputs_(1, precision) {}
+                   Precision precision = Precision::float64,
+                   double intersect_tolerance = kDefaultIntersectTolerance)
+      : name_(std::move(name)), settings_(settings), inputs_(1, precision, intersect_tolerance) {}
   std::string name() const override { return name_; }
   void begin_frame(const FrameContext& ctx) override { inputs_.build(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {
