@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "base/error.h"
+#include "base/output_path.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "image/display.h"
@@ -22,10 +24,25 @@ namespace {
 struct DiffArgs {
   std::string a, b, frames, out;
   double peak = 1.0, range = 0.0;
-  bool json = false;
+  bool json = false, mkdir = false;
 };
 
 constexpr const char* kChannelNames[3] = {"R", "G", "B"};
+// Metrics of images holding NaN or infinities would be NaN or meaningless: refused.
+const Image& finite_input(const Image& img, const std::string& path) {
+  if (const size_t bad = count_nonfinite(img)) {
+    throw Error(path + ": " + std::to_string(bad) + " of " + std::to_string(img.size()) +
+                " pixels are not finite (NaN or infinite); metrics need finite values");
+  }
+  return img;
+}
+
+void check_diff_output(const std::string& path, bool mkdir) {
+  if (check_output_file(path, mkdir, " (--mkdir creates it)")) {
+    std::fprintf(stderr, "sunglint: created folder '%s' (--mkdir)\n",
+                 std::filesystem::path(path).parent_path().c_str());
+  }
+}
 
 nlohmann::json to_json(const ImageMetrics& m) {
   nlohmann::json j = {
@@ -79,17 +96,32 @@ void write_diff_picture(const std::string& path, const Image& a, const Image& b,
 }
 
 void run_diff(const DiffArgs& d) {
-  if (!(d.peak > 0)) throw Error("--peak: must be > 0");
-  if (d.range < 0) throw Error("--range: must be >= 0");
-  if (!d.out.empty() && image_format_of(d.out) != ImageFormat::png) {
-    throw Error("--out: the difference picture is a .png file");
-  }
   const bool seq = !d.frames.empty();
-  if (!seq && (is_frame_pattern(d.a) || is_frame_pattern(d.b))) {
-    throw Error("--frames: required when A or B is a sequence pattern such as frame_%04d.exr");
-  }
+  FrameRange r;
+  check_usage([&] {
+    if (!(d.peak > 0)) throw Error("--peak: must be > 0");
+    if (d.range < 0) throw Error("--range: must be >= 0");
+    if (!d.out.empty()) {
+      const std::string first =
+          seq && is_frame_pattern(d.out) ? format_frame_path(d.out, 0, "--out") : d.out;
+      if (image_format_of(first) != ImageFormat::png) {
+        throw Error("--out: the difference picture is a .png file");
+      }
+    }
+    if (!seq && (is_frame_pattern(d.a) || is_frame_pattern(d.b))) {
+      throw Error("--frames: required when A or B is a sequence pattern such as frame_%04d.exr");
+    }
+    if (seq) {
+      r = parse_frame_range(d.frames, "--frames");
+      format_frame_path(d.a, r.first, "A");
+      format_frame_path(d.b, r.first, "B");
+    }
+  });
   if (!seq) {
+    if (!d.out.empty()) check_diff_output(d.out, d.mkdir);
     Image a = read_image(d.a), b = read_image(d.b);
+    finite_input(a, d.a);
+    finite_input(b, d.b);
     ImageMetrics m = compare_images(a, b, d.peak);
     if (!d.out.empty()) write_diff_picture(d.out, a, b, d.range, m.max_abs);
     if (d.json) {
@@ -99,11 +131,19 @@ void run_diff(const DiffArgs& d) {
     }
     return;
   }
-  FrameRange r = parse_frame_range(d.frames, "--frames");
-  format_frame_path(d.a, r.first, "A");
-  format_frame_path(d.b, r.first, "B");
+  if (!d.out.empty()) {
+    for (int f = r.first; f <= r.last; ++f) {
+      if (!is_frame_pattern(d.out) && f != r.last) continue;
+      check_diff_output(is_frame_pattern(d.out) ? format_frame_path(d.out, f, "--out") : d.out,
+                        d.mkdir);
+    }
+  }
   std::vector<Image> a = read_sequence(d.a, r.first, r.last);
   std::vector<Image> b = read_sequence(d.b, r.first, r.last);
+  for (int f = r.first; f <= r.last; ++f) {
+    finite_input(a[f - r.first], format_frame_path(d.a, f, "A"));
+    finite_input(b[f - r.first], format_frame_path(d.b, f, "B"));
+  }
   SequenceMetrics s = compare_sequences(a, b, d.peak);
   if (!d.out.empty()) {
     // One picture per frame when --out is a pattern, else the last frame.
@@ -167,10 +207,14 @@ void add_diff_command(CLI::App& app) {
   c->add_option("--out,-o", d->out,
                 "Write a false-colour difference picture A-B (.png; blue: "
                 "A darker, red: A brighter)");
+  c->add_flag("--mkdir", d->mkdir, "Create the folder of --out when it is missing");
   c->add_option("--range", d->range,
                 "Difference mapped to the ends of the colour map (default: "
-                "max |A-B|)");
-  c->add_option("--peak", d->peak, "Peak value for PSNR")->capture_default_str();
+                "max |A-B|)")
+      ->check(finite_number());
+  c->add_option("--peak", d->peak, "Peak value for PSNR")
+      ->capture_default_str()
+      ->check(finite_number());
   c->add_flag("--json", d->json, "Print JSON");
   c->callback([d] { run_diff(*d); });
 }

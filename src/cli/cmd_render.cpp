@@ -2,6 +2,8 @@
 // `--frames A-B --video out.mp4` (with or without --out): the range rendered and encoded
 // in one command. `--display` writes PNG pictures through the display pipeline of
 // `compare` (exposure, glare, filmic curve; image/tonemap.h), as videos always are.
+// `--engine gl` renders the kernel methods on the GPU (gl_engine/gl_engine.h).
+// Everything the command line asks is checked before the first pixel.
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -9,18 +11,22 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "base/error.h"
+#include "base/output_path.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/method_flags.h"
 #include "cli/progress.h"
 #include "engine/render.h"
+#include "gl_engine/engines.h"
 #include "image/image_io.h"
 #include "image/sequence.h"
 #include "image/tonemap.h"
+#include "methods/fallback.h"
 #include "methods/method.h"
 #include "report/video.h"
 
@@ -28,10 +34,10 @@ namespace sg {
 namespace {
 
 struct RenderArgs {
-  std::string scene_path, method = "", out, frames, video;
+  std::string scene_path, method = "", out, frames, video, engine = "cpu";
   int frame = 0, width = 0, height = 0, threads = 0;
   double exposure = 0;
-  bool quiet = false, display = false, no_glare = false;
+  bool quiet = false, mkdir = false, display = false, no_glare = false;
   MethodFlags flags;
 };
 
@@ -42,7 +48,7 @@ std::string lower_extension(const std::string& path) {
   return e;
 }
 
-// The combinations of outputs and display flags, checked before anything is rendered.
+// The combinations of outputs and display flags (usage errors).
 void check_outputs(const RenderArgs& a, bool sequence, const std::string& first_out) {
   if (a.out.empty() && a.video.empty()) {
     throw Error("--out: required (or --video FILE.mp4 with --frames A-B)");
@@ -52,13 +58,9 @@ void check_outputs(const RenderArgs& a, bool sequence, const std::string& first_
     if (lower_extension(a.video) != ".mp4") {
       throw Error("--video: must be an .mp4 file (got '" + a.video + "')");
     }
-    const std::filesystem::path dir = std::filesystem::path(a.video).parent_path();
-    if (!dir.empty() && !std::filesystem::is_directory(dir)) {
-      throw Error("--video: folder '" + dir.string() + "' does not exist");
-    }
   }
   if (!a.out.empty()) {
-    const ImageFormat f = image_format_of(first_out);  // fails early on a bad extension
+    const ImageFormat f = image_format_of(first_out);  // a bad pattern or extension
     if (a.display && f != ImageFormat::png) {
       throw Error("--display: applies to .png output (got '" + a.out +
                   "'; .exr and .pfm keep the linear values)");
@@ -70,17 +72,21 @@ void check_outputs(const RenderArgs& a, bool sequence, const std::string& first_
 }
 
 void run_render(RenderArgs& a) {
-  Scene scene = load_scene(a.scene_path);
-  apply_image_size(scene, a.width, a.height);
+  // 1. The command line: every flag and value (exit code 2 on a mistake).
+  std::unique_ptr<Method> method;
   FrameRange range{a.frame, a.frame};
   const bool sequence = !a.frames.empty();
-  if (sequence) range = parse_frame_range(a.frames, "--frames");
-  check_frame(range.first, scene, sequence ? "--frames" : "--frame");
-  check_frame(range.last, scene, sequence ? "--frames" : "--frame");
   // A pattern names each frame; a single frame may use one too.
   const bool pattern = sequence || is_frame_pattern(a.out);
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
-  check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
+  Engine engine = Engine::cpu;
+  check_usage([&] {
+    if (sequence) range = parse_frame_range(a.frames, "--frames");
+    check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
+    engine = parse_engine(a.engine);
+    a.flags.finish();
+    make_method(a.method, a.flags.options);  // the name and options, before any GL
+  });
   if (!a.video.empty()) {
     try {
       check_ffmpeg();
@@ -88,12 +94,37 @@ void run_render(RenderArgs& a) {
       throw Error("--video: " + std::string(e.what()));
     }
   }
+  // 2. The scene (exit code 1 when it cannot be read or is invalid), then what the command
+  // line asks of it.
+  Scene scene = load_scene(a.scene_path);
+  check_usage([&] {
+    apply_image_size(scene, a.width, a.height);
+    check_frame(range.first, scene, sequence ? "--frames" : "--frame");
+    check_frame(range.last, scene, sequence ? "--frames" : "--frame");
+  });
+  // 3. Every output file can be written, before the first pixel.
+  std::set<std::string> folders;
+  auto check_file = [&](const std::string& p, const char* flag) {
+    const std::string dir = std::filesystem::path(p).parent_path().string();
+    if (!folders.insert(dir).second) return;
+    try {
+      if (check_output_file(p, a.mkdir, " (--mkdir creates it)")) {
+        std::fprintf(stderr, "sunglint: created folder '%s' (--mkdir)\n", dir.c_str());
+      }
+    } catch (const Error& e) {
+      throw Error(std::string(flag) + ": " + e.what());
+    }
+  };
+  if (!a.out.empty()) {
+    for (int f = range.first; f <= range.last; ++f) check_file(out_path(f), "--out");
+  }
+  if (!a.video.empty()) check_file(a.video, "--video");
+  // 4. The method on its engine (the GL engine refuses what it lacks, or says why no
+  // OpenGL 4.5 context can be made).
+  check_usage([&] { method = make_method_on(engine, a.method, a.flags.options); });
 
-  a.flags.finish();
   const MethodOptions& opt = a.flags.options;
-  std::unique_ptr<Method> method = make_method(a.method, opt);
   SceneModel model(scene);
-
   ProgressBar bar(a.method, !a.quiet);
   RenderSettings rs;
   rs.threads = a.threads;
@@ -101,8 +132,9 @@ void run_render(RenderArgs& a) {
   // Frames rendered: the requested ones and a stateful method's warm-up frames before them.
   const int warmup = warmup_frame_count(*method);
   const long frames = range.count() + warmup;
-  long frames_done = 0;
+  long frames_done = 0, tiles = 1;
   rs.progress = [&](long done, long total) {
+    tiles = total;
     bar.update(frames_done * total + done, frames * total);
     if (done == total) ++frames_done;  // calls are serialised; each frame ends once
   };
@@ -113,10 +145,19 @@ void run_render(RenderArgs& a) {
   wo.exposure = a.exposure;
   if (a.display) wo.display = display;
   std::vector<std::vector<uint8_t>> video_frames;
+  long fallbacks = 0;
+  bool counted = false;
   auto t0 = std::chrono::steady_clock::now();
   render_frames(model, *method, range.first, range.last, rs, [&](int f, const Image& img) {
     if (!a.out.empty()) write_image(out_path(f), img, wo);
     if (!a.video.empty()) video_frames.push_back(display_srgb8(img, display));
+    std::string what = "frame " + std::to_string(f);
+    if (const long n = fallback_pixels(*method); n >= 0) {
+      counted = true;
+      fallbacks += n;
+      what += ", " + std::to_string(n) + " fallback pixels";
+    }
+    bar.step(what, frames_done * tiles, frames * tiles);
   });
   bar.finish();
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -130,11 +171,12 @@ void run_render(RenderArgs& a) {
   const std::string written = a.out.empty()     ? a.video
                               : a.video.empty() ? a.out
                                                 : a.out + " and " + a.video;
-  std::printf("%s: %s, %dx%d, frames %d-%d%s, %.2f s (%.1f ms per frame) -> %s\n",
-              scene.name.c_str(), method->name().c_str(), scene.width, scene.height, range.first,
-              range.last,
+  const std::string fb = counted ? ", " + std::to_string(fallbacks) + " fallback pixels" : "";
+  std::printf("%s: %s (%s engine), %dx%d, frames %d-%d%s, %.2f s (%.1f ms per frame)%s -> %s\n",
+              scene.name.c_str(), method->name().c_str(), engine_name(engine), scene.width,
+              scene.height, range.first, range.last,
               warmup > 0 ? (" after " + std::to_string(warmup) + " warm-up frames").c_str() : "",
-              secs, 1000 * secs / frames, written.c_str());
+              secs, 1000 * secs / frames, fb.c_str(), written.c_str());
 }
 
 }  // namespace
@@ -149,21 +191,28 @@ void add_render_command(CLI::App& app) {
   c->add_option("--method,-m", a->method, "Rendering method:" + methods)->required();
   c->add_option("--out,-o", a->out,
                 "Output file; the format follows the extension (.exr, .pfm, .png). With "
-                "--frames, a pattern such as out/frame_%04d.exr. Required unless --video is "
-                "given");
-  auto* frame = c->add_option("--frame,-f", a->frame, "Frame to render (default 0)");
+                "--frames, a pattern such as out/frame_%04d.exr. Its folder must exist, or "
+                "give --mkdir. Required unless --video is given");
+  c->add_flag("--mkdir", a->mkdir, "Create the output's (and the video's) folder when missing");
+  auto* frame = c->add_option("--frame,-f", a->frame, "Frame to render (default 0)")
+                    ->check(integer_in(0, 2000000000));
   c->add_option("--frames", a->frames, "Render a range of frames A-B (use a pattern in --out)")
       ->excludes(frame);
   c->add_option("--width", a->width,
                 "Override the image width (height follows the aspect "
                 "ratio unless given)")
-      ->check(CLI::Range(1, 16384));
-  c->add_option("--height", a->height, "Override the image height")->check(CLI::Range(1, 16384));
+      ->check(integer_in(1, 16384));
+  c->add_option("--height", a->height, "Override the image height")->check(integer_in(1, 16384));
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")
-      ->check(CLI::Range(0, 1024));
+      ->check(integer_in(0, 1024));
+  c->add_option("--engine", a->engine,
+                "cpu (every method) or gl (OpenGL 4.5 compute: point, supersample, reference, "
+                "staa-temporal, staa)")
+      ->capture_default_str();
   add_method_flags(*c, a->flags);
   c->add_option("--exposure", a->exposure, "Exposure in stops for .png output and --video")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(-64, 64));
   c->add_flag("--display", a->display,
               ".png output through the display pipeline of compare: exposure, glare, filmic "
               "tone curve (default: exposure and a clamp)");
@@ -171,7 +220,8 @@ void add_render_command(CLI::App& app) {
   c->add_option("--video", a->video,
                 "Also (or only) encode the --frames range as an H.264 .mp4 video through the "
                 "display pipeline (needs ffmpeg)");
-  c->add_flag("--quiet,-q", a->quiet, "No progress bar");
+  c->add_flag("--quiet,-q", a->quiet,
+              "No progress (default: a bar on a terminal, else a line per frame)");
   c->callback([a] { run_render(*a); });
 }
 

@@ -8,6 +8,8 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "base/output_path.h"
+#include "cli/args.h"
 #include "cli/commands.h"
 #include "report/results.h"
 
@@ -30,8 +32,17 @@ std::string relative_to(const fs::path& target, const fs::path& from_file) {
 }
 
 void run_report(const ReportArgs& a) {
-  if (a.markdown.empty() && a.readme.empty()) {
-    throw Error("report: give --markdown FILE and/or --readme FILE");
+  check_usage([&] {
+    if (a.markdown.empty() && a.readme.empty()) {
+      throw Error("report: give --markdown FILE and/or --readme FILE");
+    }
+  });
+  // Every output can be written before anything is (--images is created).
+  if (!a.images.empty() && !a.no_images) prepare_output_folder(a.images, "--images");
+  if (!a.markdown.empty()) check_output_file(a.markdown, false);
+  if (!a.readme.empty()) {
+    check_readable_file(a.readme);
+    check_output_file(a.readme, false);
   }
   StudyResults r = results_from_json(read_file(a.results), a.results);
   const fs::path study = fs::absolute(a.results).parent_path();
@@ -42,7 +53,6 @@ void run_report(const ReportArgs& a) {
     if (figure.empty()) return {};
     fs::path src = study / figure;
     if (!a.images.empty()) {
-      fs::create_directories(a.images);
       fs::path dst = fs::path(a.images) / src.filename();
       write_file_atomic(dst.string(), read_file(src.string()));
       src = dst;

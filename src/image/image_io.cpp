@@ -155,8 +155,21 @@ void write_png_rgb8(const std::string& path, int width, int height,
   write_png_bytes(path, width, height, 3, rgb.data());
 }
 
+size_t count_nonfinite(const Image& img) {
+  size_t n = 0;
+  for (float v : img.data)
+    n += std::isfinite(v) ? 0 : 1;
+  return n;
+}
+
 void write_image(const std::string& path, const Image& img, const WriteOptions& opt) {
   if (img.width <= 0 || img.height <= 0) throw Error(path + ": cannot write an empty image");
+  if (const size_t bad = count_nonfinite(img)) {
+    throw Error(path + ": internal error: " + std::to_string(bad) + " of " +
+                std::to_string(img.size()) +
+                " pixels are not finite (NaN or infinite); nothing written");
+  }
+  if (!std::isfinite(opt.exposure)) throw Error(path + ": the exposure must be finite");
   switch (image_format_of(path)) {
     case ImageFormat::exr:
       write_exr(path, img);
@@ -175,7 +188,7 @@ void write_image(const std::string& path, const Image& img, const WriteOptions& 
 Image read_image(const std::string& path) {
   switch (image_format_of(path)) {
     case ImageFormat::exr:
-      if (!std::filesystem::exists(path)) throw Error(path + ": cannot read: no such file");
+      check_readable_file(path);  // a missing file, a folder, a device or a fifo
       return read_exr(path);
     case ImageFormat::pfm:
       return decode_pfm(read_file(path), path);

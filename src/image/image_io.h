@@ -6,7 +6,9 @@
 //   .png  8-bit sRGB picture for viewing, grey or RGB like the image: exposure in stops and
 //         a clamp, or the display pipeline of the study (image/tonemap.h: glare, filmic
 //         curve); written only.
-// Every write goes through a temporary file and a rename (base/atomic_file.h).
+// Every write goes through a temporary file and a rename (base/atomic_file.h). A pixel that
+// is not finite (NaN, infinite) never reaches a file: write_image fails instead, since
+// every method returns finite values on every valid scene, such a pixel is a bug.
 #pragma once
 
 #include <cstdint>
@@ -31,8 +33,13 @@ struct WriteOptions {
   std::optional<DisplaySettings> display;
 };
 
+// Throws sg::Error naming `path` ("internal error: N of M pixels are not finite") and
+// writes nothing when a pixel is NaN or infinite.
 void write_image(const std::string& path, const Image& img, const WriteOptions& opt = {});
 Image read_image(const std::string& path);
+
+// The number of pixels that are NaN or infinite.
+size_t count_nonfinite(const Image& img);
 
 // An 8-bit RGB picture (rows top to bottom) as PNG.
 void write_png_rgb8(const std::string& path, int width, int height,

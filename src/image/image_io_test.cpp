@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "base/atomic_file.h"
 #include "base/error.h"
@@ -170,6 +172,49 @@ TEST_F(ImageIo, FailedWritesLeaveNoPartialFileAndKeepTheOldOne) {
     ++files;
   }
   EXPECT_EQ(files, 1);  // no temporary left behind
+}
+
+TEST_F(ImageIo, NonFinitePixelsFailTheWriteAndLeaveNoFile) {
+  for (float bad : {std::nanf(""), std::numeric_limits<float>::infinity(),
+                    -std::numeric_limits<float>::infinity()}) {
+    Image a = ramp(4, 3);
+    a.at(2, 1) = bad;
+    a.at(3, 2) = bad;
+    for (const char* name : {"n.exr", "n.pfm", "n.png"}) {
+      try {
+        write_image(path(name), a);
+        FAIL() << name << " written with " << bad;
+      } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  path(name) +
+                      ": internal error: 2 of 12 pixels are not finite (NaN or infinite); "
+                      "nothing written");
+      }
+      EXPECT_FALSE(fs::exists(path(name))) << name;
+    }
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));  // no temporary either
+  EXPECT_EQ(count_nonfinite(ramp(4, 3)), 0u);
+  WriteOptions nan_exposure;
+  nan_exposure.exposure = std::nan("");
+  EXPECT_THROW(write_image(path("e.png"), ramp(4, 3), nan_exposure), Error);
+}
+
+TEST_F(ImageIo, ReadingADeviceOrAFolderFailsAtOnce) {
+  for (const char* name : {"/dev/zero.pfm", "/dev/zero.exr"}) {
+    // /dev/zero under an image name: a symbolic link to the device.
+    const std::string link = path(fs::path(name).filename().string());
+    fs::create_symlink("/dev/zero", link);
+    try {
+      read_image(link);
+      FAIL() << link;
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                link + ": cannot read: not a regular file (a device, fifo or socket)");
+    }
+  }
+  fs::create_directory(path("folder.exr"));
+  EXPECT_THROW(read_image(path("folder.exr")), Error);
 }
 
 TEST_F(ImageIo, SequencePatterns) {

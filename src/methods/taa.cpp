@@ -33,6 +33,7 @@ void TaaMethod::begin_frame(const FrameContext& ctx) {
        history_.height != m.height() || history_.channels != (m.scene.grey() ? 1 : 3))) {
     reset();  // a cut: the history belongs to another sequence
   }
+  reset_fallbacks();
   jitter_ = taa_jitter(ctx.time.frame, options_.jitter_count);
   t_prev_ = m.scene.frame_time(ctx.time.frame - 1);
   motion_.assign(static_cast<size_t>(m.width()) * m.height(), vec2(0));
@@ -93,7 +94,13 @@ void TaaMethod::end_frame(const FrameContext& ctx, Image& img) {
           if (o.clamp != TaaClamp::none) {
             h = clip_to_box(h, neighbourhood_box(current, i, j, o.clamp, o.gamma, ch));
           }
-          img.at(i, j, ch) = static_cast<float>(taa_blend(h, c, o.alpha));
+          const double blended = taa_blend(h, c, o.alpha);
+          if (std::isfinite(blended)) {
+            img.at(i, j, ch) = static_cast<float>(blended);
+          } else {
+            if (ch == 0) count_fallback();  // a pixel counts once
+            img.at(i, j, ch) = static_cast<float>(c);
+          }
         }
       }
     }

@@ -42,11 +42,14 @@
 
 #include <vector>
 
+#include "methods/fallback.h"
 #include "methods/method.h"
 
 namespace sg {
 
-class TaaMethod final : public Method {
+// Fallback (methods/fallback.h): a blended value that is not finite is replaced by the
+// current sample and counted.
+class TaaMethod final : public Method, public FallbackCounter {
  public:
   // Throws sg::Error naming the flag for a bad option.
   explicit TaaMethod(const TaaOptions& options);

@@ -49,6 +49,29 @@ case("wave_not_object", lambda s: s["surface"]["waves"].__setitem__(4, 0.5))
 case("fps_zero", lambda s: s["animation"].update(fps=0))
 case("frames_zero", lambda s: s["animation"].update(frames=0))
 case("shutter_negative", lambda s: s["animation"].update(shutter=-1))
+# Physical ranges (src/scene/scene_limits.h).
+case("camera_high", lambda s: s["camera"].update(position=[0, 1e308, 0]))
+case("camera_far", lambda s: s["camera"].update(position=[2e5, 2.5, 0]))
+case("camera_low", lambda s: s["camera"].update(position=[0, 1e-4, 0]))
+case("look_at_far", lambda s: s["camera"].update(look_at=[0, 0, -1e8]))
+case("up_huge", lambda s: s["camera"].update(up=[0, 1e300, 1e300]))
+case("vfov_tiny", lambda s: s["camera"].update(vfov_deg=1e-4))
+case("light_huge", lambda s: s["light"].update(direction=[0, 1e200, -1e200]))
+case("light_radius_tiny", lambda s: s["light"].update(angular_radius_deg=1e-4))
+case("light_radiance_huge", lambda s: s["light"].update(radiance=1e308))
+case("sky_huge", lambda s: s["sky"].update(radiance=2e10))
+case("sea_huge", lambda s: s["surface"].update(sea_radiance=1e11))
+case("wave_vector_huge", lambda s: s["surface"]["waves"][0].update(wave_vector=[1e8, 0]))
+case("wave_vector_zero", lambda s: s["surface"]["waves"][1].update(wave_vector=[0, 0]))
+case("wavelength_long", lambda s: s["surface"]["waves"][2].update(wave_vector=[1e-6, 0]))
+case("amplitude_steep", lambda s: s["surface"]["waves"][0].update(amplitude=1e15))
+case("frequency_huge", lambda s: s["surface"]["waves"][3].update(angular_frequency=-1e5))
+case("phase_huge", lambda s: s["surface"]["waves"][4].update(phase=1e7))
+case("t0_huge", lambda s: s["animation"].update(t0=1e308))
+case("frames_past_time", lambda s: s["animation"].update(t0=9.99e6, frames=1000000))
+case("shutter_before_time", lambda s: s["animation"].update(t0=-1e7))
+case("fps_huge", lambda s: s["animation"].update(fps=1e7))
+case("shutter_two", lambda s: s["animation"].update(shutter=2))
 
 # Format /2: colour radiances and the sky gradient; /1 files may not use them.
 def v2(edit):
@@ -86,6 +109,11 @@ for name, s in cases.items():
 text = json.dumps(base, indent=1)
 with open("bad/amplitude_infinite.json", "w") as f:
     f.write(text.replace('"amplitude": 0.038197', '"amplitude": 1e999', 1))
+# A duplicate key: JSON parsers differ on which value wins, so it is an error.
+with open("bad/duplicate_key.json", "w") as f:
+    f.write(text.replace('"amplitude": 0.095493,', '"amplitude": 0.095493,\n    "amplitude": 0.2,', 1))
+with open("bad/duplicate_top_key.json", "w") as f:
+    f.write(text.replace('"name": "simple",', '"name": "simple",\n "name": "other",', 1))
 with open("bad/syntax_error.json", "w") as f:
     f.write(text.replace('"fps": 30,', '"fps": 30', 1))
 with open("bad/top_level_array.json", "w") as f:
