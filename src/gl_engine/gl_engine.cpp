@@ -8,6 +8,7 @@
 #include "gl/check.h"
 #include "gl/dispatch.h"
 #include "gl_engine/uniforms.h"
+#include "methods/supersample.h"
 #include "shading/kernel_frame.h"
 #include "shading/kernel_table.h"
 #include "shading/path_table.h"
@@ -30,6 +31,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     v.counts.sy = o.samples.sy;
     v.counts.nt = o.samples.st;
     v.counts.time_at_frame = method == "supersample" && o.samples.st == 1;
+    v.intersect_tolerance = stratified_intersect_tolerance(o);
   } else if (method == "staa-temporal") {
     v.entry = KernelEntry::staa_temporal;
     v.segments = o.staa.segments;
