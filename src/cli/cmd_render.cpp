@@ -34,7 +34,7 @@ namespace sg {
 namespace {
 
 struct RenderArgs {
-  std::string scene_path, method = "", out, frames, video, engine = "cpu";
+  std::string scene_path, method = "", out, frames, video;
   int frame = 0, width = 0, height = 0, threads = 0;
   double exposure = 0;
   bool quiet = false, mkdir = false, display = false, no_glare = false;
@@ -79,14 +79,14 @@ void run_render(RenderArgs& a) {
   // A pattern names each frame; a single frame may use one too.
   const bool pattern = sequence || is_frame_pattern(a.out);
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
-  Engine engine = Engine::cpu;
   check_usage([&] {
     if (sequence) range = parse_frame_range(a.frames, "--frames");
     check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
-    engine = parse_engine(a.engine);
     a.flags.finish();
     make_method(a.method, a.flags.options);  // the name and options, before any GL
+    check_engine_runs(a.flags.engine, a.method, a.flags.options);
   });
+  const Engine engine = a.flags.engine;
   if (!a.video.empty()) {
     try {
       check_ffmpeg();
@@ -116,7 +116,8 @@ void run_render(RenderArgs& a) {
     }
   };
   if (!a.out.empty()) {
-    for (int f = range.first; f <= range.last; ++f) check_file(out_path(f), "--out");
+    for (int f = range.first; f <= range.last; ++f)
+      check_file(out_path(f), "--out");
   }
   if (!a.video.empty()) check_file(a.video, "--video");
   // 4. The method on its engine (the GL engine refuses what it lacks, or says why no
@@ -205,10 +206,6 @@ void add_render_command(CLI::App& app) {
   c->add_option("--height", a->height, "Override the image height")->check(integer_in(1, 16384));
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")
       ->check(integer_in(0, 1024));
-  c->add_option("--engine", a->engine,
-                "cpu (every method) or gl (OpenGL 4.5 compute: point, supersample, reference, "
-                "staa-temporal, staa)")
-      ->capture_default_str();
   add_method_flags(*c, a->flags);
   c->add_option("--exposure", a->exposure, "Exposure in stops for .png output and --video")
       ->capture_default_str()

@@ -24,7 +24,8 @@ class GlEngineTest : public testing::GlTest {};
 
 std::vector<Image> render(const SceneModel& m, Method& method, int first, int last) {
   std::vector<Image> out;
-  for (int f = first; f <= last; ++f) out.push_back(render_frame(m, method, f, {}));
+  for (int f = first; f <= last; ++f)
+    out.push_back(render_frame(m, method, f, {}));
   return out;
 }
 
@@ -64,8 +65,8 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     const std::vector<std::string> active = gl_engine::active_uniforms(engine.program());
     EXPECT_GT(active.size(), 5u) << c.name;
     for (const std::string& name : active)
-      EXPECT_TRUE(probe.written().count(name)) << c.name << ": active uniform " << name
-                                               << " is not written by the engine";
+      EXPECT_TRUE(probe.written().count(name))
+          << c.name << ": active uniform " << name << " is not written by the engine";
   }
 }
 
@@ -96,9 +97,10 @@ Comparison compare_engines(const std::string& scene, const std::string& method,
     total += static_cast<long>(a[k].data.size());
   }
   c.differ = double(differ) / total;
-  std::printf("%-7s %-24s RMSE(GL - CPU float) %.3g, CPU - ref %.3g, GL - ref %.3g, %.3f%% of "
-              "pixels differ > 1e-4\n",
-              scene.c_str(), method.c_str(), c.gl_cpu, c.cpu_ref, c.gl_ref, 100 * c.differ);
+  std::printf(
+      "%-7s %-24s RMSE(GL - CPU float) %.3g, CPU - ref %.3g, GL - ref %.3g, %.3f%% of "
+      "pixels differ > 1e-4\n",
+      scene.c_str(), method.c_str(), c.gl_cpu, c.cpu_ref, c.gl_ref, 100 * c.differ);
   return c;
 }
 
