@@ -35,11 +35,14 @@ WaveResolution wave_resolution(const Scene& scene, int bands, const AliasingPara
     A[i] = wf.A[i];
   }
   std::vector<size_t> order(n);
-  for (size_t i = 0; i < n; ++i) order[i] = i;
+  for (size_t i = 0; i < n; ++i)
+    order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return k[x] < k[y]; });
   std::vector<double> ks(n), suffix(n + 1, 0.0);
-  for (size_t q = 0; q < n; ++q) ks[q] = k[order[q]];
-  for (size_t q = n; q-- > 0;) suffix[q] = suffix[q + 1] + A[order[q]];
+  for (size_t q = 0; q < n; ++q)
+    ks[q] = k[order[q]];
+  for (size_t q = n; q-- > 0;)
+    suffix[q] = suffix[q + 1] + A[order[q]];
   // kernel/staa.glsl, staa_remainder_wavenumbers (per-pixel NDF: 8 half-cycles).
   const double nyquist = p.norm == FrequencyNorm::max ? std::sqrt(2.0) : 1.0;
   const CameraModel& cam = m.camera;
@@ -74,7 +77,8 @@ WaveResolution wave_resolution(const Scene& scene, int bands, const AliasingPara
         const double c = std::max(dot(d, cam.forward()), 0.0);
         const double e = kDefaultIntersectTolerance * pixel * c * c * f.distance;
         size_t q = 0;
-        while (q < n && suffix[q] > e) ++q;
+        while (q < n && suffix[q] > e)
+          ++q;
         summed += static_cast<long>(q);
         for (size_t i = 0; i < n; ++i) {
           const double freq = projected_frequency(vec2(wf.a[i], wf.b[i]), J, p.norm);

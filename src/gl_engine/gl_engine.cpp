@@ -87,8 +87,7 @@ GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
 GlEngine::~GlEngine() = default;
 
 void GlEngine::upload(const FrameContext& ctx) {
-  build_kernel_inputs(ctx.model, ctx.time, v_.segments, ctx.seed, *inputs_,
-                      v_.intersect_tolerance);
+  build_kernel_inputs(ctx.model, ctx.time, v_.segments, ctx.seed, *inputs_, v_.intersect_tolerance);
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(w, h, GL_RGBA32F);

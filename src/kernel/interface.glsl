@@ -62,10 +62,10 @@ struct Frame {
   // sum to at most this many pixels' worth of the ray's footprint (intersect.glsl); 0:
   // every wave.
   real intersect_tolerance;
-  real duration;         // the shutter interval is [display time - duration, display time]
-  int segments;          // K: the path's instants t_k = end - duration (K - k) / K, k = 0..K
-  int frame;             // the frame's index (for the sampling streams)
-  uvec2 seed;            // the sampling seed, as a 64-bit word (rng.glsl)
+  real duration;  // the shutter interval is [display time - duration, display time]
+  int segments;   // K: the path's instants t_k = end - duration (K - k) / K, k = 0..K
+  int frame;      // the frame's index (for the sampling streams)
+  uvec2 seed;     // the sampling seed, as a 64-bit word (rng.glsl)
 };
 
 // The path tables' shapes (path_table.glsl, shading/path_table.h).

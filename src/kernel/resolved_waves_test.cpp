@@ -55,7 +55,8 @@ TEST(KernelResolvedWaves, ShuffledWaveFileRendersTheSamePixels) {
   Scene shuffled = s;
   Pcg32 rng(3, 1);
   std::vector<Wave>& w = shuffled.surface.waves;
-  for (size_t i = w.size(); i-- > 1;) std::swap(w[i], w[rng.next_u32() % (i + 1)]);
+  for (size_t i = w.size(); i-- > 1;)
+    std::swap(w[i], w[rng.next_u32() % (i + 1)]);
   ASSERT_NE(w.front().amplitude, s.surface.waves.front().amplitude);
   const SceneModel ma(s), mb(shuffled);
   KernelInputsD a, b;
@@ -76,7 +77,8 @@ TEST(KernelResolvedWaves, ShuffledWaveFileRendersTheSamePixels) {
           kd::staa_pixel(wave_buffer(b, true), tables.f_texture(), tables.s_texture(),
                          tables.kernel_info(), fits.view(), fits.info, b.frame, p, i, j, pb);
       lit += ra.in_light > 1e-3;
-      for (int c = 0; c < 4; ++c) worst = std::max(worst, std::fabs(ra.weights[c] - rb.weights[c]));
+      for (int c = 0; c < 4; ++c)
+        worst = std::max(worst, std::fabs(ra.weights[c] - rb.weights[c]));
     }
   }
   std::printf("sorted against shuffled file: max |difference| %.3g, %d lit pixels\n", worst, lit);
@@ -127,8 +129,8 @@ TEST(KernelResolvedWaves, RemainderEqualsTheExplicitSum) {
           const double total = b.ndf.cov.x + b.ndf.cov.z;
           // Uniform NDF: the remainder is the explicit sum, to the rounding of a sum of
           // hundreds of terms; per-pixel NDF: within the remainder's bounds (staa.glsl).
-          worst_cov = std::max(worst_cov, per_pixel ? cov / std::max(trace, 1e-300)
-                                                    : cov / std::max(total, 1e-300));
+          worst_cov = std::max(
+              worst_cov, per_pixel ? cov / std::max(trace, 1e-300) : cov / std::max(total, 1e-300));
           worst_mean = std::max(worst_mean, per_pixel ? mean / std::max(slope, 1e-300) : mean);
           worst_path = std::max(worst_path, path);
           EXPECT_EQ(a.any_alias, b.any_alias) << i << " " << j;
@@ -183,7 +185,8 @@ TEST(KernelResolvedWaves, DisplacedIntersectionWithinItsBoundOfTheFullOne) {
       ++hits;
       const double eps = kd::pixel_angle(f.camera, d);
       const double h = kd::water_height(bf, f, b.point.x, b.point.z, 0.0);
-      worst_vertical = std::max(worst_vertical, std::fabs(b.point.y - h) / (tau * eps * b.s + 1e-9));
+      worst_vertical =
+          std::max(worst_vertical, std::fabs(b.point.y - h) / (tau * eps * b.s + 1e-9));
       summed += kd::first_wave_below(bl, fewer.frame, tau * eps * b.s);
       const kd::Footprint fp = kd::pixel_footprint(bf, f, i + 0.5, j + 0.5, 0.0, true);
       const double size = length(fp.dp_dpx) + length(fp.dp_dpy);

@@ -129,8 +129,7 @@ real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
 real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z, real dt);
 vec2 water_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
 #else
-SG_FN real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z,
-                              real dt) {
+SG_FN real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z, real dt) {
   return wave_sum_height_first(waves, f, n, x, z, dt);
 }
 SG_FN real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {

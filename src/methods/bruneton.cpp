@@ -70,8 +70,8 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   wr.resize(w.size());
   for (size_t k = 0; k < w.size(); ++k)
     wr[k] = 1 - w[k];
-  const PrincipalAxes axes = principal_axes(uniform_ndf_covariance(waves, wr) +
-                                            sorted.suffix_covariance(waves.size()));
+  const PrincipalAxes axes =
+      principal_axes(uniform_ndf_covariance(waves, wr) + sorted.suffix_covariance(waves.size()));
   const vec2 sigma2(std::max(axes.s1 * axes.s1, options_.min_variance),
                     std::max(axes.s2 * axes.s2, options_.min_variance));
   vec3 major(axes.u.x, 0, axes.u.y);

@@ -55,9 +55,9 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                               o.precision, stratified_intersect_tolerance(o));
   }
   if (name == "supersample") {
-    return std::make_unique<StratifiedMethod>(
-        name, StratifiedSettings{o.samples, o.samples.st == 1}, o.precision,
-        stratified_intersect_tolerance(o));
+    return std::make_unique<StratifiedMethod>(name,
+                                              StratifiedSettings{o.samples, o.samples.st == 1},
+                                              o.precision, stratified_intersect_tolerance(o));
   }
   if (name == "point") return std::make_unique<PointMethod>(o.precision, o.intersect_tolerance);
   if (name == "staa-temporal") {

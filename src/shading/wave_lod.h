@@ -63,9 +63,9 @@ class SortedWaves {
   mat2 suffix_covariance(size_t i) const;
 
  private:
-  std::vector<double> k_;              // |k| in sorted order
-  std::vector<WaveField> prefixes_;    // increasing sizes, the last one holds every wave
-  std::vector<vec3> suffix_cov_;       // (xx, xz, zz), size() + 1 entries
+  std::vector<double> k_;            // |k| in sorted order
+  std::vector<WaveField> prefixes_;  // increasing sizes, the last one holds every wave
+  std::vector<vec3> suffix_cov_;     // (xx, xz, zz), size() + 1 entries
 };
 
 }  // namespace sg
