@@ -32,7 +32,7 @@
 //    footprint, to first order;
 //  - a crest that the ray passes within e of may be hit or missed (a graze): there the
 //    bound holds vertically only.
-// intersect_test's LodBound checks this against the full intersection on a 256-wave sea.
+// kernel/resolved_waves_test.cpp checks this against the full intersection on a 256-wave sea.
 // tau = 0: every wave, the march above exactly.
 
 const int kMaxMarchSteps = 2000000;

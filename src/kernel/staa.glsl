@@ -73,7 +73,7 @@ SG_FN StaaSums staa_sums_zero(int K) {
 // its own A^2 |k|^2 / 2; summed over the remainder, the mean within
 // sum A |k| / 8 and each covariance entry within 9.4% of the remainder's trace). These are
 // bounds: cos(theta) and cos(2 theta) take every sign across the remainder's waves, and
-// staa_test's Remainder measures the actual departures. Everything below the remainder is
+// kernel/resolved_waves_test.cpp measures the actual departures. Everything below the remainder is
 // visited one by one (resolved, transition, and fully aliasing waves closer than the
 // bound), so the cost per pixel follows the waves it resolves; the 1.001 guards the
 // bound's rounding. `wave_remainder` off: every wave one by one.

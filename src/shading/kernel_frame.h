@@ -72,7 +72,7 @@ kd::Frame widen(const kf::Frame& f);
 
 // The displaced intersection's default tolerance (kernel/intersect.glsl): the waves it
 // leaves out move the water point a pixel sees by at most this fraction of the pixel's
-// footprint, to first order (docs/oceans.md measures it against the full intersection).
+// footprint, to first order (docs/ocean.md gives it as measured against the full intersection).
 inline constexpr double kDefaultIntersectTolerance = 0.25;
 
 // Builds the inputs of frame `ft` with K = `segments` path segments (1 to kMaxSegments),
