@@ -63,7 +63,9 @@ void run_info(const InfoArgs& a) {
                       {"distance_m", {b.distance_first, b.distance_last}},
                       {"resolved", b.resolved},
                       {"transition", b.transition},
-                      {"aliasing", b.aliasing}});
+                      {"aliasing", b.aliasing},
+                      {"staa_visited", b.visited},
+                      {"intersection_summed", b.intersect}});
   }
   WaveField w(s.surface.waves);
   LightModel light(s.light);
@@ -148,11 +150,16 @@ void run_info(const InfoArgs& a) {
         "resolution   waves per pixel resolved (f <= %g cycles/pixel), in transition, "
         "aliasing (f >= %g), water at rest\n",
         ap.start, ap.end);
-    std::printf("             rows       distance (m)        resolved  transition  aliasing\n");
+    std::printf(
+        "             visited: what staa sums one by one (the rest in O(1)); intersection: what "
+        "the displaced intersection sums\n");
+    std::printf(
+        "             rows       distance (m)        resolved  transition  aliasing   visited  "
+        "intersection\n");
     for (const ResolutionBand& b : res.bands) {
-      std::printf("             %4d-%-4d  %8.1f to %-7.1f %8.1f  %10.1f  %8.1f\n", b.row_first,
-                  b.row_last, b.distance_first, b.distance_last, b.resolved, b.transition,
-                  b.aliasing);
+      std::printf("             %4d-%-4d  %8.1f to %-7.1f %8.1f  %10.1f  %8.1f  %8.1f  %12.1f\n",
+                  b.row_first, b.row_last, b.distance_first, b.distance_last, b.resolved,
+                  b.transition, b.aliasing, b.visited, b.intersect);
     }
   }
   if (a.waves) {

@@ -69,6 +69,12 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
          {{"double", Precision::float64}, {"float", Precision::float32}},
          "point, supersample, reference, staa-temporal, staa: the shading kernel's precision on "
          "the CPU (float is what a GPU computes)");
+  app.add_option("--intersect-tolerance", o.intersect_tolerance,
+                 "point, supersample, reference, staa-temporal, staa on displaced water: leave "
+                 "out of the intersection the shortest waves whose amplitudes sum to at most "
+                 "this many pixels of the ray's footprint (0: every wave)")
+      ->capture_default_str()
+      ->check(number_in(0, 16));
 
   // staa, staa-temporal (methods/staa.h)
   StaaOptions& s = o.staa;
@@ -123,6 +129,9 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
                  "of reflection (0: never)")
       ->capture_default_str()
       ->check(number_in(0, 1e6));
+  choice(app, "--wave-remainder", s.wave_remainder, {{"sum", true}, {"each", false}},
+         "staa: the waves that certainly alias fully in a pixel add their covariance from "
+         "precomputed sums in O(1) (sum) or one by one (each)");
 
   // lean (methods/lean.h)
   app.add_option("--lean-size", o.lean.size,

@@ -6,6 +6,13 @@
 // only enter the pixel's reflection distribution). The footprint is that of the water at
 // rest (scene/footprint.h), so the answer depends on the view and the image size only.
 //
+// And what that costs the kernel (kernel/staa.glsl, kernel/intersect.glsl), with the waves
+// sorted by |k|: the waves staa visits one by one (those below its O(1) remainder, which
+// starts where every wave certainly aliases fully and, for the per-pixel NDF, spans
+// 8 half-cycles of phase), and the waves the displaced intersection sums at the pixel's
+// distance with the default tolerance (the shortest left out while their amplitudes sum
+// to at most a quarter of the pixel's ray bundle).
+//
 // A band's figures are means over pixels: up to 16 rows and 33 columns of the band,
 // evenly spaced, at their centres.
 #pragma once
@@ -21,6 +28,8 @@ struct ResolutionBand {
   int row_first = 0, row_last = 0;                    // image rows, 0 at the top
   double distance_first = 0, distance_last = 0;       // m, centre column, rows first and last
   double resolved = 0, transition = 0, aliasing = 0;  // mean waves per pixel
+  double visited = 0;    // mean waves staa visits one by one (per-pixel NDF)
+  double intersect = 0;  // mean waves the displaced intersection sums
 };
 
 struct WaveResolution {

@@ -48,6 +48,9 @@ TEST(WaveResolution, CountsOfAViewStraightDown) {
     EXPECT_DOUBLE_EQ(r.bands[b].transition, 6);
     EXPECT_DOUBLE_EQ(r.bands[b].aliasing, 4);
     EXPECT_NEAR(r.bands[b].distance_first, 10, 0.01);
+    // staa visits every wave below 2 pi 1.001 16 / (2 pi) = 2.55 cycles per pixel (the
+    // per-pixel NDF's remainder, kernel/staa.glsl): all but the two waves at 3.
+    EXPECT_DOUBLE_EQ(r.bands[b].visited, 13);
   }
   // Under the Euclidean norm the diagonal has f = 0.25 sqrt(2) = 0.354: in transition.
   p.norm = FrequencyNorm::norm;
@@ -85,7 +88,13 @@ TEST(WaveResolution, OnlyRowsBelowTheHorizonAndFewerResolvedFarAway) {
   for (int b = 0; b < 3; ++b) {
     EXPECT_NEAR(r.bands[b].resolved + r.bands[b].transition + r.bands[b].aliasing, n, 1e-9);
     EXPECT_GT(r.bands[b].distance_first, r.bands[b].distance_last);  // top rows are farther
+    // staa visits the resolved waves and those in transition, and fewer than all far away.
+    EXPECT_GE(r.bands[b].visited, r.bands[b].resolved + r.bands[b].transition);
+    EXPECT_LE(r.bands[b].visited, n);
+    EXPECT_LE(r.bands[b].intersect, n);
   }
+  EXPECT_LT(r.bands[0].visited, n);
+  EXPECT_LE(r.bands[0].intersect, r.bands[2].intersect);
   EXPECT_LT(r.bands[0].resolved, r.bands[2].resolved);
   EXPECT_GT(r.bands[0].aliasing, r.bands[2].aliasing);
   // A camera looking up sees no water.

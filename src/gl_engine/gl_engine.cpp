@@ -8,6 +8,7 @@
 #include "gl/check.h"
 #include "gl/dispatch.h"
 #include "gl_engine/uniforms.h"
+#include "methods/supersample.h"
 #include "shading/kernel_frame.h"
 #include "shading/kernel_table.h"
 #include "shading/path_table.h"
@@ -21,6 +22,7 @@ const char* gl_methods() {
 GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   validate(o);
   GlVariant v;
+  v.intersect_tolerance = o.intersect_tolerance;
   if (method == "point") {
     v.entry = KernelEntry::point;
   } else if (method == "supersample" || method == "reference") {
@@ -29,6 +31,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     v.counts.sy = o.samples.sy;
     v.counts.nt = o.samples.st;
     v.counts.time_at_frame = method == "supersample" && o.samples.st == 1;
+    v.intersect_tolerance = stratified_intersect_tolerance(o);
   } else if (method == "staa-temporal") {
     v.entry = KernelEntry::staa_temporal;
     v.segments = o.staa.segments;
@@ -54,6 +57,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     v.params.nyquist_max = s.nyquist_max_axis;
     v.params.footprint = s.footprint == FootprintMode::none ? 0 : 1;
     v.params.curvature_limit = static_cast<float>(s.curvature_limit);
+    v.params.wave_remainder = s.wave_remainder;
   } else {
     throw Error("--method " + method + ": not on the GL engine (it runs " + gl_methods() +
                 "; use --engine cpu)");
@@ -83,7 +87,7 @@ GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
 GlEngine::~GlEngine() = default;
 
 void GlEngine::upload(const FrameContext& ctx) {
-  build_kernel_inputs(ctx.model, ctx.time, v_.segments, ctx.seed, *inputs_);
+  build_kernel_inputs(ctx.model, ctx.time, v_.segments, ctx.seed, *inputs_, v_.intersect_tolerance);
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(w, h, GL_RGBA32F);

@@ -34,6 +34,7 @@ struct GlVariant {
   int segments = 1;
   kf::SampleCounts counts{};
   kf::StaaParams params{};
+  double intersect_tolerance = 0;  // --intersect-tolerance (shading/kernel_frame.h)
 };
 GlVariant gl_variant(const std::string& method, const MethodOptions& options);
 

@@ -58,6 +58,7 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::Frame& f) {
   u.set(n + ".wave_stride", f.wave_stride);
   u.set(n + ".amplitude_bound", f.amplitude_bound);
   u.set(n + ".slope_bound", f.slope_bound);
+  u.set(n + ".intersect_tolerance", f.intersect_tolerance);
   u.set(n + ".duration", f.duration);
   u.set(n + ".segments", f.segments);
   u.set(n + ".frame", f.frame);
@@ -77,6 +78,7 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::StaaParams& 
   u.set(n + ".nyquist_max", p.nyquist_max);
   u.set(n + ".footprint", p.footprint);
   u.set(n + ".curvature_limit", p.curvature_limit);
+  u.set(n + ".wave_remainder", p.wave_remainder);
 }
 
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::SampleCounts& c) {

@@ -58,10 +58,14 @@ struct Frame {
   int wave_stride;       // texels per wave in the wave buffer
   real amplitude_bound;  // sum |A_i| (the slab that holds the surface)
   real slope_bound;      // sum |A_i| |k_i| (a bound on |grad h|)
-  real duration;         // the shutter interval is [display time - duration, display time]
-  int segments;          // K: the path's instants t_k = end - duration (K - k) / K, k = 0..K
-  int frame;             // the frame's index (for the sampling streams)
-  uvec2 seed;            // the sampling seed, as a 64-bit word (rng.glsl)
+  // Displaced water: the intersection may leave out the shortest waves whose amplitudes
+  // sum to at most this many pixels' worth of the ray's footprint (intersect.glsl); 0:
+  // every wave.
+  real intersect_tolerance;
+  real duration;  // the shutter interval is [display time - duration, display time]
+  int segments;   // K: the path's instants t_k = end - duration (K - k) / K, k = 0..K
+  int frame;      // the frame's index (for the sampling streams)
+  uvec2 seed;     // the sampling seed, as a 64-bit word (rng.glsl)
 };
 
 // The path tables' shapes (path_table.glsl, shading/path_table.h).
@@ -99,6 +103,7 @@ struct StaaParams {
   bool nyquist_max;      // --nyquist max (else norm)
   int footprint;         // 0 none, 1 gaussian, 2 exact (CPU only: host finishes)
   real curvature_limit;  // 0: off
+  bool wave_remainder;   // the fully aliasing waves' sum in O(1) (else one by one; staa.glsl)
 };
 
 // `reference` and `supersample`: samples per pixel (sampling.glsl).

@@ -12,6 +12,28 @@
 // 1971) to |f| <= root_tolerance (1e-9 m in double, 1e-5 m in float) or a bracket at
 // rounding width. The march stops after kMaxMarchSteps steps (a graze along the whole
 // slab at the smallest step), as a miss.
+//
+// The waves a pixel cannot see in the geometry (Frame.intersect_tolerance = tau > 0).
+// Leaving out the waves j >= n (the shortest: the wave buffer is sorted by |k|) changes
+// the height by at most e_n = sum_{j>=n} A_j, the suffix's amplitude (waves.glsl). At ray
+// parameter s the march sums the first n(s) waves, the fewest with e_n(s) <= tau eps s,
+// where eps is a lower bound on the angle between neighbouring pixels' rays there
+// (pixel_angle), so eps s is at most the width of the pixel's ray bundle; n(s) falls as
+// s grows (re-chosen whenever s has grown by a quarter), and so do the slab and the
+// Lipschitz bound of the waves summed (the table's prefix sums). What the bound gives:
+//  - the hit returned at s_h lies within tau eps s_h (plus root_tolerance) of the full
+//    surface, vertically, and before it the ray never dips more than tau eps s (plus
+//    graze_depth) below the full surface;
+//  - where the ray crosses the surface (not a graze), a vertical error e moves the hit
+//    along the ray by e cos(beta) / sin(g) (beta the tangent plane's tilt, g the angle
+//    between the ray and that plane), that is by e cos(beta) cos(g) / sin(g) across the
+//    tangent plane, where a pixel's footprint is at least eps s / sin(g) long in that
+//    direction: the water point moves by at most e / (eps s) <= tau of the pixel's
+//    footprint, to first order;
+//  - a crest that the ray passes within e of may be hit or missed (a graze): there the
+//    bound holds vertically only.
+// kernel/resolved_waves_test.cpp checks this against the full intersection on a 256-wave sea.
+// tau = 0: every wave, the march above exactly.
 
 const int kMaxMarchSteps = 2000000;
 const int kMaxRefineSteps = 100;
@@ -48,35 +70,76 @@ SG_FN RayHit intersect_flat(vec3 o, vec3 d) {
   return r;
 }
 
-// f(s) = y(s) - h at the point o + s d.
-SG_FN real height_above_water(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3 d, real s, real dt) {
+// A lower bound on the angle between the rays through neighbouring pixel centres, at unit
+// direction d of a camera ray: the smaller image-plane pixel size p of camera_direction's
+// plane (at distance 1 along `forward`), times cos^2 of d's angle phi from the axis (the
+// plane is 1 / cos(phi) away along d, and tilted by phi).
+SG_FN real pixel_angle(IN(Camera) c, vec3 d) {
+  real cphi = max(dot(d, c.forward), 0.0);
+  return min(2.0 * c.half_w / c.width, 2.0 * c.half_h / c.height) * cphi * cphi;
+}
+
+// f(s) = y(s) - h at the point o + s d, the first n waves summed.
+SG_FN real height_above_first(IN(WaveBuffer) waves, IN(Frame) f, int n, vec3 o, vec3 d, real s,
+                              real dt) {
   vec3 p = o + s * d;
-  return p.y - water_height(waves, f, p.x, p.z, dt);
+  return p.y - water_height_first(waves, f, n, p.x, p.z, dt);
+}
+
+// The first n waves' bounds on the ray: the slab |y| <= amplitude (entry and exit
+// parameters) and the Lipschitz bound of f along d.
+struct MarchSet {
+  int n;
+  real lip;
+  real s_enter;
+  real s_exit;
+  bool empty;  // the ray misses the slab
+};
+
+SG_FN MarchSet march_set(IN(WaveBuffer) waves, IN(Frame) f, int n, vec3 o, vec3 d) {
+  MarchSet m;
+  m.n = n;
+  real amax = f.amplitude_bound;
+  real slope = f.slope_bound;
+  if (n < f.wave_count) {
+    vec4 b = wave_bounds_at(waves, f, n);
+    amax = b.y;
+    slope = b.z;
+  }
+  m.lip = abs(d.y) + slope * length(vec2(d.x, d.z));
+  m.s_enter = 0.0;
+  m.s_exit = 0.0;
+  m.empty = false;
+  if (d.y < 0.0) {
+    m.s_enter = max(0.0, (o.y - amax) / -d.y);
+    m.s_exit = (o.y + amax) / -d.y;
+  } else if (d.y > 0.0) {
+    m.empty = o.y > amax;
+    m.s_exit = (amax - o.y) / d.y;
+  } else {
+    m.empty = abs(o.y) > amax;
+    m.s_exit = kRealMax;
+  }
+  m.empty = m.empty || !(m.s_exit >= m.s_enter);
+  return m;
 }
 
 // The first intersection with y = h(x, z, t), dt = t - display time; `d` unit length.
 SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3 d, real dt) {
   RayHit r = no_hit();
-  real amax = f.amplitude_bound;
-  // The part of the ray inside the slab |y| <= amax.
-  real s0 = 0.0;
-  real s1 = 0.0;
-  if (d.y < 0.0) {
-    s0 = max(0.0, (o.y - amax) / -d.y);
-    s1 = (o.y + amax) / -d.y;
-  } else if (d.y > 0.0) {
-    if (o.y > amax) return r;
-    s1 = (amax - o.y) / d.y;
-  } else {
-    if (abs(o.y) > amax) return r;
-    s1 = kRealMax;
+  // The height the left-out waves may have, per unit of ray length (0: every wave).
+  real tol = f.intersect_tolerance > 0.0 ? f.intersect_tolerance * pixel_angle(f.camera, d) : 0.0;
+  MarchSet m = march_set(waves, f, f.wave_count, o, d);
+  if (m.empty) return r;
+  real s = m.s_enter;
+  if (tol > 0.0) {
+    m = march_set(waves, f, first_wave_below(waves, f, tol * s), o, d);
+    if (m.empty) return r;
+    s = max(s, m.s_enter);
   }
-  if (!(s1 >= s0)) return r;
-  real lip = abs(d.y) + f.slope_bound * length(vec2(d.x, d.z));
-  real min_step = graze_depth() / max(lip, 1e-30);
-
-  real s = s0;
-  real fs = height_above_water(waves, f, o, d, s, dt);
+  real s_chosen = s;  // where the set was last chosen
+  real min_step = graze_depth() / max(m.lip, 1e-30);
+  real fs = height_above_first(waves, f, m.n, o, d, s, dt);
   if (fs <= 0.0) {
     // The ray starts at or below the surface (only when the camera is inside the slab).
     r.hit = true;
@@ -84,10 +147,30 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
     r.point = o + s * d;
     return r;
   }
-  for (int step = 0; step < kMaxMarchSteps && s < s1; ++step) {
-    real next = min(s1, s + max(fs / lip, min_step));
+  for (int step = 0; step < kMaxMarchSteps && s < m.s_exit; ++step) {
+    if (tol > 0.0 && s > 1.25 * s_chosen) {
+      // Further along the ray: fewer waves are visible.
+      s_chosen = s;
+      int n = first_wave_below(waves, f, tol * s);
+      if (n < m.n) {
+        m = march_set(waves, f, n, o, d);
+        if (m.empty) return r;
+        min_step = graze_depth() / max(m.lip, 1e-30);
+        if (s < m.s_enter) s = m.s_enter;
+        fs = height_above_first(waves, f, m.n, o, d, s, dt);
+        if (fs <= 0.0) {
+          // The fewer waves are above the ray already: within the tolerance of the surface
+          // (the previous set had the ray above it, both are within tau eps s of the whole).
+          r.hit = true;
+          r.s = s;
+          r.point = o + s * d;
+          return r;
+        }
+      }
+    }
+    real next = min(m.s_exit, s + max(fs / m.lip, min_step));
     if (!(next < kRealMax)) break;
-    real fn = height_above_water(waves, f, o, d, next, dt);
+    real fn = height_above_first(waves, f, m.n, o, d, next, dt);
     if (fn <= 0.0) {
       // Root bracketed in [s, next] (f(s) > 0 >= f(next)): Illinois iterations.
       real a = s;
@@ -98,7 +181,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
       for (int it = 0; it < kMaxRefineSteps && -fb > root_tolerance(); ++it) {
         real c = (a * fb - b * fa) / (fb - fa);
         if (!(c > a && c < b)) c = 0.5 * (a + b);
-        real fc = height_above_water(waves, f, o, d, c, dt);
+        real fc = height_above_first(waves, f, m.n, o, d, c, dt);
         if (fc > 0.0) {
           a = c;
           fa = fc;
@@ -113,7 +196,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
         if (b - a <= 4.0 * kRealEpsilon * abs(b)) break;
       }
       // b is on the surface's side f <= 0 within the tolerance; keep its exact height.
-      fb = height_above_water(waves, f, o, d, b, dt);
+      fb = height_above_first(waves, f, m.n, o, d, b, dt);
       r.hit = true;
       r.s = b;
       r.point = o + b * d;

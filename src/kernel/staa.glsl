@@ -6,7 +6,10 @@
 //     into a resolved share (1 - alpha) and an aliasing share alpha (Eq. 20,
 //     aliasing.glsl); the resolved shares give the gradients at the path's instants
 //     (reflection_path.glsl) and the Hessian; the aliasing shares the NDF's moments
-//     (Eq. 3 or Eqs. 4-7 with Appendix A, ndf.glsl). Nothing is stored per wave.
+//     (Eq. 3 or Eqs. 4-7 with Appendix A, ndf.glsl). Nothing is stored per wave. The pass
+//     visits the waves one by one only up to the remainder (staa_remainder_start): the
+//     waves, sorted by |k|, that certainly alias fully in this pixel (and, for the
+//     per-pixel NDF, span many cycles of it) add their summed covariance in O(1).
 //  3. No aliasing share and no footprint term: the temporal method exactly (Sec. 3.3).
 //  4. Otherwise (staa_finish) the NDF, centred on the resolved normal, maps to a Gaussian
 //     RDF of covariance J Sigma J^T on the light plane (Eqs. 8-16, rdf.glsl), plus the
@@ -48,6 +51,67 @@ SG_FN StaaSums staa_sums_zero(int K) {
   return s;
 }
 
+// The fully aliasing remainder (Bruneton et al. 2010, Sec. 3.2: with the waves sorted by
+// wavelength, the variance of what a pixel does not resolve is a difference of sums).
+// For a footprint Jacobian J with smallest singular value sigma (metres per pixel along
+// the footprint's shortest direction), a wave of wavenumber kappa has
+//   - projected frequency f >= kappa sigma / (2 pi) (norm; / sqrt 2 for max, as
+//     max(|fx|, |fy|) >= |(fx, fy)| / sqrt 2), since |J^T k| >= sigma |k|; so it aliases
+//     fully (alpha = 1, Eq. 20; the curvature limit only raises alpha) once
+//     kappa >= 2 pi alias_end (sqrt 2) / sigma;
+//   - phase half-width D >= kappa sigma / 2 (ndf.glsl: D = |k|^2 / (2 |J^-1 k|_max) and
+//     |J^-1 k|_max <= |J^-1 k| <= |k| / sigma).
+// Past the first of these the uniform NDF (Eq. 3) of the remaining waves is their summed
+// covariance sum A^2 / 2 k k^T exactly: the wave buffer's suffix sums (waves.glsl).
+// The per-pixel NDF (Appendix A) is not: a wave adds the mean slope K k and the
+// covariance (J - K^2) k k^T, K = A cos(theta) sin(D) / D and
+// J = A^2 / 2 (1 + cos(2 theta) sin(2D) / (2D)), whose limit as D grows is no mean and
+// the full A^2 / 2. The remainder adds that limit once D >= kFarHalfWidth is certain too
+// (kappa >= 2 kFarHalfWidth / sigma), so that each remaining wave's error is at most
+//     |K| <= A / D <= A / 8,   |(J - K^2) - A^2 / 2| <= A^2 / (4D) + A^2 / D^2 <= 0.047 A^2
+// (mean slope within 1/8 of the wave's slope amplitude A |k|, variance within 9.4% of
+// its own A^2 |k|^2 / 2; summed over the remainder, the mean within
+// sum A |k| / 8 and each covariance entry within 9.4% of the remainder's trace). These are
+// bounds: cos(theta) and cos(2 theta) take every sign across the remainder's waves, and
+// kernel/resolved_waves_test.cpp measures the actual departures. Everything below the remainder is
+// visited one by one (resolved, transition, and fully aliasing waves closer than the
+// bound), so the cost per pixel follows the waves it resolves; the 1.001 guards the
+// bound's rounding. `wave_remainder` off: every wave one by one.
+const real kFarHalfWidth = 8.0;
+
+// The smaller singular value of a 2x2 matrix: |det| / sigma_max.
+SG_FN real smallest_singular_value(mat2 J) {
+  real t = dot(J[0], J[0]) + dot(J[1], J[1]);
+  real det = abs(determinant(J));
+  real smax = sqrt(0.5 * (t + sqrt(max(t * t - 4.0 * det * det, 0.0))));
+  return smax > 0.0 ? det / smax : 0.0;
+}
+
+// For footprint Jacobian J: the wavenumber from which every wave aliases fully (x), and
+// the remainder's (y, at least x); kRealMax for a singular J.
+SG_FN vec2 staa_remainder_wavenumbers(IN(StaaParams) p, mat2 J) {
+  real sigma = smallest_singular_value(J);
+  if (!(sigma > 0.0)) return vec2(kRealMax);
+  real k_alias = 1.001 * kTwoPi * p.alias_end * (p.nyquist_max ? kSqrtTwo : 1.0) / sigma;
+  real k_far = p.per_pixel_ndf ? 1.001 * 2.0 * kFarHalfWidth / sigma : 0.0;
+  return vec2(k_alias, max(k_alias, k_far));
+}
+
+// The first wave of the remainder for footprint Jacobian J (N: none).
+SG_FN int staa_remainder_start(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, mat2 J) {
+  if (!p.wave_remainder) return f.wave_count;
+  vec2 k = staa_remainder_wavenumbers(p, J);
+  return k.y < kRealMax ? first_wave_from(waves, f, k.y) : f.wave_count;
+}
+
+// The remainder's share of the sums: the covariance of waves c..N-1, and whether any has
+// an amplitude.
+SG_FN void staa_add_remainder(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f, int c) {
+  vec4 m = wave_suffix_moments(waves, f, c);
+  sums.ndf.cov += vec3(m.x, m.y, m.z);
+  sums.any_alias = sums.any_alias || m.w > 0.0;
+}
+
 // The one pass over the waves (step 2): the definition; the CPU engine's vectorised
 // equivalent under SG_CPU_WAVE_SUMS (kernel/cpu/wave_sums.h), tested equal to it.
 SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
@@ -58,7 +122,8 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
   mat2 Jinv = det != 0.0 ? inverse(J) : mat2(0.0);
   bool curvature = p.footprint != 0 && p.curvature_limit > 0.0;
   real limit = p.curvature_limit * f.light.radius;
-  for (int i = 0; i < f.wave_count; ++i) {
+  int c = staa_remainder_start(waves, f, p, J);
+  for (int i = 0; i < c; ++i) {
     Wave w = wave_at(waves, f, i);
     vec2 k = vec2(w.a, w.b);
     real theta = wave_phase(w, fp.point.x, fp.point.z, 0.0);
@@ -88,6 +153,7 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
       }
     }
   }
+  staa_add_remainder(sums, waves, f, c);
   return sums;
 }
 

@@ -9,6 +9,17 @@
 //   i S + 2 + k / 2: (cos, sin) of c (end - t_k) for the path's instants k = 0..K-1,
 //                    two instants per texel (xy for even k, zw for odd k).
 // Waves are sorted by |k| (ascending) on the host.
+//
+// After the N waves, at texel N S, the waves' sums from each position on (Bruneton et al.
+// 2010, Sec. 3.2: with the waves sorted by wavelength, what a pixel leaves out is a
+// suffix, and its variance is a difference of sums), N + 1 entries of two texels, entry
+// i = 0..N holding the sums over the waves j >= i (suffix) or j < i (prefix):
+//   N S + 2 i:     (sum_{j>=i} A_j^2 / 2 (a_j^2, a_j b_j, b_j^2), sum_{j>=i} A_j^2)
+//                  the suffix's slope covariance (Eq. 3) and squared amplitudes;
+//   N S + 2 i + 1: (sum_{j>=i} A_j, sum_{j<i} A_j, sum_{j<i} A_j |k_j|, 0)
+//                  the suffix's amplitude (a bound on its height), the prefix's amplitude
+//                  and slope bounds (its slab and Lipschitz bound, intersect.glsl).
+// The host sums in double; entry N is the empty suffix (zeros and the whole prefix).
 struct Wave {
   real A;
   real a;
@@ -44,16 +55,62 @@ SG_FN real wave_phase(IN(Wave) w, real x, real z, real dt) {
   return wrap_angle(w.a * x + w.b * z + w.theta0 + w.c * dt);
 }
 
+// The sums of entry i (0 <= i <= N) of the table above.
+SG_FN vec4 wave_suffix_moments(IN(WaveBuffer) waves, IN(Frame) f, int i) {
+  return texelFetch(waves, f.wave_count * f.wave_stride + 2 * i);
+}
+SG_FN vec4 wave_bounds_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
+  return texelFetch(waves, f.wave_count * f.wave_stride + 2 * i + 1);
+}
+
+// The first position whose wavenumber is at least `k` (N when none is): a binary search
+// over the sorted |k|.
+SG_FN int first_wave_from(IN(WaveBuffer) waves, IN(Frame) f, real k) {
+  int lo = 0;
+  int hi = f.wave_count;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (texelFetch(waves, mid * f.wave_stride + 1).y < k) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
+// The first position i whose suffix's amplitude sum_{j>=i} A_j is at most `amplitude`
+// (N when only the empty suffix is): a binary search, the suffix sums falling with i.
+SG_FN int first_wave_below(IN(WaveBuffer) waves, IN(Frame) f, real amplitude) {
+  int lo = 0;
+  int hi = f.wave_count;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (wave_bounds_at(waves, f, mid).x > amplitude) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
 // The sums over the waves at one point and time: the definitions. The CPU engine replaces
 // the two that every method calls by vectorised equivalents (SG_CPU_WAVE_SUMS below;
 // kernel/cpu/wave_sums.h), tested equal to these.
-SG_FN real wave_sum_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
+// The height of the first n waves (in |k| order).
+SG_FN real wave_sum_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z,
+                                 real dt) {
   real h = 0.0;
-  for (int i = 0; i < f.wave_count; ++i) {
+  for (int i = 0; i < n; ++i) {
     Wave w = wave_at(waves, f, i);
     h += w.A * sin(wave_phase(w, x, z, dt));
   }
   return h;
+}
+
+SG_FN real wave_sum_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
+  return wave_sum_height_first(waves, f, f.wave_count, x, z, dt);
 }
 
 // (dh/dx, dh/dz)
@@ -69,8 +126,12 @@ SG_FN vec2 wave_sum_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, 
 
 #ifdef SG_CPU_WAVE_SUMS
 real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
+real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z, real dt);
 vec2 water_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
 #else
+SG_FN real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z, real dt) {
+  return wave_sum_height_first(waves, f, n, x, z, dt);
+}
 SG_FN real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
   return wave_sum_height(waves, f, x, z, dt);
 }

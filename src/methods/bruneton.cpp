@@ -14,6 +14,23 @@
 
 namespace sg {
 
+void BrunetonMethod::begin_frame(const FrameContext& ctx) {
+  reset_fallbacks();
+  sorted_waves(ctx.model);
+}
+
+const SortedWaves& BrunetonMethod::sorted_waves(const SceneModel& m) const {
+  if (sorted_model_.load(std::memory_order_acquire) != m.id) {
+    // Built by begin_frame; here only for a caller that shades without it.
+    std::lock_guard<std::mutex> lock(sorted_mutex_);
+    if (sorted_model_.load(std::memory_order_relaxed) != m.id) {
+      sorted_ = std::make_unique<SortedWaves>(m.waves);
+      sorted_model_.store(m.id, std::memory_order_release);
+    }
+  }
+  return *sorted_;
+}
+
 RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) const {
   const SceneModel& m = ctx.model;
   const double t = ctx.time.end;
@@ -22,14 +39,19 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   const PixelFootprint rest = rest_plane_footprint(m, i + 0.5, j + 0.5);
   if (!rest.hit) return miss_pixel_weights(m, i, j);
 
-  // 1. Filter weights, w_p = w_n (the grid cell is the pixel).
+  // 1. Filter weights, w_p = w_n (the grid cell is the pixel), of the waves that can have
+  // any (the waves sorted by |k|: a prefix; those past it have w = 0, wave_lod.h).
+  const SortedWaves& sorted = sorted_waves(m);
+  const mat2 J = rest.xz_jacobian();
+  const size_t kept = sorted.filtered_from(J, options_.n_min);
+  const WaveField& waves = sorted.prefix(kept);
   thread_local std::vector<double> w, wr;
-  wave_lod_weights(m.waves, rest.xz_jacobian(), options_.n_min, options_.n_max, w);
+  wave_lod_weights(waves, J, options_.n_min, options_.n_max, w);
 
   // 2. Position: the rest plane, or the filtered height field.
   vec3 P = rest.point;
   if (m.displaced()) {
-    const RayHit hit = intersect_displaced(m.waves.weighted(w), o, d, t);
+    const RayHit hit = intersect_displaced(waves.weighted(w), o, d, t);
     if (!hit.hit) {
       if (hit.exhausted) count_fallback();  // a march that found no water: the sky
       return miss_pixel_weights(m, i, j);
@@ -40,14 +62,16 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   const vec3 v = normalize(o - P);
 
   // 3. Normal (Eq. 3), mirrored when back-facing.
-  vec3 n = normal_from_gradient(m.waves.gradient_weighted(P.x, P.z, t, w));
+  vec3 n = normal_from_gradient(waves.gradient_weighted(P.x, P.z, t, w));
   if (dot(n, v) < 0) n = normalize(n - 2 * dot(n, v) * v);
 
-  // 4. Slope variances of the filtered-out waves (Eq. 4 for sines), principal axes, clamp.
+  // 4. Slope variances of the filtered-out waves (Eq. 4 for sines): the prefix's share
+  // 1 - w and the whole of every wave past it (a suffix sum); principal axes, clamp.
   wr.resize(w.size());
   for (size_t k = 0; k < w.size(); ++k)
     wr[k] = 1 - w[k];
-  const PrincipalAxes axes = principal_axes(uniform_ndf_covariance(m.waves, wr));
+  const PrincipalAxes axes =
+      principal_axes(uniform_ndf_covariance(waves, wr) + sorted.suffix_covariance(waves.size()));
   const vec2 sigma2(std::max(axes.s1 * axes.s1, options_.min_variance),
                     std::max(axes.s2 * axes.s2, options_.min_variance));
   vec3 major(axes.u.x, 0, axes.u.y);

@@ -8,7 +8,9 @@
 //    The paper projects a screen-space grid on the water at rest; here the grid cell is the
 //    pixel, so the projected cell size L and the projected pixel size l are one footprint
 //    on the plane y = 0 (rest_plane_footprint), and w_p = w_n = w(N_min, N_max, lambda/l)
-//    per wave (l along the wave's direction, wave_lod.h).
+//    per wave (l along the wave's direction, wave_lod.h). As the paper's Sec. 7.1, the sums
+//    run over the waves that can have w > 0 only: sorted by |k|, a prefix certain from the
+//    pixel's footprint (wave_lod.h, SortedWaves), so the cost follows the waves kept.
 // 2. Position (displaced geometry). Eq. 2 displaces the grid by trochoids; a sine wave
 //    has no horizontal displacement, so the position filter scales the waves' heights: the
 //    camera ray is intersected with the field of amplitudes w_p A_i. Flat geometry: the
@@ -18,7 +20,8 @@
 // 4. BRDF variance (Eq. 4 for sines). The filtered-out part w_r = 1 - w_n of a sine wave of
 //    amplitude A and wave vector k has slope covariance (w_r A)^2 / 2 k k^T (variance
 //    (w_r A)^2 |k|^2 / 2; the trochoid's 1 - sqrt(1 - k^2 h^2) tends to k^2 h^2 / 2 for
-//    small steepness), summed over waves (shading/ndf.h, uniform_ndf_covariance). The paper
+//    small steepness), summed over waves (shading/ndf.h, uniform_ndf_covariance; the
+//    waves past the prefix from a suffix sum). The paper
 //    uses the wind and cross-wind axes, the principal axes of the Cox-Munk ellipse; these
 //    scenes have no wind, so the axes are the principal axes of this covariance: sigma_x^2,
 //    sigma_y^2 are its eigenvalues, and no correlation is dropped (the Ross BRDF takes
@@ -46,8 +49,14 @@
 // A pixel whose ray misses the water (on the rest plane) sees the sky (miss_radiance).
 #pragma once
 
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+
 #include "methods/fallback.h"
 #include "methods/method.h"
+#include "shading/wave_lod.h"
 
 namespace sg {
 
@@ -58,11 +67,17 @@ class BrunetonMethod final : public Method, public FallbackCounter {
  public:
   explicit BrunetonMethod(BrunetonOptions o) : options_(o) {}
   std::string name() const override { return "bruneton"; }
-  void begin_frame(const FrameContext&) override { reset_fallbacks(); }
+  void begin_frame(const FrameContext& ctx) override;
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 
  private:
+  // The scene's waves sorted by |k| (wave_lod.h), built once per scene model.
+  const SortedWaves& sorted_waves(const SceneModel& m) const;
+
   BrunetonOptions options_;
+  mutable std::mutex sorted_mutex_;
+  mutable std::unique_ptr<SortedWaves> sorted_;
+  mutable std::atomic<uint64_t> sorted_model_{~uint64_t(0)};
 };
 
 }  // namespace sg

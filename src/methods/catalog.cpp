@@ -45,21 +45,28 @@ const std::vector<MethodInfo>& method_catalog() {
   return catalog;
 }
 
+static_assert(MethodOptions{}.intersect_tolerance == kDefaultIntersectTolerance,
+              "--intersect-tolerance's default is the kernel frame's");
+
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
   validate(o);
   if (name == "reference") {
     return std::make_unique<StratifiedMethod>(name, StratifiedSettings{o.samples, false},
-                                              o.precision);
+                                              o.precision, stratified_intersect_tolerance(o));
   }
   if (name == "supersample") {
-    return std::make_unique<StratifiedMethod>(
-        name, StratifiedSettings{o.samples, o.samples.st == 1}, o.precision);
+    return std::make_unique<StratifiedMethod>(name,
+                                              StratifiedSettings{o.samples, o.samples.st == 1},
+                                              o.precision, stratified_intersect_tolerance(o));
   }
-  if (name == "point") return std::make_unique<PointMethod>(o.precision);
+  if (name == "point") return std::make_unique<PointMethod>(o.precision, o.intersect_tolerance);
   if (name == "staa-temporal") {
-    return std::make_unique<StaaTemporalMethod>(o.staa.segments, o.precision);
+    return std::make_unique<StaaTemporalMethod>(o.staa.segments, o.precision,
+                                                o.intersect_tolerance);
   }
-  if (name == "staa") return std::make_unique<StaaMethod>(o.staa, o.precision);
+  if (name == "staa") {
+    return std::make_unique<StaaMethod>(o.staa, o.precision, o.intersect_tolerance);
+  }
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);
   if (name == "microspec") return std::make_unique<MicrospecMethod>(o.microspec);

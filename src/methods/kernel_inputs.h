@@ -12,9 +12,11 @@ namespace sg {
 
 class KernelFrameInputs {
  public:
-  // Inputs with K = segments path sub-arcs, in `precision`.
-  KernelFrameInputs(int segments, Precision precision)
-      : precision_(precision), segments_(segments) {}
+  // Inputs with K = segments path sub-arcs, in `precision`, with the displaced
+  // intersection's tolerance in pixels (shading/kernel_frame.h; 0: every wave).
+  KernelFrameInputs(int segments, Precision precision,
+                    double intersect_tolerance = kDefaultIntersectTolerance)
+      : precision_(precision), segments_(segments), intersect_tolerance_(intersect_tolerance) {}
   // Builds the inputs of ctx's frame.
   void build(const FrameContext& ctx);
   // Makes sure the inputs are ctx's frame's: the engine's begin_frame has built them, so
@@ -31,6 +33,7 @@ class KernelFrameInputs {
 
   Precision precision_;
   int segments_;
+  double intersect_tolerance_;
   KernelInputsD d_;
   KernelInputsF f_;
   uint64_t model_ = 0;

@@ -43,6 +43,9 @@ void validate(const MethodOptions& o) {
   };
   require(o.samples.st <= 64, "--samples", "at most 64 time samples (T) per pixel");
   require(o.staa.segments >= 1 && o.staa.segments <= 32, "--segments", "must be in [1, 32]");
+  require(std::isfinite(o.intersect_tolerance) && o.intersect_tolerance >= 0 &&
+              o.intersect_tolerance <= 16,
+          "--intersect-tolerance", "must be in [0, 16] pixels");
   const SpecaaOptions& sa = o.specaa;
   require(std::isfinite(sa.sigma2) && sa.sigma2 > 0, "--specaa-sigma2", "must be > 0");
   require(std::isfinite(sa.kappa) && sa.kappa >= 0, "--specaa-kappa", "must be >= 0");

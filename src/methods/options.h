@@ -60,6 +60,9 @@ struct StaaOptions {
   // its linearisation across the pixel by more than X disk radii of reflection is handed
   // to the aliasing set (0: never).
   double curvature_limit = 0;
+  // --wave-remainder sum|each: the waves that certainly alias fully in a pixel add their
+  // covariance from precomputed sums in O(1) (sum), or are visited one by one (each).
+  bool wave_remainder = true;
 };
 
 // The transition region of Eq. 20 that a `staa` variant uses. Defaults by measurement
@@ -133,6 +136,11 @@ struct MethodOptions {
   SampleCounts samples{8, 8, 8};             // --samples, for reference and supersample
   uint64_t seed = 0;                         // --seed: the sampling streams (rng.h)
   Precision precision = Precision::float64;  // --precision, for the kernel methods
+  // --intersect-tolerance X: displaced water, the kernel methods' intersection leaves out
+  // the shortest waves whose amplitudes sum to at most X pixels of the ray's footprint
+  // (kernel/intersect.glsl; the default is kDefaultIntersectTolerance of
+  // shading/kernel_frame.h); 0: every wave.
+  double intersect_tolerance = 0.25;
   StaaOptions staa;
   LeanOptions lean;
   TaaOptions taa;

@@ -30,6 +30,7 @@ P make_params(const StaaOptions& o) {
                 : o.footprint == FootprintMode::gaussian ? 1
                                                          : 2;
   p.curvature_limit = R(o.curvature_limit);
+  p.wave_remainder = o.wave_remainder;
   return p;
 }
 
@@ -77,11 +78,11 @@ void finish_exact(const kd::Frame& f, int K, const Path& path, const mat2& D,
 
 }  // namespace
 
-StaaMethod::StaaMethod(const StaaOptions& o, Precision precision)
+StaaMethod::StaaMethod(const StaaOptions& o, Precision precision, double intersect_tolerance)
     : o_(o),
       precision_(precision),
       tables_(&PathTables::shared()),
-      inputs_(o.segments, precision),
+      inputs_(o.segments, precision, intersect_tolerance),
       params_(make_params<kd::StaaParams>(o)),
       params_float_(make_params<kf::StaaParams>(o)) {}
 

@@ -44,7 +44,8 @@ class PathTables;
 
 class StaaMethod final : public Method {
  public:
-  explicit StaaMethod(const StaaOptions& o, Precision precision = Precision::float64);
+  explicit StaaMethod(const StaaOptions& o, Precision precision = Precision::float64,
+                      double intersect_tolerance = kDefaultIntersectTolerance);
   std::string name() const override { return "staa"; }
   void begin_frame(const FrameContext& ctx) override;
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;

@@ -72,6 +72,10 @@ TEST(StaaFootprint, NoneIsThePaperMethodBitForBit) {
     StaaOptions a;
     a.footprint = FootprintMode::none;
     StaaOptions b = a;
+    // The paper's per-pixel NDF sums every wave's Appendix A moments: the O(1) remainder,
+    // their limit for the waves far past the pixel's Nyquist rate, is off. The uniform NDF's
+    // remainder is the sum itself: on.
+    a.wave_remainder = false;
     b.ndf = NdfMode::uniform;
     b.kernels = 3;
     b.segments = 2;

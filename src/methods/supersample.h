@@ -6,7 +6,13 @@
 //                is the display time t_f, so `--samples 6x6x1` is spatial-only
 //                supersampling with 36 samples, the paper's "32x MSAA"-like baseline;
 //                with T > 1 it samples the shutter like the reference.
+// Their samples see every wave; on displaced water the intersection leaves out the
+// shortest waves as kernel/intersect.glsl allows, with --intersect-tolerance taken per
+// sample cell (divided by the larger of S_x, S_y: stratified_intersect_tolerance), so that
+// a hit moves by at most that fraction of the cell its sample stands for.
 #pragma once
+
+#include <algorithm>
 
 #include "methods/kernel_inputs.h"
 #include "methods/method.h"
@@ -14,11 +20,17 @@
 
 namespace sg {
 
+// --intersect-tolerance of `o` for one sample of its S_x x S_y x T (pixels).
+inline double stratified_intersect_tolerance(const MethodOptions& o) {
+  return o.intersect_tolerance / std::max({o.samples.sx, o.samples.sy, 1});
+}
+
 class StratifiedMethod final : public Method {
  public:
   StratifiedMethod(std::string name, StratifiedSettings settings,
-                   Precision precision = Precision::float64)
-      : name_(std::move(name)), settings_(settings), inputs_(1, precision) {}
+                   Precision precision = Precision::float64,
+                   double intersect_tolerance = kDefaultIntersectTolerance)
+      : name_(std::move(name)), settings_(settings), inputs_(1, precision, intersect_tolerance) {}
   std::string name() const override { return name_; }
   void begin_frame(const FrameContext& ctx) override { inputs_.build(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {

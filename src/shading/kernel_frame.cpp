@@ -32,7 +32,8 @@ void fill_light(const LightModel& l, Light& out) {
 }
 
 template <class In>
-void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed, In& out) {
+void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
+           double intersect_tolerance, In& out) {
   using Frame = decltype(out.frame);
   using R = decltype(out.frame.duration);
   using V3 = decltype(out.frame.light.L);
@@ -63,6 +64,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
   f.wave_stride = wave_stride(segments);
   f.amplitude_bound = R(w.amplitude_bound());
   f.slope_bound = R(w.slope_bound());
+  f.intersect_tolerance = R(intersect_tolerance);
   f.duration = R(ft.duration());
   f.segments = segments;
   f.frame = ft.frame;
@@ -111,6 +113,30 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
       out.rot_c[static_cast<size_t>(s) * np + q] = rc;
       out.rot_s[static_cast<size_t>(s) * np + q] = rs;
     }
+  }
+  // The sums from each position on (kernel/waves.glsl): suffix moments and amplitude,
+  // prefix amplitude and slope, in double, in buffer order.
+  const size_t base = static_cast<size_t>(n) * stride;
+  out.texels.resize(base + 2 * static_cast<size_t>(n + 1), V4(0));
+  std::vector<double> pre_A(n + 1, 0.0), pre_Ak(n + 1, 0.0);
+  for (int q = 0; q < n; ++q) {
+    const int i = out.order[q];
+    pre_A[q + 1] = pre_A[q] + w.A[i];
+    pre_Ak[q + 1] = pre_Ak[q] + w.A[i] * std::hypot(w.a[i], w.b[i]);
+  }
+  double sxx = 0, sxz = 0, szz = 0, sA2 = 0, sA = 0;
+  for (int q = n; q >= 0; --q) {
+    if (q < n) {
+      const int i = out.order[q];
+      const double e = 0.5 * w.A[i] * w.A[i];
+      sxx += e * w.a[i] * w.a[i];
+      sxz += e * w.a[i] * w.b[i];
+      szz += e * w.b[i] * w.b[i];
+      sA2 += w.A[i] * w.A[i];
+      sA += w.A[i];
+    }
+    out.texels[base + 2 * q] = V4(R(sxx), R(sxz), R(szz), R(sA2));
+    out.texels[base + 2 * q + 1] = V4(R(sA), R(pre_A[q]), R(pre_Ak[q]), 0);
   }
 }
 
@@ -174,6 +200,7 @@ kd::Frame widen(const kf::Frame& f) {
   d.wave_stride = f.wave_stride;
   d.amplitude_bound = f.amplitude_bound;
   d.slope_bound = f.slope_bound;
+  d.intersect_tolerance = f.intersect_tolerance;
   d.duration = f.duration;
   d.segments = f.segments;
   d.frame = f.frame;
@@ -182,12 +209,12 @@ kd::Frame widen(const kf::Frame& f) {
 }
 
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-                         KernelInputsD& out) {
-  build(m, ft, segments, seed, out);
+                         KernelInputsD& out, double intersect_tolerance) {
+  build(m, ft, segments, seed, intersect_tolerance, out);
 }
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-                         KernelInputsF& out) {
-  build(m, ft, segments, seed, out);
+                         KernelInputsF& out, double intersect_tolerance) {
+  build(m, ft, segments, seed, intersect_tolerance, out);
 }
 
 }  // namespace sg

@@ -10,7 +10,11 @@
 //    rad after an hour);
 //  - the rotations to the path's instants, (cos, sin) of c (t_f - t_k), k = 0..K-1;
 //  - the waves sorted by |k| (ascending, ties in file order): the order every engine sums
-//    them in.
+//    them in, so that what a pixel leaves out is a suffix;
+//  - the sums from each position of that order on (kernel/waves.glsl: the suffix's slope
+//    covariance and amplitude, the prefix's slab and slope bounds), after the waves in the
+//    wave buffer: the remainders that staa adds in O(1) and the bounds of the displaced
+//    intersection's fewer waves.
 // The tables (path tables, kernel fits) are views of host data (shading/path_table.h,
 // shading/kernel_table.h).
 #pragma once
@@ -52,7 +56,8 @@ using KernelInputsD = KernelInputs<kd::Frame, kd::vec4>;
 using KernelInputsF = KernelInputs<kf::Frame, kf::vec4>;
 
 // Texels per wave for K path segments: (A, a, b, theta0), (c, |k|, A |k|, 0), then the
-// rotations two per texel.
+// rotations two per texel. The buffer holds wave_count * stride texels of waves, then
+// 2 (wave_count + 1) of sums (kernel/waves.glsl).
 inline int wave_stride(int segments) {
   return 2 + (segments + 1) / 2;
 }
@@ -67,12 +72,19 @@ kd::Footprint kernel_footprint(const SceneModel& m, const PixelFootprint& fp);
 // A float frame's settings in double (the camera, the light and the flags; no waves).
 kd::Frame widen(const kf::Frame& f);
 
-// Builds the inputs of frame `ft` with K = `segments` path segments (1 to kMaxSegments)
-// and the sampling `seed`.
+// The displaced intersection's default tolerance (kernel/intersect.glsl): the waves it
+// leaves out move the water point a pixel sees by at most this fraction of the pixel's
+// footprint, to first order (docs/ocean.md gives it as measured against the full intersection).
+inline constexpr double kDefaultIntersectTolerance = 0.25;
+
+// Builds the inputs of frame `ft` with K = `segments` path segments (1 to kMaxSegments),
+// the sampling `seed` and the displaced intersection's tolerance (pixels; 0: every wave).
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-                         KernelInputsD& out);
+                         KernelInputsD& out,
+                         double intersect_tolerance = kDefaultIntersectTolerance);
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-                         KernelInputsF& out);
+                         KernelInputsF& out,
+                         double intersect_tolerance = kDefaultIntersectTolerance);
 
 // The wave buffer of `in` for the kernel; `vectorised`: with the arrays, so that the CPU
 // engine's vectorised sums run (else the kernel's own loops, the definitions).

@@ -2,6 +2,7 @@
 // is the kernel loop named beside it, with the waves in SIMD lanes.
 #include "kernel/cpu/wave_sums.h"
 
+#include <algorithm>
 #include <cstdint>
 
 // Highway's per-target compilation: this file is included once per instruction set. The
@@ -34,16 +35,24 @@ HWY_INLINE V Phase(D d, const V a, const V b, const V theta0, const V c, V x, V 
   return Wrap(d, hn::MulAdd(c, dt, hn::Add(hn::MulAdd(a, x, hn::Mul(b, z)), theta0)));
 }
 
+// The amplitudes of lanes i.. with the lanes at positions >= n set to 0.
+template <class D, class T>
+HWY_INLINE auto AmplitudesBelow(D d, const T* A, size_t i, size_t n) {
+  const auto v = hn::LoadU(d, A + i);
+  return i + hn::Lanes(d) <= n ? v : hn::IfThenElseZero(hn::FirstN(d, n - i), v);
+}
+
 template <class T>
-T HeightT(const Arrays<T>& w, T x0, T z0, T dt0) {
+T HeightT(const Arrays<T>& w, int n0, T x0, T z0, T dt0) {
   const hn::ScalableTag<T> d;
   const size_t N = hn::Lanes(d);
   const auto x = hn::Set(d, x0), z = hn::Set(d, z0), dt = hn::Set(d, dt0);
   auto h = hn::Zero(d);
-  for (size_t i = 0; i < size_t(w.count); i += N) {
+  const size_t n = size_t(n0);
+  for (size_t i = 0; i < n; i += N) {
     const auto th = Phase(d, hn::LoadU(d, w.a + i), hn::LoadU(d, w.b + i),
                           hn::LoadU(d, w.theta0 + i), hn::LoadU(d, w.c + i), x, z, dt);
-    h = hn::MulAdd(hn::LoadU(d, w.A + i), hn::Sin(d, th), h);
+    h = hn::MulAdd(AmplitudesBelow(d, w.A, i, n), hn::Sin(d, th), h);
   }
   return hn::GetLane(hn::SumOfLanes(d, h));
 }
@@ -99,7 +108,10 @@ void PathT(const Arrays<T>& w, T x0, T z0, int K, T* gx_out, T* gz_out) {
 }
 
 // kernel/staa.glsl, wave_sum_staa: Eq. 20's split, the resolved waves' path and Hessian
-// and the aliasing waves' NDF (kernel/ndf.glsl), in one pass.
+// and the aliasing waves' NDF (kernel/ndf.glsl), in one pass over the waves [0, count)
+// (the remainder's sums are the caller's: kernel/cpu/wave_sums_hooks.inc). A vector that
+// starts at or past alias_from has resolved shares 0 in every lane: its path and Hessian
+// terms, zeros, are skipped.
 template <class T>
 void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
   const hn::ScalableTag<T> d;
@@ -121,11 +133,13 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
     gx[k] = gz[k] = zero;
   V hxx = zero, hxz = zero, hzz = zero, mx = zero, mz = zero, cxx = zero, cxz = zero, czz = zero,
     any = zero;
-  const size_t n = size_t(w.count);
-  for (size_t i = 0; i < n; i += N) {
-    const V a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i), A = hn::LoadU(d, w.A + i);
+  const size_t n = size_t(w.count);  // the arrays' stride
+  const size_t visit = size_t(in.count), alias_from = size_t(std::max(in.alias_from, 0));
+  for (size_t i = 0; i < visit; i += N) {
+    const V a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i);
+    const V A = AmplitudesBelow(d, w.A, i, visit);
     const V th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), zero, x, z, zero);
-    const V s = hn::Sin(d, th), c = hn::Cos(d, th);
+    const V c = hn::Cos(d, th);
     // kernel/aliasing.glsl: the projected frequency and Eq. 20.
     const V fx = hn::Abs(hn::MulAdd(a, j00, hn::Mul(b, j01)));
     const V fy = hn::Abs(hn::MulAdd(a, j10, hn::Mul(b, j11)));
@@ -143,21 +157,24 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
       const V dev = hn::Mul(hn::Mul(hn::LoadU(d, w.slope + i), D), D);
       alpha = hn::Max(alpha, hn::Min(one, hn::Max(zero, hn::Sub(hn::Div(dev, limit), one))));
     }
-    const V resolved = hn::Mul(hn::Sub(one, alpha), A);
-    const V rc = hn::Mul(resolved, c);
-    gx[K] = hn::MulAdd(rc, a, gx[K]);
-    gz[K] = hn::MulAdd(rc, b, gz[K]);
-    for (int k = 0; k < K; ++k) {
-      const V ck = hn::MulAdd(c, hn::LoadU(d, w.rot_c + k * n + i),
-                              hn::Mul(s, hn::LoadU(d, w.rot_s + k * n + i)));
-      const V rk = hn::Mul(resolved, ck);
-      gx[k] = hn::MulAdd(rk, a, gx[k]);
-      gz[k] = hn::MulAdd(rk, b, gz[k]);
+    if (i < alias_from) {
+      const V s = hn::Sin(d, th);
+      const V resolved = hn::Mul(hn::Sub(one, alpha), A);
+      const V rc = hn::Mul(resolved, c);
+      gx[K] = hn::MulAdd(rc, a, gx[K]);
+      gz[K] = hn::MulAdd(rc, b, gz[K]);
+      for (int k = 0; k < K; ++k) {
+        const V ck = hn::MulAdd(c, hn::LoadU(d, w.rot_c + k * n + i),
+                                hn::Mul(s, hn::LoadU(d, w.rot_s + k * n + i)));
+        const V rk = hn::Mul(resolved, ck);
+        gx[k] = hn::MulAdd(rk, a, gx[k]);
+        gz[k] = hn::MulAdd(rk, b, gz[k]);
+      }
+      const V rs = hn::Mul(resolved, s);
+      hxx = hn::NegMulAdd(rs, hn::Mul(a, a), hxx);
+      hxz = hn::NegMulAdd(rs, hn::Mul(a, b), hxz);
+      hzz = hn::NegMulAdd(rs, hn::Mul(b, b), hzz);
     }
-    const V rs = hn::Mul(resolved, s);
-    hxx = hn::NegMulAdd(rs, hn::Mul(a, a), hxx);
-    hxz = hn::NegMulAdd(rs, hn::Mul(a, b), hxz);
-    hzz = hn::NegMulAdd(rs, hn::Mul(b, b), hzz);
     const V aliasing = hn::Mul(alpha, A);
     if (hn::AllFalse(d, hn::Gt(aliasing, zero))) continue;
     any = hn::Add(any, aliasing);
@@ -202,11 +219,11 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
   out.any = sum(any) > T(0);
 }
 
-double HeightD(const Arrays<double>& w, double x, double z, double dt) {
-  return HeightT(w, x, z, dt);
+double HeightD(const Arrays<double>& w, int n, double x, double z, double dt) {
+  return HeightT(w, n, x, z, dt);
 }
-float HeightF(const Arrays<float>& w, float x, float z, float dt) {
-  return HeightT(w, x, z, dt);
+float HeightF(const Arrays<float>& w, int n, float x, float z, float dt) {
+  return HeightT(w, n, x, z, dt);
 }
 void GradientD(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz) {
   GradientT(w, x, z, dt, gx, gz);
@@ -242,11 +259,11 @@ HWY_EXPORT(PathF);
 HWY_EXPORT(StaaD);
 HWY_EXPORT(StaaF);
 
-double height(const Arrays<double>& w, double x, double z, double dt) {
-  return HWY_DYNAMIC_DISPATCH(HeightD)(w, x, z, dt);
+double height(const Arrays<double>& w, int n, double x, double z, double dt) {
+  return HWY_DYNAMIC_DISPATCH(HeightD)(w, n, x, z, dt);
 }
-float height(const Arrays<float>& w, float x, float z, float dt) {
-  return HWY_DYNAMIC_DISPATCH(HeightF)(w, x, z, dt);
+float height(const Arrays<float>& w, int n, float x, float z, float dt) {
+  return HWY_DYNAMIC_DISPATCH(HeightF)(w, n, x, z, dt);
 }
 void gradient(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz) {
   HWY_DYNAMIC_DISPATCH(GradientD)(w, x, z, dt, gx, gz);

@@ -1,5 +1,5 @@
 // The CPU engine's vectorised sums over the waves: the same arithmetic as the kernel's
-// loops (kernel/waves.glsl, wave_sum_height and wave_sum_gradient;
+// loops (kernel/waves.glsl, wave_sum_height_first and wave_sum_gradient;
 // kernel/reflection_path.glsl, wave_sum_path; kernel/staa.glsl, wave_sum_staa), run across
 // the waves in SIMD lanes with Highway (sine and cosine: Highway's contrib math, 3 ULP)
 // and dispatched at run time to the host's widest instruction set. The kernel's loops are
@@ -9,7 +9,8 @@
 // The kernel reaches them through its SG_CPU_WAVE_SUMS hooks (kernel/cpu/kernel_double.cpp,
 // kernel/cpu/kernel_float.cpp); this interface has plain numbers only. The arrays are
 // padded to a multiple of kLanePadding with waves of amplitude 0 (shading/kernel_frame.h),
-// so the vectors need no tail.
+// so the vectors need no tail; a sum over the first n waves masks the lanes past n in its
+// last vector (amplitude 0), so that it equals the loop's.
 #pragma once
 
 #include "kernel/cpp_prelude.h"
@@ -31,6 +32,8 @@ struct StaaPassIn {
   bool curvature = false;
   T limit = 0;  // curvature limit times the light's radius
   int segments = 1;
+  int count = 0;       // the waves visited: positions [0, count) (kernel/staa.glsl, remainder)
+  int alias_from = 0;  // every wave from this position on aliases fully (resolved share 0)
 };
 
 template <class T>
@@ -42,8 +45,9 @@ struct StaaPassOut {
   bool any = false;
 };
 
-double height(const Arrays<double>& w, double x, double z, double dt);
-float height(const Arrays<float>& w, float x, float z, float dt);
+// The height of the first n waves (n <= w.count).
+double height(const Arrays<double>& w, int n, double x, double z, double dt);
+float height(const Arrays<float>& w, int n, float x, float z, float dt);
 void gradient(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz);
 void gradient(const Arrays<float>& w, float x, float z, float dt, float& gx, float& gz);
 // The gradients at the K + 1 instants of a path (every wave at full amplitude).
