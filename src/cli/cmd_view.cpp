@@ -24,7 +24,7 @@ struct ViewArgs {
   std::string scene_path, method = "staa", split, screenshot, save_scene;
   int frames = 0, width = 0, height = 0;
   double exposure = 0;
-  bool no_glare = false;
+  bool no_glare = false, show_controls = false;
   // Edits of the scene (NaN: as the scene has it).
   double sun_elevation = std::nan(""), sun_azimuth = std::nan(""), sun_radius = std::nan("");
   double amplitude_scale = 1;
@@ -42,8 +42,8 @@ void run_view(ViewArgs& a) {
         throw Error("--split: " + std::string(e.what()));
       }
     }
-    if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty()))
-      throw Error("--screenshot, --save-scene: need --frames N (a scripted run)");
+    if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls))
+      throw Error("--screenshot, --save-scene, --show-controls: need --frames N (a scripted run)");
     if (!a.screenshot.empty() && image_format_of(a.screenshot) != ImageFormat::png)
       throw Error("--screenshot: must be a .png file (got '" + a.screenshot + "')");
   });
@@ -78,6 +78,7 @@ void run_view(ViewArgs& a) {
   o.frames = a.frames;
   o.screenshot = a.screenshot;
   o.save_scene = a.save_scene;
+  o.show_controls = a.show_controls;
   viewer::run_viewer(o);
 }
 
@@ -101,6 +102,8 @@ void add_view_command(CLI::App& app) {
   c->add_option("--screenshot", a->screenshot,
                 "Scripted run: the last frame's displayed image (.png; RGB)");
   c->add_option("--save-scene", a->save_scene, "Scripted run: the view's scene file (.json)");
+  c->add_flag("--show-controls", a->show_controls,
+              "Scripted run: draw the controls (and the split's divider) in the screenshot too");
   c->add_option("--width", a->width,
                 "Override the image (and window) width (height follows the aspect ratio unless "
                 "given)")

@@ -10,6 +10,7 @@
 #include <deque>
 #include <memory>
 #include <numeric>
+#include <thread>
 
 #include "base/atomic_file.h"
 #include "base/error.h"
@@ -96,6 +97,13 @@ class Viewer {
       window_.begin_frame();
       render(f);
       view_->draw(shown_, 0, 0, scene_.width, scene_.height);
+      if (o_.show_controls) {
+        bool dirty = false;
+        playing_ = false;
+        position_ = f;
+        divider_and_labels();
+        controls(dirty);
+      }
       window_.end_frame(f == o_.frames - 1 ? &shot : nullptr);
     }
     const double wall = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -136,6 +144,9 @@ class Viewer {
       if (dirty) {
         render(position_);
         dirty = false;
+      } else {
+        // Paused and unchanged: the image stands; the loop only serves the controls.
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
       }
       view_->draw(shown_, 0, 0, scene_.width, scene_.height);
       divider_and_labels();
@@ -204,6 +215,7 @@ class Viewer {
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) step(1, dirty);
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) step(-1, dirty);
     if (ImGui::IsKeyPressed('Z', false)) lens_ = !lens_;
+    if (ImGui::IsKeyPressed('H', false)) show_controls_ = !show_controls_;
     if (ImGui::IsKeyPressed('S', false)) {
       split_ = !split_;
       set_split(dirty);
@@ -370,10 +382,13 @@ class Viewer {
   }
 
   void controls(bool& dirty) {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::SetNextWindowCollapsed(false, ImGuiCond_FirstUseEver);
-    ImGui::Begin("sunglint view", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    if (!show_controls_) return;
+    ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(300, std::min(560.0f, float(scene_.height) - 12)),
+                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("sunglint view (H hides)", nullptr);
+    ImGui::PushItemWidth(150);
     ImGui::Text("%s, %d x %d, %d frames at %.0f fps", scene_.name.c_str(), scene_.width,
                 scene_.height, scene_.animation.frames, scene_.animation.fps);
     // Time.
@@ -382,7 +397,6 @@ class Viewer {
     if (ImGui::Button("<")) step(-1, dirty);
     ImGui::SameLine();
     if (ImGui::Button(">")) step(1, dirty);
-    ImGui::SameLine();
     float pos = static_cast<float>(position_);
     if (ImGui::SliderFloat("frame", &pos, 0.0f, float(frame_count()) - 0.001f, "%.2f")) {
       position_ = pos;
@@ -453,7 +467,8 @@ class Viewer {
       ImGui::SameLine();
       ImGui::Text("| %s %.2f ms", sides_[1].method.c_str(), recent_mean(sides_[1]));
     }
-    ImGui::Text("frame %.1f ms in all (%s)", wall_ms_, window_.info().gl_renderer.c_str());
+    ImGui::TextWrapped("frame %.1f ms in all (%s)", wall_ms_, window_.info().gl_renderer.c_str());
+    ImGui::PopItemWidth();
     ImGui::End();
   }
 
@@ -468,7 +483,7 @@ class Viewer {
   Picture shown_picture_;
   DisplaySettings display_;
   Side sides_[2];
-  bool split_ = false, playing_ = true, lens_ = false, dragging_ = false;
+  bool split_ = false, playing_ = true, lens_ = false, dragging_ = false, show_controls_ = true;
   int divider_ = 0, zoom_ = 4;
   double position_ = 0, wall_ms_ = 0;
   float speed_ = 1;

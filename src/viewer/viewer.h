@@ -8,8 +8,8 @@
 // queries). docs/viewer.md lists the keys.
 //
 // A scripted run (`frames` > 0) needs no input: it renders frames 0 .. frames-1 of the
-// animation in the window without the controls, then writes the last frame's displayed
-// image (`screenshot`, a PNG read back from the window) and the view's scene file
+// animation in the window (without the controls unless `show_controls`), then writes the last
+// frame's displayed image (`screenshot`, a PNG read back from the window) and the view's scene file
 // (`save_scene`), prints the mean GPU time per frame and returns.
 #pragma once
 
@@ -30,9 +30,10 @@ struct ViewerOptions {
   ViewEdits edits;    // edits_of(scene) for none
   double exposure = 0;
   bool glare = true;
-  int frames = 0;          // > 0: a scripted run of frames 0 .. frames-1
-  std::string screenshot;  // scripted: the last frame's displayed image (.png)
-  std::string save_scene;  // scripted: the view's scene (.json)
+  int frames = 0;              // > 0: a scripted run of frames 0 .. frames-1
+  std::string screenshot;      // scripted: the last frame's displayed image (.png)
+  std::string save_scene;      // scripted: the view's scene (.json)
+  bool show_controls = false;  // scripted: the controls drawn too (pictures of the viewer)
 };
 
 // The GL engine's methods, in the catalogue's order.
