@@ -52,12 +52,13 @@ void run_view(ViewArgs& a) {
   check_usage([&] {
     apply_image_size(scene, a.width, a.height);
     if (a.frames > 0) check_frame(a.frames - 1, scene, "--frames");
-    o.edits = viewer::edits_of(scene);
-    if (!std::isnan(a.sun_elevation)) o.edits.sun_elevation_deg = a.sun_elevation;
-    if (!std::isnan(a.sun_azimuth)) o.edits.sun_azimuth_deg = a.sun_azimuth;
-    if (!std::isnan(a.sun_radius)) o.edits.sun_radius_deg = a.sun_radius;
-    o.edits.amplitude_scale = a.amplitude_scale;
-    viewer::edited_scene(scene, o.edits);
+    viewer::ViewEdits e = viewer::edits_of(scene);
+    if (!std::isnan(a.sun_elevation)) e.sun_elevation_deg = a.sun_elevation;
+    if (!std::isnan(a.sun_azimuth)) e.sun_azimuth_deg = a.sun_azimuth;
+    if (!std::isnan(a.sun_radius)) e.sun_radius_deg = a.sun_radius;
+    e.amplitude_scale = a.amplitude_scale;
+    viewer::edited_scene(scene, e);
+    o.edits = e;
   });
   auto check_file = [](const std::string& p, const char* flag) {
     if (p.empty()) return;

@@ -66,7 +66,7 @@ class Viewer {
   explicit Viewer(const ViewerOptions& o)
       : o_(o),
         base_(o.scene),
-        edits_(o.edits),
+        edits_(o.edits ? *o.edits : edits_of(o.scene)),
         scene_(edited_scene(base_, edits_)),
         model_(std::make_unique<SceneModel>(scene_)),
         window_({scene_.width, scene_.height,
@@ -234,7 +234,7 @@ class Viewer {
   }
 
   void set_split(bool& dirty) {
-    if (split_ && !sides_[1].engine) rebuild(sides_[1]);
+    if (split_ && !sides_[1].engine && !rebuild(sides_[1])) split_ = false;
     dirty = true;
   }
 
@@ -497,7 +497,7 @@ void run_viewer(const ViewerOptions& o) {
   // What can be refused without a window: the methods and the edits.
   gl_engine::gl_variant(o.method, o.options);
   if (!o.split.empty()) gl_engine::gl_variant(o.split, o.options);
-  edited_scene(o.scene, o.edits);
+  if (o.edits) edited_scene(o.scene, *o.edits);
   Viewer v(o);
   if (o.frames > 0) {
     v.scripted();

@@ -13,6 +13,7 @@
 // (`save_scene`), prints the mean GPU time per frame and returns.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,8 @@ struct ViewerOptions {
   Scene scene;  // as loaded, with the command line's image size applied
   std::string method = "staa";
   MethodOptions options;
-  std::string split;  // the second method of a split view; empty: none
-  ViewEdits edits;    // edits_of(scene) for none
+  std::string split;               // the second method of a split view; empty: none
+  std::optional<ViewEdits> edits;  // none: the scene as loaded
   double exposure = 0;
   bool glare = true;
   int frames = 0;              // > 0: a scripted run of frames 0 .. frames-1
