@@ -57,7 +57,12 @@ void run_view(ViewArgs& a) {
     if (!std::isnan(a.sun_azimuth)) e.sun_azimuth_deg = a.sun_azimuth;
     if (!std::isnan(a.sun_radius)) e.sun_radius_deg = a.sun_radius;
     e.amplitude_scale = a.amplitude_scale;
-    viewer::edited_scene(scene, e);
+    try {
+      viewer::edited_scene(scene, e);
+    } catch (const Error& err) {
+      throw Error("--sun-elevation, --sun-azimuth, --sun-radius, --amplitude-scale: " +
+                  std::string(err.what()));
+    }
     o.edits = e;
   });
   auto check_file = [](const std::string& p, const char* flag) {

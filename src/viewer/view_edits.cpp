@@ -35,7 +35,7 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
       w.amplitude *= e.amplitude_scale;
   }
   // The loader's checks, on the edited values.
-  return parse_scene(scene_to_json(s), "the viewer's scene");
+  return parse_scene(scene_to_json(s), "the view's edits");
 }
 
 FrameTime view_time(const Scene& scene, double position) {

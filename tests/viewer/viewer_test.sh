@@ -106,6 +106,8 @@ expect_refused "not a GL method" "--method lean: not on the GL engine" "$shot" \
   "$bin" view "$scene" -m lean --frames 1 --screenshot "$shot"
 expect_refused "screenshot not png" "--screenshot: must be a .png" "$work/refused.exr" \
   "$bin" view "$scene" --frames 1 --screenshot "$work/refused.exr"
+expect_refused "edit out of range" "--sun-radius" "$shot" \
+  "$bin" view "$scene" --frames 1 --sun-radius 0 --screenshot "$shot"
 expect_refused "frames past the animation" "--frames" "$shot" \
   "$bin" view "$scene" --frames 61 --screenshot "$shot"
 
