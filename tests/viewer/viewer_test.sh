@@ -70,6 +70,11 @@ run render-colour "$bin" render "$src/scenes/sunset.json" -m staa-temporal --eng
 expect_close "view = render (staa-temporal, colour, frame 1)" 2 "$work/view_sunset.png" \
   "$work/render_sunset.png"
 
+run view-controls "$bin" view "$scene" -m point --frames 3 "${size[@]}" --show-controls \
+  --screenshot "$work/view_controls.png"
+expect_apart "--show-controls draws the controls" "$work/view_controls.png" "$work/view_point.png" \
+  0 100
+
 # 2. The split view: point on the left, supersample on the right, the divider at the middle.
 run view-split "$bin" view "$scene" -m point --split supersample --samples 3x3x1 --frames 3 \
   "${size[@]}" --screenshot "$work/view_split.png"
