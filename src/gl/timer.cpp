@@ -17,6 +17,9 @@ GpuTimer::~GpuTimer() {
 void GpuTimer::begin() {
   if (running_) throw GlError("GPU timer: begin while running");
   glQueryCounter(queries_[0], GL_TIMESTAMP);
+  // Sent now: with a window's framebuffer bound, llvmpipe records a timestamp only when its
+  // queued draw commands run, which would be after the compute work timed here.
+  glFlush();
   check_errors("glQueryCounter(GL_TIMESTAMP)");
   running_ = true;
 }

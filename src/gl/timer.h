@@ -3,6 +3,8 @@
 // completed on the GPU; their difference is the GPU time in between. Not a GL_TIME_ELAPSED
 // query: llvmpipe reports 0 ns for compute dispatches inside one (it times only its
 // rasteriser), while timestamps measure them on llvmpipe and NVIDIA alike, and they nest.
+// begin() flushes after its query: in a window's context llvmpipe otherwise records the
+// first timestamp when its queued draw commands run, after the compute work (0 ms measured).
 // milliseconds() waits for the result. For figures: warm up first, time many repeats,
 // take the median.
 #pragma once

@@ -117,6 +117,10 @@ bool Window::should_close() const {
   return glfwWindowShouldClose(window_);
 }
 
+void Window::request_close() {
+  glfwSetWindowShouldClose(window_, GLFW_TRUE);
+}
+
 void Window::begin_frame() {
   glfwPollEvents();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

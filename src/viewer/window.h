@@ -42,6 +42,8 @@ class Window {
   int height() const { return height_; }
 
   bool should_close() const;
+  // Asks the window to close: should_close() is then true.
+  void request_close();
   void begin_frame();
   // Draws ImGui; when `screenshot` is given, fills it with the frame (width * height * 4
   // bytes, rows top first); swaps.

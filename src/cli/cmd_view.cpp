@@ -1,0 +1,142 @@
+// `sunglint view SCENE [--method M] [--split M2]`: the interactive viewer (viewer/viewer.h)
+// on the GL engine; with `--frames N` a scripted run of frames 0 .. N-1 that writes the
+// last one's displayed image (`--screenshot OUT.png`) and exits. Everything the command
+// line asks is checked before the window opens; no file is written when it cannot open.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "base/error.h"
+#include "base/output_path.h"
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "cli/method_flags.h"
+#include "gl_engine/gl_engine.h"
+#include "image/image_io.h"
+#include "scene/scene.h"
+#include "viewer/viewer.h"
+
+namespace sg {
+namespace {
+
+struct ViewArgs {
+  std::string scene_path, method = "staa", split, screenshot, save_scene;
+  int frames = 0, width = 0, height = 0;
+  double exposure = 0;
+  bool no_glare = false, show_controls = false;
+  // Edits of the scene (NaN: as the scene has it).
+  double sun_elevation = std::nan(""), sun_azimuth = std::nan(""), sun_radius = std::nan("");
+  double amplitude_scale = 1;
+  MethodFlags flags;
+};
+
+void run_view(ViewArgs& a) {
+  check_usage([&] {
+    a.flags.finish();
+    if (a.flags.engine != Engine::gl) {
+      throw Error("--engine " + a.flags.engine_name + ": the viewer runs on the GL engine only");
+    }
+    gl_engine::gl_variant(a.method, a.flags.options);
+    if (!a.split.empty()) {
+      try {
+        gl_engine::gl_variant(a.split, a.flags.options);
+      } catch (const Error& e) {
+        throw Error("--split: " + std::string(e.what()));
+      }
+    }
+    if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls))
+      throw Error("--screenshot, --save-scene, --show-controls: need --frames N (a scripted run)");
+    if (!a.screenshot.empty() && image_format_of(a.screenshot) != ImageFormat::png)
+      throw Error("--screenshot: must be a .png file (got '" + a.screenshot + "')");
+  });
+  Scene scene = load_scene(a.scene_path);
+  viewer::ViewerOptions o;
+  check_usage([&] {
+    apply_image_size(scene, a.width, a.height);
+    if (a.frames > 0) check_frame(a.frames - 1, scene, "--frames");
+    viewer::ViewEdits e = viewer::edits_of(scene);
+    if (!std::isnan(a.sun_elevation)) e.sun_elevation_deg = a.sun_elevation;
+    if (!std::isnan(a.sun_azimuth)) e.sun_azimuth_deg = a.sun_azimuth;
+    if (!std::isnan(a.sun_radius)) e.sun_radius_deg = a.sun_radius;
+    e.amplitude_scale = a.amplitude_scale;
+    try {
+      viewer::edited_scene(scene, e);
+    } catch (const Error& err) {
+      throw Error("--sun-elevation, --sun-azimuth, --sun-radius, --amplitude-scale: " +
+                  std::string(err.what()));
+    }
+    o.edits = e;
+  });
+  auto check_file = [](const std::string& p, const char* flag) {
+    if (p.empty()) return;
+    try {
+      check_output_file(p, false);
+    } catch (const Error& e) {
+      throw Error(std::string(flag) + ": " + e.what());
+    }
+  };
+  check_file(a.screenshot, "--screenshot");
+  check_file(a.save_scene, "--save-scene");
+  o.scene = scene;
+  o.method = a.method;
+  o.options = a.flags.options;
+  o.split = a.split;
+  o.exposure = a.exposure;
+  o.glare = !a.no_glare;
+  o.frames = a.frames;
+  o.screenshot = a.screenshot;
+  o.save_scene = a.save_scene;
+  o.show_controls = a.show_controls;
+  viewer::run_viewer(o);
+}
+
+}  // namespace
+
+void add_view_command(CLI::App& app) {
+  auto a = std::make_shared<ViewArgs>();
+  CLI::App* c = app.add_subcommand(
+      "view", "Watch a scene in a window, rendered on the GPU every frame (docs/viewer.md)");
+  c->add_option("scene", a->scene_path, "Scene file (sunglint-scene/1 or /2 JSON)")->required();
+  c->add_option("--method,-m", a->method,
+                std::string("Method (the GL engine's: ") + gl_engine::gl_methods() + ")")
+      ->capture_default_str();
+  c->add_option("--split", a->split,
+                "A second method: the view split in two at a movable divider, --method on the "
+                "left");
+  c->add_option("--frames", a->frames,
+                "A scripted run: render frames 0 to N-1, write --screenshot and --save-scene, "
+                "exit")
+      ->check(integer_in(1, 2000000000));
+  c->add_option("--screenshot", a->screenshot,
+                "Scripted run: the last frame's displayed image (.png; RGB)");
+  c->add_option("--save-scene", a->save_scene, "Scripted run: the view's scene file (.json)");
+  c->add_flag("--show-controls", a->show_controls,
+              "Scripted run: draw the controls (and the split's divider) in the screenshot too");
+  c->add_option("--width", a->width,
+                "Override the image (and window) width (height follows the aspect ratio unless "
+                "given)")
+      ->check(integer_in(1, 16384));
+  c->add_option("--height", a->height, "Override the image height")->check(integer_in(1, 16384));
+  c->add_option("--exposure", a->exposure, "Exposure in stops")
+      ->capture_default_str()
+      ->check(number_in(-64, 64));
+  c->add_flag("--no-glare", a->no_glare, "The display pipeline without glare");
+  c->add_option("--sun-elevation", a->sun_elevation,
+                "The light's elevation above the horizon, degrees (default: the scene's)")
+      ->check(number_in(-90, 90));
+  c->add_option("--sun-azimuth", a->sun_azimuth,
+                "The light's azimuth from -z towards +x, degrees (default: the scene's)")
+      ->check(number_in(-360, 360));
+  c->add_option("--sun-radius", a->sun_radius,
+                "The light's angular radius, degrees (default: the scene's)")
+      ->check(number_in(0, 89));
+  c->add_option("--amplitude-scale", a->amplitude_scale, "A scale on every wave's amplitude")
+      ->capture_default_str()
+      ->check(number_in(0, 100));
+  a->flags.engine_name = "gl";  // the viewer's only engine
+  add_method_flags(*c, a->flags);
+  c->callback([a] { run_view(*a); });
+}
+
+}  // namespace sg

@@ -1,0 +1,37 @@
+// What the viewer changes in a scene while it runs: the light's elevation, azimuth and
+// angular radius, and one scale on every wave's amplitude; and the animation time of a
+// fractional frame position (slow motion and scrubbing land between frames). The edited
+// scene is an ordinary Scene, so saving the view writes it as a scene file that `render`
+// reproduces, and an unedited view is the scene itself, bit for bit.
+//
+// Angles: elevation is the light's angle above the horizontal plane (y up); azimuth is
+// measured in the horizontal plane from -z (where the default camera looks) towards +x.
+#pragma once
+
+#include "scene/model.h"
+#include "scene/scene.h"
+
+namespace sg::viewer {
+
+struct ViewEdits {
+  double sun_elevation_deg = 0;
+  double sun_azimuth_deg = 0;
+  double sun_radius_deg = 0.27;
+  double amplitude_scale = 1;
+};
+
+// The edits that leave `scene` as it is (its light's angles, radius, scale 1).
+ViewEdits edits_of(const Scene& scene);
+
+// `base` with the edits applied. The light direction is replaced only when the elevation
+// or azimuth differ from edits_of(base), so an unedited view keeps the file's direction
+// exactly. Throws sg::Error naming the key when the result leaves the scene's ranges
+// (the scene's own loader checks it).
+Scene edited_scene(const Scene& base, const ViewEdits& edits);
+
+// The shutter interval of frame position `position` (frames from t0, may be fractional):
+// frame_time(scene, f) when position is the whole number f, else the interval ending at
+// t0 + position / fps.
+FrameTime view_time(const Scene& scene, double position);
+
+}  // namespace sg::viewer

@@ -1,0 +1,83 @@
+// The viewer's scene edits: an unedited view is the scene exactly (so a saved view renders
+// as the file does), the light's angles round-trip through a direction, the amplitude
+// scale scales every wave, out-of-range edits are refused with the key's name, and
+// fractional frame positions land between the frames' shutter intervals.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "base/error.h"
+#include "scene/scene.h"
+#include "viewer/view_edits.h"
+
+namespace sg::viewer {
+namespace {
+
+Scene simple() {
+  return load_scene(std::string(SG_SOURCE_DIR) + "/scenes/simple.json");
+}
+
+TEST(ViewEdits, UneditedViewIsTheSceneExactly) {
+  const Scene s = simple();
+  EXPECT_EQ(scene_to_json(edited_scene(s, edits_of(s))), scene_to_json(s));
+}
+
+TEST(ViewEdits, LightAnglesRoundTrip) {
+  const Scene s = simple();
+  ViewEdits e = edits_of(s);
+  e.sun_elevation_deg = 12.5;
+  e.sun_azimuth_deg = -30;
+  const Scene t = edited_scene(s, e);
+  const vec3 d = glm::normalize(t.light.direction);
+  EXPECT_NEAR(std::asin(d.y) * 180 / M_PI, 12.5, 1e-12);
+  EXPECT_NEAR(std::atan2(d.x, -d.z) * 180 / M_PI, -30, 1e-12);
+  const ViewEdits back = edits_of(t);
+  EXPECT_NEAR(back.sun_elevation_deg, 12.5, 1e-12);
+  EXPECT_NEAR(back.sun_azimuth_deg, -30, 1e-12);
+  // Azimuth 0 looks along -z: the light straight ahead of the default camera.
+  e.sun_azimuth_deg = 0;
+  const vec3 ahead = glm::normalize(edited_scene(s, e).light.direction);
+  EXPECT_NEAR(ahead.x, 0, 1e-15);
+  EXPECT_LT(ahead.z, 0);
+}
+
+TEST(ViewEdits, AmplitudeScaleAndRadius) {
+  const Scene s = simple();
+  ASSERT_FALSE(s.surface.waves.empty());
+  ViewEdits e = edits_of(s);
+  e.amplitude_scale = 0.5;
+  e.sun_radius_deg = 1.5;
+  const Scene t = edited_scene(s, e);
+  ASSERT_EQ(t.surface.waves.size(), s.surface.waves.size());
+  for (size_t i = 0; i < s.surface.waves.size(); ++i)
+    EXPECT_DOUBLE_EQ(t.surface.waves[i].amplitude, 0.5 * s.surface.waves[i].amplitude);
+  EXPECT_EQ(t.light.angular_radius_deg, 1.5);
+  EXPECT_EQ(t.light.direction, s.light.direction);  // angles unedited: the file's vector
+}
+
+TEST(ViewEdits, OutOfRangeIsRefusedByName) {
+  const Scene s = simple();
+  ViewEdits e = edits_of(s);
+  e.sun_radius_deg = 120;
+  try {
+    edited_scene(s, e);
+    FAIL() << "a 120 degree light was accepted";
+  } catch (const Error& err) {
+    EXPECT_NE(std::string(err.what()).find("angular_radius_deg"), std::string::npos) << err.what();
+  }
+}
+
+TEST(ViewEdits, ViewTime) {
+  const Scene s = simple();
+  const FrameTime f3 = view_time(s, 3.0), want = frame_time(s, 3);
+  EXPECT_EQ(f3.frame, 3);
+  EXPECT_EQ(f3.start, want.start);
+  EXPECT_EQ(f3.end, want.end);
+  const FrameTime half = view_time(s, 3.5);
+  EXPECT_EQ(half.frame, 3);
+  EXPECT_NEAR(half.end, s.animation.t0 + 3.5 / s.animation.fps, 1e-15);
+  EXPECT_NEAR(half.duration(), want.duration(), 1e-15);
+}
+
+}  // namespace
+}  // namespace sg::viewer

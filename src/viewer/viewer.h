@@ -1,0 +1,48 @@
+// `sunglint view`: the interactive viewer. A GLFW window (viewer/window.h) the size of the
+// scene's image, the GL engine (gl_engine/) rendering the animation every frame, the
+// display pipeline of `render --display` (viewer/view_image.h), and Dear ImGui controls:
+// play, pause, step and scrub, playback speed, the method and a few of its options, a
+// split view of two methods with a movable divider, a zoom lens under the cursor, the
+// light's elevation, azimuth and radius, a wave-amplitude scale, the exposure and glare,
+// saving the view as a scene file, EXR or PNG, and the GPU time of each frame (timer
+// queries). docs/viewer.md lists the keys.
+//
+// A scripted run (`frames` > 0) needs no input: it renders frames 0 .. frames-1 of the
+// animation in the window (without the controls unless `show_controls`), then writes the last
+// frame's displayed image (`screenshot`, a PNG read back from the window) and the view's scene file
+// (`save_scene`), prints the mean GPU time per frame and returns.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "methods/options.h"
+#include "scene/scene.h"
+#include "viewer/view_edits.h"
+
+namespace sg::viewer {
+
+struct ViewerOptions {
+  Scene scene;  // as loaded, with the command line's image size applied
+  std::string method = "staa";
+  MethodOptions options;
+  std::string split;               // the second method of a split view; empty: none
+  std::optional<ViewEdits> edits;  // none: the scene as loaded
+  double exposure = 0;
+  bool glare = true;
+  int frames = 0;              // > 0: a scripted run of frames 0 .. frames-1
+  std::string screenshot;      // scripted: the last frame's displayed image (.png)
+  std::string save_scene;      // scripted: the view's scene (.json)
+  bool show_controls = false;  // scripted: the controls drawn too (pictures of the viewer)
+};
+
+// The GL engine's methods, in the catalogue's order.
+const std::vector<std::string>& gl_method_names();
+
+// Opens the window and runs until it is closed (or, scripted, until the last frame).
+// Throws gl::Unavailable without a display or OpenGL 4.5, sg::Error on a bad method,
+// option or edit; writes no file then.
+void run_viewer(const ViewerOptions& options);
+
+}  // namespace sg::viewer

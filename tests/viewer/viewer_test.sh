@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# `sunglint view` end to end, under an X server: the scripted run's screenshot equals
+# `render --engine gl --display` of the same frame and method (max channel difference at
+# most 2/255); a split view's halves equal each method's render; a view saved as a scene
+# file renders as the view showed it; without a display, with a display that does not
+# open, below OpenGL 4.5 and with a bad scene: a clear error, a non-zero exit, no file.
+# Usage: viewer_test.sh SUNGLINT SOURCE_DIR WORK_DIR
+# Runs itself under `xvfb-run -a` (or on $SUNGLINT_TEST_DISPLAY); exits 77 (skipped) when
+# there is no Xvfb, unless SUNGLINT_REQUIRE_GL=1.
+set -u
+bin=$1 src=$2 work=$3
+if [ -z "${SG_VIEWER_TEST_INNER:-}" ]; then
+  export SG_VIEWER_TEST_INNER=1
+  if [ -n "${SUNGLINT_TEST_DISPLAY:-}" ]; then
+    DISPLAY=$SUNGLINT_TEST_DISPLAY exec bash "$0" "$@"
+  fi
+  if ! command -v xvfb-run >/dev/null; then
+    echo "xvfb-run is not installed (Debian package xvfb)"
+    [ "${SUNGLINT_REQUIRE_GL:-}" = 1 ] && exit 1
+    exit 77
+  fi
+  exec xvfb-run -a -s "-screen 0 1280x1024x24 -nolisten tcp" bash "$0" "$@"
+fi
+rm -rf "$work" && mkdir -p "$work"
+scene=$src/scenes/simple.json
+size=(--width 320 --height 180)
+fails=0 passes=0
+pass() { passes=$((passes + 1)); }
+fail() { echo "FAIL $*"; fails=$((fails + 1)); }
+run() {  # run NAME CMD...: must succeed
+  local name=$1 out
+  shift
+  if ! out=$("$@" 2>&1); then fail "$name: $out"; return 1; fi
+  echo "$out" | tail -1
+}
+# max_diff A B [X0 X1] <= LIMIT
+expect_close() {
+  local name=$1 limit=$2 d
+  shift 2
+  d=$(python3 "$src/tests/viewer/png_diff.py" "$@") || { fail "$name: $d"; return; }
+  if [ "$d" -le "$limit" ]; then pass; else fail "$name: max difference $d/255 > $limit/255"; fi
+}
+expect_apart() {
+  local name=$1 d
+  shift
+  d=$(python3 "$src/tests/viewer/png_diff.py" "$@") || { fail "$name: $d"; return; }
+  if [ "$d" -gt 8 ]; then pass; else fail "$name: the pictures do not differ ($d/255)"; fi
+}
+# expect_refused NAME PATTERN FILE CMD...: non-zero exit, PATTERN in the output, no FILE
+expect_refused() {
+  local name=$1 pattern=$2 file=$3 out rc
+  shift 3
+  out=$("$@" 2>&1)
+  rc=$?
+  if [ $rc -eq 0 ]; then fail "$name: exit 0: $out"; return; fi
+  if ! grep -qF -- "$pattern" <<<"$out"; then fail "$name: wanted '$pattern', got: $out"; return; fi
+  if [ -e "$file" ]; then fail "$name: wrote $file"; return; fi
+  pass
+}
+
+# 1. The scripted run equals render --engine gl --display of its last frame.
+run view-point "$bin" view "$scene" -m point --frames 3 "${size[@]}" --screenshot "$work/view_point.png"
+run render-point "$bin" render "$scene" -m point --engine gl --frame 2 "${size[@]}" --display -q \
+  -o "$work/render_point.png"
+expect_close "view = render (point, frame 2)" 2 "$work/view_point.png" "$work/render_point.png"
+run view-colour "$bin" view "$src/scenes/sunset.json" -m staa-temporal --frames 2 "${size[@]}" \
+  --screenshot "$work/view_sunset.png"
+run render-colour "$bin" render "$src/scenes/sunset.json" -m staa-temporal --engine gl --frame 1 \
+  "${size[@]}" --display -q -o "$work/render_sunset.png"
+expect_close "view = render (staa-temporal, colour, frame 1)" 2 "$work/view_sunset.png" \
+  "$work/render_sunset.png"
+
+run view-controls "$bin" view "$scene" -m point --frames 3 "${size[@]}" --show-controls \
+  --screenshot "$work/view_controls.png"
+expect_apart "--show-controls draws the controls" "$work/view_controls.png" "$work/view_point.png" \
+  0 100
+
+# 2. The split view: point on the left, supersample on the right, the divider at the middle.
+run view-split "$bin" view "$scene" -m point --split supersample --samples 3x3x1 --frames 3 \
+  "${size[@]}" --screenshot "$work/view_split.png"
+run render-ss "$bin" render "$scene" -m supersample --samples 3x3x1 --engine gl --frame 2 \
+  "${size[@]}" --display -q -o "$work/render_ss.png"
+expect_close "split: left half = point" 2 "$work/view_split.png" "$work/render_point.png" 0 160
+expect_close "split: right half = supersample" 2 "$work/view_split.png" "$work/render_ss.png" 160 320
+expect_apart "split: the methods differ" "$work/render_point.png" "$work/render_ss.png"
+
+# 3. A view with edited light and waves saved as a scene renders as the view showed it.
+run view-edited "$bin" view "$scene" -m point --frames 1 "${size[@]}" --sun-elevation 6 \
+  --sun-azimuth 4 --sun-radius 0.8 --amplitude-scale 0.7 --screenshot "$work/view_edited.png" \
+  --save-scene "$work/edited.json"
+run render-edited "$bin" render "$work/edited.json" -m point --engine gl --display -q \
+  -o "$work/render_edited.png"
+expect_close "saved view = its render" 2 "$work/view_edited.png" "$work/render_edited.png"
+run render-unedited "$bin" render "$scene" -m point --engine gl "${size[@]}" --display -q \
+  -o "$work/render_point0.png"
+expect_apart "the edits change the picture" "$work/view_edited.png" "$work/render_point0.png"
+
+# 4. Refusals: a clear error, a non-zero exit, no file.
+shot=$work/refused.png
+expect_refused "no display" "no display: DISPLAY is not set" "$shot" \
+  env -u DISPLAY -u WAYLAND_DISPLAY "$bin" view "$scene" -m point --frames 1 "${size[@]}" \
+  --screenshot "$shot"
+expect_refused "display that does not open" "Failed to open display :31999" "$shot" \
+  env DISPLAY=:31999 "$bin" view "$scene" -m point --frames 1 "${size[@]}" --screenshot "$shot"
+expect_refused "OpenGL below 4.5" "no OpenGL 4.5 core window" "$shot" \
+  env MESA_GL_VERSION_OVERRIDE=4.3 "$bin" view "$scene" -m point --frames 1 "${size[@]}" \
+  --screenshot "$shot"
+expect_refused "bad scene" "amplitude" "$shot" \
+  "$bin" view "$src/tests/scenes/bad/amplitude_negative.json" --frames 1 --screenshot "$shot"
+expect_refused "not a GL method" "--method lean: not on the GL engine" "$shot" \
+  "$bin" view "$scene" -m lean --frames 1 --screenshot "$shot"
+expect_refused "screenshot not png" "--screenshot: must be a .png" "$work/refused.exr" \
+  "$bin" view "$scene" --frames 1 --screenshot "$work/refused.exr"
+expect_refused "edit out of range" "--sun-radius" "$shot" \
+  "$bin" view "$scene" --frames 1 --sun-radius 0 --screenshot "$shot"
+expect_refused "frames past the animation" "--frames" "$shot" \
+  "$bin" view "$scene" --frames 61 --screenshot "$shot"
+
+echo "viewer_test: $passes passed, $fails failed"
+[ $fails -eq 0 ]
