@@ -16,12 +16,13 @@
 #include "image/image_io.h"
 #include "image/sequence.h"
 #include "methods/method.h"
+#include "methods/reference.h"
 
 namespace sg {
 namespace {
 
 struct RenderArgs {
-  std::string scene_path, method = "", out, frames;
+  std::string scene_path, method = "", out, frames, variance_out;
   int frame = 0, width = 0, height = 0, threads = 0;
   double exposure = 0;
   bool quiet = false;
@@ -40,6 +41,10 @@ void run_render(RenderArgs& a) {
   const bool pattern = sequence || is_frame_pattern(a.out);
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
   image_format_of(out_path(range.first));  // fails early on a bad pattern or extension
+  if (!a.variance_out.empty()) {
+    image_format_of(pattern ? format_frame_path(a.variance_out, range.first, "--variance-out")
+                            : a.variance_out);
+  }
 
   a.flags.finish();
   const MethodOptions& opt = a.flags.options;
@@ -61,8 +66,20 @@ void run_render(RenderArgs& a) {
   WriteOptions wo;
   wo.exposure = a.exposure;
   auto t0 = std::chrono::steady_clock::now();
-  render_frames(model, *method, range.first, range.last, rs,
-                [&](int f, const Image& img) { write_image(out_path(f), img, wo); });
+  // A method that measures its own noise (reference): the mean variance over the frames.
+  double variance_sum = 0;
+  int variance_frames = 0;
+  render_frames(model, *method, range.first, range.last, rs, [&](int f, const Image& img) {
+    write_image(out_path(f), img, wo);
+    if (const Image* v = method->pixel_variance()) {
+      variance_sum += sqr(image_standard_error(*v));
+      ++variance_frames;
+      if (!a.variance_out.empty()) {
+        write_image(pattern ? format_frame_path(a.variance_out, f, "--variance-out") : a.variance_out,
+                    *v, WriteOptions{});
+      }
+    }
+  });
   bar.finish();
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("%s: %s, %dx%d, frames %d-%d%s, %.2f s (%.1f ms per frame) -> %s\n",
@@ -70,6 +87,11 @@ void run_render(RenderArgs& a) {
               range.last,
               warmup > 0 ? (" after " + std::to_string(warmup) + " warm-up frames").c_str() : "",
               secs, 1000 * secs / frames, a.out.c_str());
+  if (variance_frames > 0) {
+    std::printf("%s: standard error %.3g (RMSE units, RMS over %d frame%s)\n",
+                method->name().c_str(), std::sqrt(variance_sum / variance_frames), variance_frames,
+                variance_frames > 1 ? "s" : "");
+  }
 }
 
 }  // namespace
@@ -96,6 +118,9 @@ void add_render_command(CLI::App& app) {
   c->add_option("--height", a->height, "Override the image height")->check(CLI::Range(1, 16384));
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024));
+  c->add_option("--variance-out", a->variance_out,
+                "reference: also write each pixel's variance (of its estimate) to this file "
+                "(.exr or .pfm; a pattern with --frames)");
   add_method_flags(*c, a->flags);
   c->add_option("--exposure", a->exposure, "Exposure in stops for .png output")
       ->capture_default_str();

@@ -12,7 +12,7 @@ namespace sg {
 
 // Storage for the flags' values; `finish` checks them and converts the few that need it.
 struct MethodFlags {
-  std::string samples = "8x8x8";
+  std::string samples;  // empty: the method's default
   MethodOptions options;
   // `context` prefixes error messages (e.g. the method variant being parsed).
   void finish(const std::string& context = "");
