@@ -60,13 +60,43 @@ void write_file_atomic(const std::string& path, std::string_view bytes) {
   });
 }
 
-std::string read_file(const std::string& path) {
+std::uintmax_t check_readable_file(const std::string& path, std::uintmax_t max_bytes) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) {
+    throw Error(path + ": cannot read: " + (ec ? ec.message() : "no such file"));
+  }
+  if (fs::is_directory(st)) throw Error(path + ": cannot read: a folder, not a file");
+  if (!fs::is_regular_file(st)) {
+    throw Error(path + ": cannot read: not a regular file (a device, fifo or socket)");
+  }
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw Error(path + ": cannot read: " + ec.message());
+  if (size > max_bytes) {
+    throw Error(path + ": cannot read: " + std::to_string(size) + " bytes, more than the " +
+                std::to_string(max_bytes) + " allowed");
+  }
+  return size;
+}
+
+std::string read_file(const std::string& path, std::uintmax_t max_bytes) {
+  const std::uintmax_t size = check_readable_file(path, max_bytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot read: " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
+  // Read in chunks, never past max_bytes: the file may grow after the size check.
+  std::string out;
+  out.reserve(static_cast<size_t>(size));
+  char buf[1 << 16];
+  while (in) {
+    in.read(buf, sizeof buf);
+    out.append(buf, static_cast<size_t>(in.gcount()));
+    if (out.size() > max_bytes) {
+      throw Error(path + ": cannot read: more than the " + std::to_string(max_bytes) +
+                  " bytes allowed");
+    }
+  }
   if (in.bad()) throw Error(path + ": cannot read: " + std::strerror(errno));
-  return ss.str();
+  return out;
 }
 
 }  // namespace sg

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
 
 #include "base/error.h"
 
@@ -14,7 +16,57 @@ bool parse_int(const std::string& s, int& out) {
   return !s.empty() && ec == std::errc() && p == s.data() + s.size();
 }
 
+// The whole of `s` as a finite double.
+bool parse_finite(const std::string& s, double& out) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  out = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && std::isfinite(out);
+}
+
+std::string show(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
 }  // namespace
+
+CLI::Validator finite_number() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        double v;
+        return parse_finite(s, v) ? "" : "must be a finite number (got '" + s + "')";
+      },
+      "NUMBER", "finite");
+}
+
+CLI::Validator number_in(double lo, double hi) {
+  const std::string range = "[" + show(lo) + ", " + show(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, range](std::string& s) -> std::string {
+        double v;
+        if (!parse_finite(s, v) || v < lo || v > hi) {
+          return "must be a number in " + range + " (got '" + s + "')";
+        }
+        return "";
+      },
+      "NUMBER in " + range, "number_in");
+}
+
+CLI::Validator integer_in(long long lo, long long hi) {
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, range](std::string& s) -> std::string {
+        long long v = 0;
+        auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        if (s.empty() || ec != std::errc() || p != s.data() + s.size() || v < lo || v > hi) {
+          return "must be an integer in " + range + " (got '" + s + "')";
+        }
+        return "";
+      },
+      "INT in " + range, "integer_in");
+}
 
 FrameRange parse_frame_range(const std::string& text, const std::string& flag) {
   FrameRange r;

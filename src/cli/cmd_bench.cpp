@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/method_flags.h"
 #include "engine/render.h"
@@ -34,28 +35,36 @@ std::vector<std::string> split(const std::string& s) {
 }
 
 void run_bench(BenchArgs& a) {
-  if (a.scenes.empty()) throw Error("bench: give at least one scene file");
-  a.flags.finish();
-  const MethodOptions& opt = a.flags.options;
-  // Each item is a method name, run with the command's method flags, or a variant with
-  // its own flags ("staa --footprint gaussian"), parsed as `compare` parses it.
+  // The command line, then every scene, before the first frame is timed.
   std::vector<MethodVariant> variants;
-  for (const auto& item : split(a.methods)) {
-    if (item.find(' ') == std::string::npos) {
-      make_method(item, opt);  // validate the name first
-      variants.push_back(MethodVariant{item, item, opt});
-    } else {
-      variants.push_back(parse_method_variant(item, "--methods"));
+  check_usage([&] {
+    if (a.scenes.empty()) throw Error("bench: give at least one scene file");
+    a.flags.finish();
+    // Each item is a method name, run with the command's method flags, or a variant with
+    // its own flags ("staa --footprint gaussian"), parsed as `compare` parses it.
+    for (const auto& item : split(a.methods)) {
+      if (item.find(' ') == std::string::npos) {
+        make_method(item, a.flags.options);  // validate the name first
+        variants.push_back(MethodVariant{item, item, a.flags.options});
+      } else {
+        variants.push_back(parse_method_variant(item, "--methods"));
+      }
     }
+    if (variants.empty()) throw Error("--methods: give at least one method");
+  });
+  std::vector<Scene> scenes;
+  for (const auto& path : a.scenes) {
+    scenes.push_back(load_scene(path));
+    check_usage([&] {
+      set_image_size(scenes.back(), a.width, a.height);
+      check_frame(a.frame, scenes.back(), "--frame");
+    });
   }
-  if (variants.empty()) throw Error("--methods: give at least one method");
   RenderSettings rs;
   rs.threads = a.threads;
   std::printf("| scene | method | ms/frame | x point | samples/s | wave evals/s |\n");
   std::printf("|---|---|---:|---:|---:|---:|\n");
-  for (const auto& path : a.scenes) {
-    Scene s = load_scene(path);
-    set_image_size(s, a.width, a.height);
+  for (const Scene& s : scenes) {
     SceneModel model(s);
     double point_ms = 0;
     for (const MethodVariant& v : variants) {
@@ -115,14 +124,19 @@ void add_bench_command(CLI::App& app) {
       ->capture_default_str();
   c->add_option("--width", a->width, "Image width")
       ->capture_default_str()
-      ->check(CLI::Range(1, 16384));
+      ->check(integer_in(1, 16384));
   c->add_option("--height", a->height, "Image height")
       ->capture_default_str()
-      ->check(CLI::Range(1, 16384));
-  c->add_option("--frame", a->frame, "Frame")->capture_default_str();
-  c->add_option("--threads,-j", a->threads, "Threads (0: all)")->capture_default_str();
+      ->check(integer_in(1, 16384));
+  c->add_option("--frame", a->frame, "Frame")
+      ->capture_default_str()
+      ->check(integer_in(0, 2000000000));
+  c->add_option("--threads,-j", a->threads, "Threads (0: all)")
+      ->capture_default_str()
+      ->check(integer_in(0, 1024));
   c->add_option("--repeat", a->repeat, "Runs per method; the fastest counts")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(1, 1000));
   add_method_flags(*c, a->flags);
   c->callback([a] { run_bench(*a); });
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/output_path.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/method_flags.h"
@@ -83,42 +84,56 @@ void run_compare(const CompareArgs& a) {
       std::printf("%s\n", m.name.c_str());
     return;
   }
-  if (a.scenes.empty()) throw Error("compare: give at least one scene file");
-  if (a.methods.empty()) throw Error("--method: give at least one method variant");
-  if (a.out.empty()) throw Error("--out: give the study's folder");
+  // The command line (exit code 2 on a mistake), then the scenes, then the folders the
+  // study writes, before its first pixel.
   StudyConfig c;
-  const FrameRange range = parse_frame_range(a.frames, "--frames");
-  c.first_frame = range.first;
-  c.last_frame = range.last;
+  FrameRange range;
+  check_usage([&] {
+    if (a.scenes.empty()) throw Error("compare: give at least one scene file");
+    if (a.methods.empty()) throw Error("--method: give at least one method variant");
+    if (a.out.empty()) throw Error("--out: give the study's folder");
+    range = parse_frame_range(a.frames, "--frames");
+    c.first_frame = range.first;
+    c.last_frame = range.last;
+    for (const auto& m : a.methods)
+      c.methods.push_back(to_study(parse_method_variant(m, "--method")));
+    parse_sample_counts(a.reference, "--reference");
+    c.reference =
+        to_study(parse_method_variant("reference --samples " + a.reference, "--reference"));
+    if (a.budgets != "none") {
+      for (const auto& b : split(a.budgets, ',')) {
+        parse_sample_counts(b, "--budgets");
+        c.budgets.push_back(
+            to_study(parse_method_variant("supersample --samples " + b, "--budgets")));
+      }
+    }
+    if (a.target == "auto") {
+      c.equal_cost_target = c.budgets.empty() ? "" : default_equal_cost_target(c.methods);
+    } else if (a.target != "none") {
+      if (c.budgets.empty()) throw Error("--equal-cost-target: needs --budgets");
+      c.equal_cost_target = canonical_label(a.target);
+    }
+    for (const auto& p : a.paper_rows) {
+      const size_t eq = p.find('=');
+      if (eq == std::string::npos) {
+        throw Error("--paper-row: expected ROW=VARIANT (got '" + p + "')");
+      }
+      c.paper_rows.emplace_back(canonical_label(p.substr(0, eq)),
+                                canonical_label(p.substr(eq + 1)));
+    }
+  });
   for (const auto& path : a.scenes) {
     Scene s = load_scene(path);
-    apply_image_size(s, a.width, a.height);
-    check_frame(range.first, s, "--frames");
-    check_frame(range.last, s, "--frames");
+    check_usage([&] {
+      apply_image_size(s, a.width, a.height);
+      check_frame(range.first, s, "--frames");
+      check_frame(range.last, s, "--frames");
+    });
     c.scenes.push_back({path, s});
   }
-  for (const auto& m : a.methods)
-    c.methods.push_back(to_study(parse_method_variant(m, "--method")));
-  parse_sample_counts(a.reference, "--reference");
-  c.reference = to_study(parse_method_variant("reference --samples " + a.reference, "--reference"));
-  if (a.budgets != "none") {
-    for (const auto& b : split(a.budgets, ',')) {
-      parse_sample_counts(b, "--budgets");
-      c.budgets.push_back(
-          to_study(parse_method_variant("supersample --samples " + b, "--budgets")));
-    }
-  }
-  if (a.target == "auto") {
-    c.equal_cost_target = c.budgets.empty() ? "" : default_equal_cost_target(c.methods);
-  } else if (a.target != "none") {
-    if (c.budgets.empty()) throw Error("--equal-cost-target: needs --budgets");
-    c.equal_cost_target = canonical_label(a.target);
-  }
-  for (const auto& p : a.paper_rows) {
-    const size_t eq = p.find('=');
-    if (eq == std::string::npos) throw Error("--paper-row: expected ROW=VARIANT (got '" + p + "')");
-    c.paper_rows.emplace_back(canonical_label(p.substr(0, eq)), canonical_label(p.substr(eq + 1)));
-  }
+  // The study creates them once it has checked its configuration.
+  check_output_folder(a.out, "--out");
+  if (!a.cache.empty()) check_output_folder(a.cache, "--cache");
   c.out_dir = a.out;
   c.cache_dir = a.cache;
   c.threads = a.threads;
@@ -128,12 +143,18 @@ void run_compare(const CompareArgs& a) {
   c.command = command_line(a);
 
   ProgressBar bar("compare", !a.quiet);
-  std::string last_label;
+  std::string last;
   const StudyResults r = run_study(c, [&](double f, const std::string& what) {
     std::string label = what.size() > 36 ? what.substr(0, 35) + "~" : what;
     label.resize(36, ' ');
-    bar.set_label(label);
-    bar.update(static_cast<long>(f * 100000), 100000);
+    bar.set_label("compare " + label);
+    // In a log, one line as each piece of work starts (a method on a scene, the pictures).
+    if (what != last) {
+      bar.step("", static_cast<long>(f * 100000), 100000);
+      last = what;
+    } else {
+      bar.update(static_cast<long>(f * 100000), 100000);
+    }
   });
   bar.finish();
 
@@ -144,6 +165,12 @@ void run_compare(const CompareArgs& a) {
       std::printf("%-10s %-32s %9.5f %9.5f %9.5f %9.5f %10.3g\n", s.name.c_str(), v.label.c_str(),
                   v.at(Region::image).rmse, v.at(Region::image).temporal_error,
                   v.at(Region::near).rmse, v.at(Region::far).rmse, v.ms_per_frame);
+      const auto& ch = v.at(Region::image).channels;
+      if (ch.size() == 3) {  // colour: each channel's RMSE and temporal error
+        std::printf("%-10s %-32s %9s R %.5f G %.5f B %.5f, temporal R %.5f G %.5f B %.5f\n", "", "",
+                    "", ch[0].rmse, ch[1].rmse, ch[2].rmse, ch[0].temporal_error,
+                    ch[1].temporal_error, ch[2].temporal_error);
+      }
     }
   }
   std::printf("report: %s/index.html (results.json, results.csv, results.md beside it)\n",
@@ -158,7 +185,7 @@ void add_compare_command(CLI::App& app) {
       "compare",
       "Render methods on scenes against a cached reference and write a report (metrics, "
       "near/far water halves, equal-cost curve, pictures, videos, index.html)");
-  c->add_option("scenes", a->scenes, "Scene files (sunglint-scene/1 JSON)");
+  c->add_option("scenes", a->scenes, "Scene files (sunglint-scene/1 or /2 JSON)");
   c->add_option("--method,-m", a->methods,
                 "A method variant 'NAME [FLAGS]' with the flags of render, e.g. -m point -m "
                 "'supersample --samples 6x6x1'; repeat for each variant")
@@ -167,8 +194,8 @@ void add_compare_command(CLI::App& app) {
   c->add_option("--frames", a->frames, "Frame range A-B")->capture_default_str();
   c->add_option("--reference", a->reference, "Reference samples SxSxT")->capture_default_str();
   c->add_option("--width", a->width, "Override the image width (height follows the aspect ratio)")
-      ->check(CLI::Range(1, 16384));
-  c->add_option("--height", a->height, "Override the image height")->check(CLI::Range(1, 16384));
+      ->check(integer_in(1, 16384));
+  c->add_option("--height", a->height, "Override the image height")->check(integer_in(1, 16384));
   c->add_option("--cache", a->cache,
                 "Frame cache folder (default: OUT/cache); share it between "
                 "studies to reuse references");
@@ -185,11 +212,12 @@ void add_compare_command(CLI::App& app) {
                 "Match a row of the paper's Table 1 to a variant, e.g. 'LEAN=lean --foo 2' "
                 "(repeatable; default: point, supersample --samples 6x6x1, lean, staa ...)");
   c->add_option("--exposure", a->exposure, "Exposure of pictures and videos, in stops")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(-64, 64));
   c->add_flag("--no-glare", a->no_glare, "Pictures and videos without glare");
   c->add_flag("--no-video", a->no_video, "No MP4 videos (they need ffmpeg)");
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")
-      ->check(CLI::Range(0, 1024));
+      ->check(integer_in(0, 1024));
   c->add_flag("--quiet,-q", a->quiet, "No progress bar");
   c->add_flag("--list-methods", a->list_methods, "Print the catalogue's method names and exit");
   c->callback([a] { run_compare(*a); });

@@ -1,56 +1,149 @@
-// `sunglint render SCENE --method M --out FILE [--frame F | --frames A-B] ...`
+// `sunglint render SCENE --method M --out FILE [--frame F | --frames A-B] ...`, and
+// `--frames A-B --video out.mp4` (with or without --out): the range rendered and encoded
+// in one command. `--display` writes PNG pictures through the display pipeline of
+// `compare` (exposure, glare, filmic curve; image/tonemap.h), as videos always are.
+// `--engine gl` renders the kernel methods on the GPU (gl_engine/gl_engine.h).
+// Everything the command line asks is checked before the first pixel.
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "base/error.h"
+#include "base/output_path.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/method_flags.h"
 #include "cli/progress.h"
 #include "engine/render.h"
+#include "gl_engine/engines.h"
 #include "image/image_io.h"
 #include "image/sequence.h"
+#include "image/tonemap.h"
+#include "methods/fallback.h"
 #include "methods/method.h"
 #include "methods/reference.h"
+#include "report/video.h"
 
 namespace sg {
 namespace {
 
 struct RenderArgs {
-  std::string scene_path, method = "", out, frames, variance_out;
+  std::string scene_path, method = "", out, frames, video, engine = "cpu", variance_out;
   int frame = 0, width = 0, height = 0, threads = 0;
   double exposure = 0;
-  bool quiet = false;
+  bool quiet = false, mkdir = false, display = false, no_glare = false;
   MethodFlags flags;
 };
 
+std::string lower_extension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// The combinations of outputs and display flags (usage errors).
+void check_outputs(const RenderArgs& a, bool sequence, const std::string& first_out) {
+  if (a.out.empty() && a.video.empty()) {
+    throw Error("--out: required (or --video FILE.mp4 with --frames A-B)");
+  }
+  if (!a.video.empty()) {
+    if (!sequence) throw Error("--video: needs --frames A-B (the frames of the video)");
+    if (lower_extension(a.video) != ".mp4") {
+      throw Error("--video: must be an .mp4 file (got '" + a.video + "')");
+    }
+  }
+  if (!a.out.empty()) {
+    const ImageFormat f = image_format_of(first_out);  // a bad pattern or extension
+    if (a.display && f != ImageFormat::png) {
+      throw Error("--display: applies to .png output (got '" + a.out +
+                  "'; .exr and .pfm keep the linear values)");
+    }
+  }
+  if (!a.variance_out.empty()) {
+    const std::string first = is_frame_pattern(a.variance_out) || sequence
+                                  ? format_frame_path(a.variance_out, 0, "--variance-out")
+                                  : a.variance_out;
+    if (image_format_of(first) == ImageFormat::png) {
+      throw Error("--variance-out: must be .exr or .pfm (got '" + a.variance_out + "')");
+    }
+  }
+  if (a.no_glare && !a.display && a.video.empty()) {
+    throw Error("--no-glare: needs --display or --video");
+  }
+}
+
 void run_render(RenderArgs& a) {
-  Scene scene = load_scene(a.scene_path);
-  apply_image_size(scene, a.width, a.height);
+  // 1. The command line: every flag and value (exit code 2 on a mistake).
+  std::unique_ptr<Method> method;
   FrameRange range{a.frame, a.frame};
   const bool sequence = !a.frames.empty();
-  if (sequence) range = parse_frame_range(a.frames, "--frames");
-  check_frame(range.first, scene, sequence ? "--frames" : "--frame");
-  check_frame(range.last, scene, sequence ? "--frames" : "--frame");
   // A pattern names each frame; a single frame may use one too.
   const bool pattern = sequence || is_frame_pattern(a.out);
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
-  image_format_of(out_path(range.first));  // fails early on a bad pattern or extension
+  auto variance_path = [&](int f) {
+    return pattern ? format_frame_path(a.variance_out, f, "--variance-out") : a.variance_out;
+  };
+  Engine engine = Engine::cpu;
+  check_usage([&] {
+    if (sequence) range = parse_frame_range(a.frames, "--frames");
+    check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
+    engine = parse_engine(a.engine);
+    a.flags.finish();
+    make_method(a.method, a.flags.options);  // the name and options, before any GL
+  });
+  if (!a.video.empty()) {
+    try {
+      check_ffmpeg();
+    } catch (const Error& e) {
+      throw Error("--video: " + std::string(e.what()));
+    }
+  }
+  // 2. The scene (exit code 1 when it cannot be read or is invalid), then what the command
+  // line asks of it.
+  Scene scene = load_scene(a.scene_path);
+  check_usage([&] {
+    apply_image_size(scene, a.width, a.height);
+    check_frame(range.first, scene, sequence ? "--frames" : "--frame");
+    check_frame(range.last, scene, sequence ? "--frames" : "--frame");
+  });
+  // 3. Every output file can be written, before the first pixel.
+  std::set<std::string> folders;
+  auto check_file = [&](const std::string& p, const char* flag) {
+    const std::string dir = std::filesystem::path(p).parent_path().string();
+    if (!folders.insert(dir).second) return;
+    try {
+      if (check_output_file(p, a.mkdir, " (--mkdir creates it)")) {
+        std::fprintf(stderr, "sunglint: created folder '%s' (--mkdir)\n", dir.c_str());
+      }
+    } catch (const Error& e) {
+      throw Error(std::string(flag) + ": " + e.what());
+    }
+  };
+  if (!a.out.empty()) {
+    for (int f = range.first; f <= range.last; ++f) check_file(out_path(f), "--out");
+  }
+  if (!a.video.empty()) check_file(a.video, "--video");
   if (!a.variance_out.empty()) {
-    image_format_of(pattern ? format_frame_path(a.variance_out, range.first, "--variance-out")
-                            : a.variance_out);
+    for (int f = range.first; f <= range.last; ++f) check_file(variance_path(f), "--variance-out");
+  }
+  // 4. The method on its engine (the GL engine refuses what it lacks, or says why no
+  // OpenGL 4.5 context can be made).
+  check_usage([&] { method = make_method_on(engine, a.method, a.flags.options); });
+  if (!a.variance_out.empty() && method->pixel_variance() == nullptr) {
+    throw UsageError("--variance-out: method " + a.method + " on the " + engine_name(engine) +
+                     " engine does not measure its noise (the CPU reference does)");
   }
 
-  a.flags.finish();
   const MethodOptions& opt = a.flags.options;
-  std::unique_ptr<Method> method = make_method(a.method, opt);
   SceneModel model(scene);
-
   ProgressBar bar(a.method, !a.quiet);
   RenderSettings rs;
   rs.threads = a.threads;
@@ -58,35 +151,63 @@ void run_render(RenderArgs& a) {
   // Frames rendered: the requested ones and a stateful method's warm-up frames before them.
   const int warmup = warmup_frame_count(*method);
   const long frames = range.count() + warmup;
-  long frames_done = 0;
+  long frames_done = 0, tiles = 1;
   rs.progress = [&](long done, long total) {
+    tiles = total;
     bar.update(frames_done * total + done, frames * total);
     if (done == total) ++frames_done;  // calls are serialised; each frame ends once
   };
+  DisplaySettings display;
+  display.exposure = a.exposure;
+  display.glare = !a.no_glare;
   WriteOptions wo;
   wo.exposure = a.exposure;
-  auto t0 = std::chrono::steady_clock::now();
+  if (a.display) wo.display = display;
+  std::vector<std::vector<uint8_t>> video_frames;
+  long fallbacks = 0;
+  bool counted = false;
   // A method that measures its own noise (reference): the mean variance over the frames.
   double variance_sum = 0;
   int variance_frames = 0;
+  auto t0 = std::chrono::steady_clock::now();
   render_frames(model, *method, range.first, range.last, rs, [&](int f, const Image& img) {
-    write_image(out_path(f), img, wo);
-    if (const Image* v = method->pixel_variance()) {
-      variance_sum += sqr(image_standard_error(*v));
-      ++variance_frames;
-      if (!a.variance_out.empty()) {
-        write_image(pattern ? format_frame_path(a.variance_out, f, "--variance-out") : a.variance_out,
-                    *v, WriteOptions{});
-      }
+    if (!a.out.empty()) write_image(out_path(f), img, wo);
+    if (!a.video.empty()) video_frames.push_back(display_srgb8(img, display));
+    std::string what = "frame " + std::to_string(f);
+    if (const long n = fallback_pixels(*method); n >= 0) {
+      counted = true;
+      fallbacks += n;
+      what += ", " + std::to_string(n) + " fallback pixels";
     }
+    if (const Image* v = method->pixel_variance()) {
+      const double se = image_standard_error(*v);
+      variance_sum += sqr(se);
+      ++variance_frames;
+      char buf[64];
+      std::snprintf(buf, sizeof buf, ", standard error %.3g", se);
+      what += buf;
+      if (!a.variance_out.empty()) write_image(variance_path(f), *v, WriteOptions{});
+    }
+    bar.step(what, frames_done * tiles, frames * tiles);
   });
   bar.finish();
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%s: %s, %dx%d, frames %d-%d%s, %.2f s (%.1f ms per frame) -> %s\n",
-              scene.name.c_str(), method->name().c_str(), scene.width, scene.height, range.first,
-              range.last,
+  if (!a.video.empty()) {
+    if (scene.grey()) {
+      encode_h264(a.video, scene.width, scene.height, scene.animation.fps, video_frames);
+    } else {
+      encode_h264_rgb(a.video, scene.width, scene.height, scene.animation.fps, video_frames);
+    }
+  }
+  const std::string written = a.out.empty()     ? a.video
+                              : a.video.empty() ? a.out
+                                                : a.out + " and " + a.video;
+  const std::string fb = counted ? ", " + std::to_string(fallbacks) + " fallback pixels" : "";
+  std::printf("%s: %s (%s engine), %dx%d, frames %d-%d%s, %.2f s (%.1f ms per frame)%s -> %s\n",
+              scene.name.c_str(), method->name().c_str(), engine_name(engine), scene.width,
+              scene.height, range.first, range.last,
               warmup > 0 ? (" after " + std::to_string(warmup) + " warm-up frames").c_str() : "",
-              secs, 1000 * secs / frames, a.out.c_str());
+              secs, 1000 * secs / frames, fb.c_str(), written.c_str());
   if (variance_frames > 0) {
     std::printf("%s: standard error %.3g (RMSE units, RMS over %d frame%s)\n",
                 method->name().c_str(), std::sqrt(variance_sum / variance_frames), variance_frames,
@@ -102,29 +223,44 @@ void add_render_command(CLI::App& app) {
   for (const auto& m : method_catalog())
     methods += "\n  " + m.name + ": " + m.summary;
   CLI::App* c = app.add_subcommand("render", "Render a scene with one method");
-  c->add_option("scene", a->scene_path, "Scene file (sunglint-scene/1 JSON)")->required();
+  c->add_option("scene", a->scene_path, "Scene file (sunglint-scene/1 or /2 JSON)")->required();
   c->add_option("--method,-m", a->method, "Rendering method:" + methods)->required();
   c->add_option("--out,-o", a->out,
                 "Output file; the format follows the extension (.exr, .pfm, .png). With "
-                "--frames, a pattern such as out/frame_%04d.exr")
-      ->required();
-  auto* frame = c->add_option("--frame,-f", a->frame, "Frame to render (default 0)");
+                "--frames, a pattern such as out/frame_%04d.exr. Its folder must exist, or "
+                "give --mkdir. Required unless --video is given");
+  c->add_flag("--mkdir", a->mkdir, "Create the output's (and the video's) folder when missing");
+  auto* frame = c->add_option("--frame,-f", a->frame, "Frame to render (default 0)")
+                    ->check(integer_in(0, 2000000000));
   c->add_option("--frames", a->frames, "Render a range of frames A-B (use a pattern in --out)")
       ->excludes(frame);
   c->add_option("--width", a->width,
                 "Override the image width (height follows the aspect "
                 "ratio unless given)")
-      ->check(CLI::Range(1, 16384));
-  c->add_option("--height", a->height, "Override the image height")->check(CLI::Range(1, 16384));
+      ->check(integer_in(1, 16384));
+  c->add_option("--height", a->height, "Override the image height")->check(integer_in(1, 16384));
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")
-      ->check(CLI::Range(0, 1024));
+      ->check(integer_in(0, 1024));
   c->add_option("--variance-out", a->variance_out,
                 "reference: also write each pixel's variance (of its estimate) to this file "
                 "(.exr or .pfm; a pattern with --frames)");
-  add_method_flags(*c, a->flags);
-  c->add_option("--exposure", a->exposure, "Exposure in stops for .png output")
+  c->add_option("--engine", a->engine,
+                "cpu (every method) or gl (OpenGL 4.5 compute: point, supersample, reference, "
+                "staa-temporal, staa)")
       ->capture_default_str();
-  c->add_flag("--quiet,-q", a->quiet, "No progress bar");
+  add_method_flags(*c, a->flags);
+  c->add_option("--exposure", a->exposure, "Exposure in stops for .png output and --video")
+      ->capture_default_str()
+      ->check(number_in(-64, 64));
+  c->add_flag("--display", a->display,
+              ".png output through the display pipeline of compare: exposure, glare, filmic "
+              "tone curve (default: exposure and a clamp)");
+  c->add_flag("--no-glare", a->no_glare, "--display and --video without glare");
+  c->add_option("--video", a->video,
+                "Also (or only) encode the --frames range as an H.264 .mp4 video through the "
+                "display pipeline (needs ffmpeg)");
+  c->add_flag("--quiet,-q", a->quiet,
+              "No progress (default: a bar on a terminal, else a line per frame)");
   c->callback([a] { run_render(*a); });
 }
 

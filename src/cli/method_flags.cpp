@@ -1,10 +1,12 @@
 #include "cli/method_flags.h"
 
+#include <limits>
 #include <map>
 #include <sstream>
 #include <vector>
 
 #include "base/error.h"
+#include "cli/args.h"
 #include "methods/method.h"
 
 namespace sg {
@@ -51,15 +53,17 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
   app.add_option("--batches", o.batches,
                  "reference: independent batches per pixel, whose spread measures its noise")
       ->capture_default_str()
-      ->check(CLI::Range(2, 8));
+      ->check(integer_in(2, 8));
   choice(app, "--adaptive", o.adaptive, {{"on", true}, {"off", false}},
          "reference: a pilot at each pixel's centre and corners gives pixels far from the "
          "light and the horizon --quiet-samples instead of --samples (on), or not (off)");
   app.add_option("--quiet-samples", o.quiet_samples,
                  "reference: N x N strata per batch in the pixels the pilot finds quiet")
       ->capture_default_str()
-      ->check(CLI::Range(1, 64));
-  app.add_option("--seed", o.seed, "Seed of the sampling streams")->capture_default_str();
+      ->check(integer_in(1, 64));
+  app.add_option("--seed", o.seed, "Seed of the sampling streams")
+      ->capture_default_str()
+      ->check(integer_in(0, std::numeric_limits<long long>::max()));
   choice(app, "--precision", o.precision,
          {{"double", Precision::float64}, {"float", Precision::float32}},
          "point, supersample, reference, staa-temporal, staa: the shading kernel's precision on "
@@ -70,7 +74,7 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
   app.add_option("--segments", s.segments,
                  "staa, staa-temporal: sub-arcs of the shutter interval (Sec. 3.5)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 32));
+      ->check(integer_in(1, 32));
   choice(app, "--ndf", s.ndf, {{"uniform", NdfMode::uniform}, {"per-pixel", NdfMode::per_pixel}},
          "staa: NDF of the aliasing waves: uniform (Eq. 3) or per-pixel (Eqs. 4-7)");
   choice(app, "--ndf-mean", s.ndf_mean_shift, {{"shift", true}, {"none", false}},
@@ -85,7 +89,7 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
                  "staa: RDF axis ratio past which the fallback renders (0: the kernel count, "
                  "as the paper; none for --kernels 1)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(number_in(0, 1e6));
   choice(app, "--fallback", s.fallback,
          {{"quadrature", FallbackMode::quadrature}, {"riemann", FallbackMode::riemann}},
          "staa: the fallback's RDF-disk convolution: quadrature (accurate) or riemann (the "
@@ -95,15 +99,15 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
          "only (current, the paper)");
   app.add_option("--riemann-cells", s.riemann_cells, "staa: cells across the disk for riemann")
       ->capture_default_str()
-      ->check(CLI::Range(2, 1024));
+      ->check(integer_in(2, 1024));
   app.add_option("--alias-start", s.alias_start,
                  "staa: projected frequency (cycles/pixel) where aliasing begins (Eq. 20); "
                  "default 0.2 with --footprint none (the paper), else 0.3")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(number_in(0, 100));
   app.add_option("--alias-end", s.alias_end,
                  "staa: projected frequency (cycles/pixel) where a wave fully aliases (Eq. 20); "
                  "default 0.5 with --footprint none (the paper), else 0.8")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(number_in(0, 100));
   choice(app, "--nyquist", s.nyquist_max_axis, {{"max", true}, {"norm", false}},
          "staa: projected frequency as the larger axis frequency (max) or the norm");
   choice(app, "--footprint", s.footprint,
@@ -117,31 +121,37 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
                  "slope's departure from linear across the pixel exceeds this many disk radii "
                  "of reflection (0: never)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(number_in(0, 1e6));
 
   // lean (methods/lean.h)
   app.add_option("--lean-size", o.lean.size,
                  "lean: texels per side of the slope-moment map (a power of two)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(1, 1 << 30));
   app.add_option("--lean-far", o.lean.far,
                  "lean: distance (m) the map covers; beyond it the uniform NDF (Eq. 3). 0: "
                  "automatic (texel = the smallest pixel footprint)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   choice(app, "--lean-filter", o.lean.filter,
          {{"trilinear", LeanFilter::trilinear}, {"aniso", LeanFilter::aniso}}, "lean: map filter");
   app.add_option("--lean-max-aniso", o.lean.max_aniso,
                  "lean: most trilinear probes per pixel with --lean-filter aniso")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(-1000000, 1000000));
 
   // taa (methods/taa.h)
   app.add_option("--taa-jitter-count", o.taa.jitter_count,
                  "taa: length of the Halton (2,3) jitter cycle")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(-1000000, 1000000));
   app.add_option("--taa-alpha", o.taa.alpha, "taa: weight of the current frame in the blend")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   app.add_option("--taa-gamma", o.taa.gamma,
                  "taa: width of the variance box, in standard deviations")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   choice(app, "--taa-clamp", o.taa.clamp,
          {{"none", TaaClamp::none}, {"minmax", TaaClamp::minmax}, {"variance", TaaClamp::variance}},
          "taa: history rectification");
@@ -150,7 +160,8 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
          "taa: history resampling");
   app.add_option("--taa-warmup", o.taa.warmup,
                  "taa: frames rendered (not written) before the first frame, to fill the history")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(-1000000, 1000000));
   add_baseline_flags(app, o);
 }
 
@@ -163,10 +174,12 @@ static void add_baseline_flags(CLI::App& app, MethodOptions& o) {
   // specaa (methods/specaa.h)
   app.add_option("--specaa-sigma2", o.specaa.sigma2,
                  "specaa: variance of the pixel filter kernel, pixels^2 (Tokuyoshi-Kaplanyan)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   app.add_option("--specaa-kappa", o.specaa.kappa,
                  "specaa: clamp of the kernel roughness alpha^2 (Tokuyoshi-Kaplanyan)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   choice(app, "--specaa-derivatives", o.specaa.derivatives,
          {{"quad", SpecaaDerivatives::quad}, {"analytic", SpecaaDerivatives::analytic}},
          "specaa: half-vector derivatives, quad (2x2 finite differences, as a GPU) or analytic "
@@ -177,13 +190,16 @@ static void add_baseline_flags(CLI::App& app, MethodOptions& o) {
   // bruneton (methods/bruneton.h)
   app.add_option("--bruneton-nmin", o.bruneton.n_min,
                  "bruneton: wavelengths below N_min pixel sizes go fully into the BRDF")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   app.add_option("--bruneton-nmax", o.bruneton.n_max,
                  "bruneton: wavelengths above N_max pixel sizes stay fully in the geometry")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   app.add_option("--bruneton-min-variance", o.bruneton.min_variance,
                  "bruneton: minimum slope variance of the sun's lobe (Sec. 5.1 clamp)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   choice(app, "--bruneton-fresnel", o.bruneton.fresnel,
          {{"fit", BrunetonFresnel::fit}, {"integral", BrunetonFresnel::integral}},
          "bruneton: effective Fresnel with fresnel schlick, fit (Eq. 26) or integral (Eq. 24)");

@@ -2,25 +2,62 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace sg {
+namespace {
+
+// In a log, a line within a step at most this often.
+constexpr double kLogInterval = 30;  // seconds
+
+}  // namespace
+
+std::string format_duration(double s) {
+  char buf[64];
+  if (!(s >= 0) || !std::isfinite(s)) return "?";
+  if (s < 60) {
+    std::snprintf(buf, sizeof buf, "%.1f s", s);
+  } else if (s < 3600) {
+    const long t = std::lround(s);
+    std::snprintf(buf, sizeof buf, "%ld min %02ld s", t / 60, t % 60);
+  } else {
+    const long t = std::lround(s / 60);
+    std::snprintf(buf, sizeof buf, "%ld h %02ld min", t / 60, t % 60);
+  }
+  return buf;
+}
 
 ProgressBar::ProgressBar(std::string label, bool enabled)
+    : ProgressBar(std::move(label), enabled, ::isatty(2) != 0) {}
+
+ProgressBar::ProgressBar(std::string label, bool enabled, bool tty)
     : label_(std::move(label)),
       enabled_(enabled),
-      tty_(::isatty(2) != 0),
+      tty_(tty),
       start_(std::chrono::steady_clock::now()) {}
 
 ProgressBar::~ProgressBar() {
   finish();
 }
 
+double ProgressBar::seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void ProgressBar::log_line(const std::string& what, double f) {
+  const double secs = seconds();
+  last_line_ = secs;
+  std::string eta =
+      f > 0 && f < 1 ? ", about " + format_duration(secs * (1 - f) / f) + " left" : "";
+  std::fprintf(stderr, "%s%s%s %5.1f%%  %s%s\n", label_.c_str(), what.empty() ? "" : " ",
+               what.c_str(), 100 * f, format_duration(secs).c_str(), eta.c_str());
+  std::fflush(stderr);
+}
+
 void ProgressBar::update(long done, long total) {
   if (!enabled_ || total <= 0) return;
   const double f = static_cast<double>(done) / total;
-  const double secs =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   if (tty_) {
     int permille = static_cast<int>(f * 1000);
     if (permille == last_permille_) return;
@@ -28,15 +65,22 @@ void ProgressBar::update(long done, long total) {
     const int width = 30, filled = static_cast<int>(f * width);
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    double eta = f > 0 ? secs * (1 - f) / f : 0;
-    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %6.1fs  eta %6.1fs ", label_.c_str(), bar.c_str(),
-                 100 * f, secs, eta);
+    const double secs = seconds();
+    const double eta = f > 0 ? secs * (1 - f) / f : 0;
+    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %s  eta %s   ", label_.c_str(), bar.c_str(), 100 * f,
+                 format_duration(secs).c_str(), format_duration(eta).c_str());
     std::fflush(stderr);
+  } else if (seconds() - last_line_ >= kLogInterval && done < total) {
+    log_line("", f);
+  }
+}
+
+void ProgressBar::step(const std::string& what, long done, long total) {
+  if (!enabled_ || total <= 0) return;
+  if (tty_) {
+    update(done, total);
   } else {
-    int decile = static_cast<int>(f * 10);
-    if (decile == last_decile_) return;
-    last_decile_ = decile;
-    std::fprintf(stderr, "%s %3d%%  %.1fs\n", label_.c_str(), decile * 10, secs);
+    log_line(what, static_cast<double>(done) / total);
   }
 }
 

@@ -1,5 +1,8 @@
-// A progress bar on stderr for long work. On a terminal it redraws one line; in a log
-// (stderr not a terminal) it prints a line at every 10% so logs stay short.
+// Progress of long work on stderr, with the time spent and an estimate of the time left.
+// On a terminal, one line redrawn in place (a bar). In a log (stderr not a terminal), one
+// line per step of the work (a frame of `render`, a method of `compare`), and within a step
+// a line only every 30 s, so that short runs log one line per frame and long ones still
+// show that they progress and when they will end. Disabled (-q): nothing.
 #pragma once
 
 #include <chrono>
@@ -9,18 +12,29 @@ namespace sg {
 
 class ProgressBar {
  public:
+  // `tty`: draw the bar (default: when stderr is a terminal).
   ProgressBar(std::string label, bool enabled);
+  ProgressBar(std::string label, bool enabled, bool tty);
   ~ProgressBar();
+  // `done` of `total` units of the whole work.
   void update(long done, long total);
+  // A step of the work ended (`what`, e.g. "frame 3"), with `done` of `total` units done.
+  void step(const std::string& what, long done, long total);
   void set_label(std::string label) { label_ = std::move(label); }
   void finish();
 
  private:
+  double seconds() const;
+  void log_line(const std::string& what, double fraction);
+
   std::string label_;
   bool enabled_, tty_, finished_ = false;
-  int last_decile_ = -1;
   int last_permille_ = -1;
+  double last_line_ = 0;  // seconds, when the last log line was printed
   std::chrono::steady_clock::time_point start_;
 };
+
+// "12.3 s", "4 min 05 s", "2 h 03 min": a duration as the progress lines print it.
+std::string format_duration(double seconds);
 
 }  // namespace sg

@@ -19,7 +19,8 @@ Image render_frame(const SceneModel& model, Method& method, int frame,
                                                   settings.threads);
   }
   const int w = model.width(), h = model.height(), t = std::max(1, settings.tile);
-  Image img(w, h);
+  // One channel for a grey scene (its files stay as they were), R, G, B for colour.
+  Image img = Image::with_channels(w, h, model.scene.grey() ? 1 : 3);
   FrameContext ctx{model, frame_time(model.scene, frame), settings.seed};
   method.begin_frame(ctx);
 

@@ -36,10 +36,10 @@ std::array<uint8_t, 3> diverging_colour(double t) {
 }
 
 std::vector<uint8_t> difference_rgb8(const Image& a, const Image& b, double range) {
-  std::vector<uint8_t> out(a.size() * 3);
+  std::vector<uint8_t> out(a.pixels() * 3);
   const double inv = range > 0 ? 1.0 / range : 0.0;
-  for (size_t k = 0; k < a.size(); ++k) {
-    auto c = diverging_colour((static_cast<double>(a.data[k]) - b.data[k]) * inv);
+  for (size_t k = 0; k < a.pixels(); ++k) {
+    auto c = diverging_colour(mean_difference(a, b, k) * inv);
     std::copy(c.begin(), c.end(), out.begin() + 3 * k);
   }
   return out;

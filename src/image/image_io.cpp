@@ -34,12 +34,13 @@ ImageFormat image_format_of(const std::string& path) {
 std::string encode_pfm(const Image& img) {
   static_assert(std::endian::native == std::endian::little, "PFM writer assumes little endian");
   std::ostringstream out;
-  out << "Pf\n" << img.width << " " << img.height << "\n-1.0\n";
+  out << (img.channels == 3 ? "PF" : "Pf") << "\n" << img.width << " " << img.height << "\n-1.0\n";
   std::string bytes = out.str();
-  const size_t row = static_cast<size_t>(img.width) * sizeof(float);
-  bytes.reserve(bytes.size() + row * img.height);
+  const size_t row = static_cast<size_t>(img.width) * img.channels;  // floats per row
+  bytes.reserve(bytes.size() + row * sizeof(float) * img.height);
   for (int j = img.height - 1; j >= 0; --j) {  // PFM rows run bottom to top
-    bytes.append(reinterpret_cast<const char*>(&img.data[static_cast<size_t>(j) * img.width]), row);
+    bytes.append(reinterpret_cast<const char*>(&img.data[static_cast<size_t>(j) * row]),
+                 row * sizeof(float));
   }
   return bytes;
 }
@@ -57,21 +58,18 @@ Image decode_pfm(const std::string& bytes, const std::string& name) {
   const size_t count = static_cast<size_t>(w) * h * channels;
   const size_t offset = static_cast<size_t>(in.tellg());
   if (bytes.size() < offset + count * sizeof(float)) throw Error(name + ": truncated PFM data");
-  std::vector<float> raw(count);
-  std::memcpy(raw.data(), bytes.data() + offset, count * sizeof(float));
+  Image img = Image::with_channels(static_cast<int>(w), static_cast<int>(h), channels);
+  const size_t row = static_cast<size_t>(w) * channels;
+  for (int j = 0; j < img.height; ++j) {  // PFM rows run bottom to top
+    std::memcpy(&img.data[static_cast<size_t>(j) * row],
+                bytes.data() + offset + static_cast<size_t>(img.height - 1 - j) * row * 4, row * 4);
+  }
   if (scale > 0) {  // big-endian data
-    for (float& f : raw) {
+    for (float& f : img.data) {
       uint32_t u;
       std::memcpy(&u, &f, 4);
       u = __builtin_bswap32(u);
       std::memcpy(&f, &u, 4);
-    }
-  }
-  Image img(static_cast<int>(w), static_cast<int>(h));
-  for (int j = 0; j < img.height; ++j) {
-    const float* src = &raw[static_cast<size_t>(img.height - 1 - j) * w * channels];
-    for (int i = 0; i < img.width; ++i) {
-      img.at(i, j) = channels == 1 ? src[i] : (src[3 * i] + src[3 * i + 1] + src[3 * i + 2]) / 3.0f;
     }
   }
   return img;
@@ -80,15 +78,24 @@ Image decode_pfm(const std::string& bytes, const std::string& name) {
 // ---------------------------------------------------------------------------------- EXR
 namespace {
 
+// Channel "Y" for a grey image, "R", "G", "B" for a colour one.
+std::vector<std::string> exr_channel_names(int channels) {
+  return channels == 3 ? std::vector<std::string>{"R", "G", "B"} : std::vector<std::string>{"Y"};
+}
+
 void write_exr(const std::string& path, const Image& img) {
   write_file_atomic_with(path, [&](const std::string& tmp) {
     Imf::Header header(img.width, img.height);
     header.compression() = Imf::ZIP_COMPRESSION;
-    header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+    const std::vector<std::string> names = exr_channel_names(img.channels);
+    for (const auto& n : names)
+      header.channels().insert(n, Imf::Channel(Imf::FLOAT));
     Imf::OutputFile file(tmp.c_str(), header, 1);
     Imf::FrameBuffer fb;
-    fb.insert("Y", Imf::Slice(Imf::FLOAT, (char*)img.data.data(), sizeof(float),
-                              sizeof(float) * img.width));
+    const size_t px = sizeof(float) * img.channels;
+    for (size_t c = 0; c < names.size(); ++c) {
+      fb.insert(names[c], Imf::Slice(Imf::FLOAT, (char*)(img.data.data() + c), px, px * img.width));
+    }
     file.setFrameBuffer(fb);
     file.writePixels(img.height);
   });
@@ -110,23 +117,17 @@ Image read_exr(const std::string& path) {
     } else {
       throw Error("no channels");
     }
-    std::vector<std::vector<float>> planes(names.size(), std::vector<float>(size_t(w) * h));
+    const int channels = static_cast<int>(names.size());
+    Image img = Image::with_channels(w, h, channels);
+    const ptrdiff_t px = static_cast<ptrdiff_t>(sizeof(float)) * channels;
     Imf::FrameBuffer fb;
-    for (size_t c = 0; c < names.size(); ++c) {
-      char* base = reinterpret_cast<char*>(planes[c].data()) -
-                   (static_cast<ptrdiff_t>(dw.min.x) + static_cast<ptrdiff_t>(dw.min.y) * w) *
-                       static_cast<ptrdiff_t>(sizeof(float));
-      fb.insert(names[c], Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
+    for (int c = 0; c < channels; ++c) {
+      char* base = reinterpret_cast<char*>(img.data.data() + c) -
+                   (static_cast<ptrdiff_t>(dw.min.x) + static_cast<ptrdiff_t>(dw.min.y) * w) * px;
+      fb.insert(names[c], Imf::Slice(Imf::FLOAT, base, px, px * w));
     }
     file.setFrameBuffer(fb);
     file.readPixels(dw.min.y, dw.max.y);
-    Image img(w, h);
-    for (size_t k = 0; k < img.size(); ++k) {
-      float s = 0;
-      for (auto& p : planes)
-        s += p[k];
-      img.data[k] = s / static_cast<float>(planes.size());
-    }
     return img;
   } catch (const Error&) {
     throw;
@@ -154,8 +155,21 @@ void write_png_rgb8(const std::string& path, int width, int height,
   write_png_bytes(path, width, height, 3, rgb.data());
 }
 
+size_t count_nonfinite(const Image& img) {
+  size_t n = 0;
+  for (float v : img.data)
+    n += std::isfinite(v) ? 0 : 1;
+  return n;
+}
+
 void write_image(const std::string& path, const Image& img, const WriteOptions& opt) {
   if (img.width <= 0 || img.height <= 0) throw Error(path + ": cannot write an empty image");
+  if (const size_t bad = count_nonfinite(img)) {
+    throw Error(path + ": internal error: " + std::to_string(bad) + " of " +
+                std::to_string(img.size()) +
+                " pixels are not finite (NaN or infinite); nothing written");
+  }
+  if (!std::isfinite(opt.exposure)) throw Error(path + ": the exposure must be finite");
   switch (image_format_of(path)) {
     case ImageFormat::exr:
       write_exr(path, img);
@@ -164,8 +178,8 @@ void write_image(const std::string& path, const Image& img, const WriteOptions& 
       write_file_atomic(path, encode_pfm(img));
       return;
     case ImageFormat::png: {
-      auto px = tonemap_srgb8(img, opt.exposure);
-      write_png_bytes(path, img.width, img.height, 1, px.data());
+      auto px = opt.display ? display_srgb8(img, *opt.display) : tonemap_srgb8(img, opt.exposure);
+      write_png_bytes(path, img.width, img.height, img.channels, px.data());
       return;
     }
   }
@@ -174,7 +188,7 @@ void write_image(const std::string& path, const Image& img, const WriteOptions& 
 Image read_image(const std::string& path) {
   switch (image_format_of(path)) {
     case ImageFormat::exr:
-      if (!std::filesystem::exists(path)) throw Error(path + ": cannot read: no such file");
+      check_readable_file(path);  // a missing file, a folder, a device or a fifo
       return read_exr(path);
     case ImageFormat::pfm:
       return decode_pfm(read_file(path), path);

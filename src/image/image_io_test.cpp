@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "base/atomic_file.h"
 #include "base/error.h"
@@ -48,6 +50,39 @@ TEST_F(ImageIo, ExrAndPfmRoundTripBitExactly) {
   }
 }
 
+// A colour image: three channels that differ in every pixel, bits that a float-to-half or
+// a channel mix-up would lose.
+Image colour_ramp(int w, int h) {
+  Image img = Image::with_channels(w, h, 3);
+  for (int j = 0; j < h; ++j) {
+    for (int i = 0; i < w; ++i) {
+      img.at(i, j, 0) = 0.001f * i + 0.5f * j + 1e-7f;
+      img.at(i, j, 1) = 3.0f + 0.25f * i - 0.125f * j;
+      img.at(i, j, 2) = 1e-5f * (i + 1) * (j + 2);
+    }
+  }
+  return img;
+}
+
+TEST_F(ImageIo, ColourExrAndPfmRoundTripBitExactly) {
+  const Image a = colour_ramp(7, 5);
+  for (const char* name : {"c.exr", "c.pfm"}) {
+    write_image(path(name), a);
+    const Image b = read_image(path(name));
+    ASSERT_EQ(b.width, 7);
+    ASSERT_EQ(b.height, 5);
+    ASSERT_EQ(b.channels, 3) << name;
+    EXPECT_EQ(0, std::memcmp(a.data.data(), b.data.data(), a.size() * sizeof(float))) << name;
+  }
+  // A grey image stays one channel ("Y", "Pf") in both.
+  write_image(path("g.exr"), ramp(3, 2));
+  write_image(path("g.pfm"), ramp(3, 2));
+  EXPECT_EQ(read_image(path("g.exr")).channels, 1);
+  EXPECT_EQ(read_file(path("g.pfm")).substr(0, 2), "Pf");
+  EXPECT_EQ(read_file(path("c.pfm")).substr(0, 2), "PF");
+  EXPECT_EQ(encode_pfm(a).size(), std::string("PF\n7 5\n-1.0\n").size() + 7 * 5 * 3 * 4);
+}
+
 TEST_F(ImageIo, PfmRowsRunBottomToTop) {
   Image a(2, 2);
   a.at(0, 0) = 1;  // top-left
@@ -70,13 +105,18 @@ TEST_F(ImageIo, ReadsBigEndianAndColourPfm) {
     be.append(reinterpret_cast<const char*>(&u), 4);
   }
   Image img = decode_pfm(be, "x.pfm");
-  EXPECT_FLOAT_EQ(img.at(0, 0), 0.5f);
+  ASSERT_EQ(img.channels, 3);  // colour stays colour: no mean of the channels
+  EXPECT_EQ(img.at(0, 0, 0), 0.25f);
+  EXPECT_EQ(img.at(0, 0, 1), 0.5f);
+  EXPECT_EQ(img.at(0, 0, 2), 0.75f);
   EXPECT_THROW(decode_pfm("P6\n1 1\n255\n", "x.pfm"), Error);
   EXPECT_THROW(decode_pfm("Pf\n4 4\n-1.0\nabc", "x.pfm"), Error);
 }
 
 TEST_F(ImageIo, PngIsWrittenAndTonemapped) {
-  write_image(path("a.png"), ramp(4, 3), WriteOptions{1.0});
+  WriteOptions exposed;
+  exposed.exposure = 1.0;
+  write_image(path("a.png"), ramp(4, 3), exposed);
   std::string bytes = read_file(path("a.png"));
   ASSERT_GT(bytes.size(), 8u);
   EXPECT_EQ(bytes.substr(1, 3), "PNG");
@@ -85,6 +125,19 @@ TEST_F(ImageIo, PngIsWrittenAndTonemapped) {
   EXPECT_EQ(tonemap_srgb8(one, 2.0)[0], 255);  // 0.25 * 2^2 = 1
   EXPECT_EQ(tonemap_srgb8(one, -20.0)[0], 0);
   EXPECT_THROW(read_image(path("a.png")), Error);
+  // Colour: three values per pixel, each channel alone.
+  Image c = Image::with_channels(1, 1, 3);
+  c.at(0, 0, 0) = 0.25f;
+  c.at(0, 0, 2) = 1.0f;
+  const auto rgb = tonemap_srgb8(c, 2.0);
+  ASSERT_EQ(rgb.size(), 3u);
+  EXPECT_EQ(rgb[0], 255);
+  EXPECT_EQ(rgb[1], 0);
+  EXPECT_EQ(rgb[2], 255);
+  write_image(path("c.png"), c);
+  // PNG colour type (byte 25 of the IHDR chunk): 2 = RGB, 0 = grey.
+  EXPECT_EQ(read_file(path("c.png"))[25], 2);
+  EXPECT_EQ(read_file(path("a.png"))[25], 0);
 }
 
 TEST_F(ImageIo, UnknownExtensionAndMissingDirectoryAreClearErrors) {
@@ -119,6 +172,49 @@ TEST_F(ImageIo, FailedWritesLeaveNoPartialFileAndKeepTheOldOne) {
     ++files;
   }
   EXPECT_EQ(files, 1);  // no temporary left behind
+}
+
+TEST_F(ImageIo, NonFinitePixelsFailTheWriteAndLeaveNoFile) {
+  for (float bad : {std::nanf(""), std::numeric_limits<float>::infinity(),
+                    -std::numeric_limits<float>::infinity()}) {
+    Image a = ramp(4, 3);
+    a.at(2, 1) = bad;
+    a.at(3, 2) = bad;
+    for (const char* name : {"n.exr", "n.pfm", "n.png"}) {
+      try {
+        write_image(path(name), a);
+        FAIL() << name << " written with " << bad;
+      } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  path(name) +
+                      ": internal error: 2 of 12 pixels are not finite (NaN or infinite); "
+                      "nothing written");
+      }
+      EXPECT_FALSE(fs::exists(path(name))) << name;
+    }
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));  // no temporary either
+  EXPECT_EQ(count_nonfinite(ramp(4, 3)), 0u);
+  WriteOptions nan_exposure;
+  nan_exposure.exposure = std::nan("");
+  EXPECT_THROW(write_image(path("e.png"), ramp(4, 3), nan_exposure), Error);
+}
+
+TEST_F(ImageIo, ReadingADeviceOrAFolderFailsAtOnce) {
+  for (const char* name : {"/dev/zero.pfm", "/dev/zero.exr"}) {
+    // /dev/zero under an image name: a symbolic link to the device.
+    const std::string link = path(fs::path(name).filename().string());
+    fs::create_symlink("/dev/zero", link);
+    try {
+      read_image(link);
+      FAIL() << link;
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                link + ": cannot read: not a regular file (a device, fifo or socket)");
+    }
+  }
+  fs::create_directory(path("folder.exr"));
+  EXPECT_THROW(read_image(path("folder.exr")), Error);
 }
 
 TEST_F(ImageIo, SequencePatterns) {

@@ -16,7 +16,10 @@ double aces_filmic(double x) {
   return std::clamp(f, 0.0, 1.0);
 }
 
-std::vector<uint8_t> display_srgb8(const Image& img, const DisplaySettings& s) {
+namespace {
+
+// The pipeline on one channel: 8-bit values, one per pixel.
+std::vector<uint8_t> display_channel(const Image& img, const DisplaySettings& s) {
   const double scale = std::exp2(s.exposure);
   // A non-finite value (never a method's output) shows white and does not glare.
   Image x(img.width, img.height);
@@ -27,6 +30,19 @@ std::vector<uint8_t> display_srgb8(const Image& img, const DisplaySettings& s) {
   for (size_t p = 0; p < x.size(); ++p) {
     const double v = std::isfinite(img.data[p]) ? aces_filmic(x.data[p]) : 1.0;
     out[p] = static_cast<uint8_t>(std::lround(255.0 * srgb_encode(v)));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<uint8_t> display_srgb8(const Image& img, const DisplaySettings& s) {
+  if (img.channels == 1) return display_channel(img, s);
+  std::vector<uint8_t> out(img.size());
+  for (int c = 0; c < img.channels; ++c) {
+    const std::vector<uint8_t> v = display_channel(img.channel(c), s);
+    for (size_t p = 0; p < v.size(); ++p)
+      out[p * img.channels + c] = v[p];
   }
   return out;
 }

@@ -10,8 +10,9 @@
 // f(0) = 0 and f is increasing on x >= 0; f(x) reaches 1 at x = (0.56 + sqrt(0.3584)) / 0.16
 // ~ 7.24.
 //
-// The display pipeline of `sunglint compare` (identical for every method): value *
-// 2^exposure, then glare (image/glare.h), then f, then the sRGB encoding (display.h).
+// The display pipeline of `sunglint compare` and `render --display` (identical for every
+// method): value * 2^exposure, then glare (image/glare.h), then f, then the sRGB encoding
+// (display.h); on each channel of a colour image alone (glare included).
 #pragma once
 
 #include <cstdint>
@@ -32,7 +33,8 @@ struct DisplaySettings {
   GlareSettings glare_settings;
 };
 
-// Linear image -> 8-bit grey picture: exposure, glare (if enabled), ACES curve, sRGB.
+// Linear image -> 8-bit picture, grey or RGB like the image (one byte per value):
+// exposure, glare (if enabled), ACES curve, sRGB.
 std::vector<uint8_t> display_srgb8(const Image& img, const DisplaySettings& settings);
 
 }  // namespace sg

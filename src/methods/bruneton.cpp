@@ -30,7 +30,11 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   vec3 P = rest.point;
   if (m.displaced()) {
     const RayHit hit = intersect_displaced(m.waves.weighted(w), o, d, t);
-    if (!hit.hit) return miss_weights(m, d);
+    if (!hit.hit) {
+      if (hit.exhausted) count_fallback();  // a march that found no water: the sky
+      return miss_weights(m, d);
+    }
+    if (!(hit.s > 0)) return fallback(ctx, i, j);  // the camera is under the surface
     P = hit.point;
   }
   const vec3 v = normalize(o - P);
@@ -70,8 +74,9 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   const double below = below_horizon_fraction(v, n, tx, ty, sigma2);
   // The sun's term replaces the sky in its solid angle: + F x (light - sky(L)).
   const double sky_y = reflect_view(n, v).y;
-  return combine_weights(m, F_bar, 0, below, sky_y) +
-         F_sun * x * (light_weights() - sky_weights(m, m.light.L.y));
+  return finite_or_fallback(combine_weights(m, F_bar, 0, below, sky_y) +
+                                F_sun * x * (light_weights() - sky_weights(m, m.light.L.y)),
+                            ctx, i, j);
 }
 
 }  // namespace sg

@@ -1,6 +1,6 @@
 // Ocean lighting with seamless transitions from geometry to BRDF (`--method bruneton`):
-// Bruneton, Neyret, Holzschuch 2010 (shared/papers/bruneton2010-ocean-lighting-geometry-to-
-// brdf.txt, Sec. 3-5 and Algorithm 5.1 in Fig. 9), on the sum of sines of the scene spec.
+// Bruneton, Neyret, Holzschuch 2010 (docs/references.md), Sec. 3-5
+// and Algorithm 5.1 in Fig. 9,, on the sum of sines of the scene spec.
 // The shading math lives in shading/wave_lod.h (Sec. 3.2) and shading/ocean_brdf.h
 // (Sec. 4-5); this file puts them together per pixel, at the frame time t_f.
 //
@@ -46,14 +46,19 @@
 // A pixel whose ray misses the water (on the rest plane) sees the sky (miss_radiance).
 #pragma once
 
+#include "methods/fallback.h"
 #include "methods/method.h"
 
 namespace sg {
 
-class BrunetonMethod final : public Method {
+// Fallback (methods/fallback.h): where the camera is under the filtered surface (the hit is the
+// camera: no view direction) or the BRDF's value is not finite, the pixel gets the spec's radiance
+// along its centre ray (what `point` returns) and is counted.
+class BrunetonMethod final : public Method, public FallbackCounter {
  public:
   explicit BrunetonMethod(BrunetonOptions o) : options_(o) {}
   std::string name() const override { return "bruneton"; }
+  void begin_frame(const FrameContext&) override { reset_fallbacks(); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 
  private:

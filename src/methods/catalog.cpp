@@ -15,7 +15,8 @@
 namespace sg {
 
 void store_pixel(const FrameContext& ctx, Image& out, int i, int j, const RadianceWeights& w) {
-  out.at(i, j) = static_cast<float>(ctx.model.radiances.apply(w, 0));
+  for (int c = 0; c < out.channels; ++c)
+    out.at(i, j, c) = static_cast<float>(ctx.model.radiances.apply(w, c));
 }
 
 void Method::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1, Image& out) const {
@@ -50,12 +51,7 @@ const std::vector<MethodInfo>& method_catalog() {
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
   validate(o);
   if (name == "reference") {
-    ReferenceSettings rs;
-    rs.samples = o.samples_given ? o.samples : kReferenceSamples;
-    rs.batches = o.batches;
-    rs.adaptive = o.adaptive;
-    rs.quiet = o.quiet_samples;
-    return std::make_unique<ReferenceMethod>(rs, o.precision);
+    return std::make_unique<ReferenceMethod>(reference_settings(o), o.precision);
   }
   if (name == "supersample") {
     return std::make_unique<StratifiedMethod>(

@@ -105,6 +105,7 @@ void fill_lean_map_from_waves(LeanMap& map, const LeanMapRegion& region, const W
 }
 
 void LeanMethod::begin_frame(const FrameContext& ctx) {
+  reset_fallbacks();
   const SceneModel& m = ctx.model;
   const WaveField& w = m.waves;
   region_ = lean_map_region(m, options_.size, options_.far);
@@ -137,8 +138,10 @@ RadianceWeights LeanMethod::weights(const FrameContext& ctx, int i, int j) const
   const SceneModel& m = ctx.model;
   const PixelFootprint fp = pixel_footprint(m, i + 0.5, j + 0.5, ctx.time.end);
   if (!fp.hit) return miss_weights(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
+  if (fp.at_camera) return fallback(ctx, i, j);
   const LeanMoments mo = lookup(fp);
-  return shade_gaussian_ndf(m, fp.view, -mo.B, mo.covariance() + base_cov_).weights;
+  return finite_or_fallback(
+      shade_gaussian_ndf(m, fp.view, -mo.B, mo.covariance() + base_cov_).weights, ctx, i, j);
 }
 
 }  // namespace sg

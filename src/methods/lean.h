@@ -50,6 +50,7 @@
 
 #include <span>
 
+#include "methods/fallback.h"
 #include "methods/lean_coverage.h"
 #include "methods/lean_map.h"
 #include "methods/method.h"
@@ -57,7 +58,11 @@
 
 namespace sg {
 
-class LeanMethod final : public Method {
+// Fallback (methods/fallback.h): where the camera is under the surface (a point footprint, no map
+// footprint to filter) or the NDF's shading is not finite,
+// the pixel gets the spec's radiance along its centre ray (what `point` returns) and is
+// counted.
+class LeanMethod final : public Method, public FallbackCounter {
  public:
   // Throws sg::Error naming the flag for a bad option.
   explicit LeanMethod(const LeanOptions& options);

@@ -61,7 +61,8 @@ class Method {
   virtual void reset() {}
 };
 
-// Stores pixel (i, j) of `out` from its radiance weights (the radiances applied).
+// Stores pixel (i, j) of `out` from its radiance weights: the radiances applied in each of
+// its channels (1 for a grey scene, 3 for colour).
 void store_pixel(const FrameContext& ctx, Image& out, int i, int j, const RadianceWeights& w);
 
 struct MethodInfo {

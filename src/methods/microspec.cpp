@@ -28,6 +28,7 @@ CornerReflection corner_reflection(const SceneModel& m, double px, double py, do
   if (!hit.hit) return c;
   const vec3 n = normal_from_gradient(m.waves.gradient(hit.point.x, hit.point.z, t));
   c.hit = true;
+  c.at_camera = !(hit.s > 0);
   c.v = -d;
   c.r = normalize(reflect_view(n, c.v));
   return c;
@@ -120,13 +121,10 @@ RadianceWeights microspec_weights(const SceneModel& m, const std::array<CornerRe
 RadianceWeights MicrospecMethod::shade_corners(const FrameContext& ctx, int i, int j,
                                                const std::array<CornerReflection, 4>& c) const {
   for (const auto& k : c) {
-    if (!k.hit) {
-      const SceneModel& m = ctx.model;
-      return weights_along_ray(m, m.camera.position(), m.camera.direction(i + 0.5, j + 0.5),
-                               ctx.time.end);
-    }
+    if (!k.hit) return centre_ray_weights(ctx, i, j);  // as `point` (see microspec.h)
+    if (k.at_camera) return fallback(ctx, i, j);
   }
-  return microspec_weights(ctx.model, c, options_.area);
+  return finite_or_fallback(microspec_weights(ctx.model, c, options_.area), ctx, i, j);
 }
 
 RadianceWeights MicrospecMethod::weights(const FrameContext& ctx, int i, int j) const {

@@ -1,6 +1,6 @@
 // The micro-specular highlight (`--method microspec`): Podee, Max, Iwasaki, Dobashi,
-// "Micro-specular-highlight real-time rendering" (shared/papers/
-// podee-micro-specular-highlight.txt), Sec. 3, on the water of the scene spec.
+// "Micro-specular-highlight real-time rendering" (docs/references.md),
+// Sec. 3, on the water of the scene spec.
 //
 // Reflection vector selection (Sec. 3.1). At the frame time t_f, the camera rays through
 // the pixel's four corners meet the water (flat or displaced, as the scene says); each
@@ -62,6 +62,7 @@
 
 #include <array>
 
+#include "methods/fallback.h"
 #include "methods/method.h"
 
 namespace sg {
@@ -70,8 +71,9 @@ namespace sg {
 // time t, its analytic normal, and the mirrored view.
 struct CornerReflection {
   bool hit = false;
-  vec3 r{0};  // unit reflected direction
-  vec3 v{0};  // unit view direction (towards the camera)
+  bool at_camera = false;  // the camera is under the surface: the hit is the camera itself
+  vec3 r{0};               // unit reflected direction
+  vec3 v{0};               // unit view direction (towards the camera)
 };
 CornerReflection corner_reflection(const SceneModel& m, double px, double py, double t);
 
@@ -95,10 +97,15 @@ RadianceWeights microspec_weights(const SceneModel& m,
                                   const std::array<CornerReflection, 4>& corners,
                                   MicrospecArea area);
 
-class MicrospecMethod final : public Method {
+// Fallback (methods/fallback.h): where the camera is under the surface at a corner (the corner's
+// reflection is not a point of the water seen from above) or the value is not finite,
+// the pixel gets the spec's radiance along its centre ray (what `point` returns) and is
+// counted.
+class MicrospecMethod final : public Method, public FallbackCounter {
  public:
   explicit MicrospecMethod(MicrospecOptions o) : options_(o) {}
   std::string name() const override { return "microspec"; }
+  void begin_frame(const FrameContext&) override { reset_fallbacks(); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
   // Neighbouring pixels share corners: a tile traces its (w+1) x (h+1) corners once.
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,

@@ -25,6 +25,15 @@ int reference_segments(const SceneModel& m, double duration) {
   return kd::kMaxSegments;
 }
 
+ReferenceSettings reference_settings(const MethodOptions& o) {
+  ReferenceSettings rs;
+  rs.samples = o.samples_given ? o.samples : kReferenceSamples;
+  rs.batches = o.batches;
+  rs.adaptive = o.adaptive;
+  rs.quiet = o.quiet_samples;
+  return rs;
+}
+
 double ReferencePixel::variance(const Radiances& r, int c) const {
   const int b = static_cast<int>(batches.size());
   if (b < 2) return 0;
@@ -44,8 +53,14 @@ ReferenceMethod::ReferenceMethod(ReferenceSettings settings, Precision precision
 
 void ReferenceMethod::begin_frame(const FrameContext& ctx) {
   inputs(ctx);
-  if (variance_.width != ctx.model.width() || variance_.height != ctx.model.height()) {
-    variance_ = Image(ctx.model.width(), ctx.model.height());
+  resize_variance(ctx);
+}
+
+void ReferenceMethod::resize_variance(const FrameContext& ctx) const {
+  const int c = ctx.model.scene.grey() ? 1 : 3;
+  if (variance_.width != ctx.model.width() || variance_.height != ctx.model.height() ||
+      variance_.channels != c) {
+    variance_ = Image::with_channels(ctx.model.width(), ctx.model.height(), c);
   }
 }
 
@@ -111,27 +126,45 @@ void ReferenceMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1
                                  Image& out) const {
   {
     std::lock_guard<std::mutex> lock(lazy_);
-    if (variance_.width != ctx.model.width() || variance_.height != ctx.model.height()) {
-      variance_ = Image(ctx.model.width(), ctx.model.height());
-    }
+    resize_variance(ctx);
   }
   for (int j = y0; j < y1; ++j) {
     for (int i = x0; i < x1; ++i) {
       const ReferencePixel p = pixel(ctx, i, j);
       store_pixel(ctx, out, i, j, p.weights);
-      variance_.at(i, j) = static_cast<float>(p.variance(ctx.model.radiances, 0));
+      for (int c = 0; c < variance_.channels; ++c)
+        variance_.at(i, j, c) = static_cast<float>(p.variance(ctx.model.radiances, c));
     }
   }
 }
 
-double image_standard_error(const Image& variance, const std::vector<unsigned char>* mask) {
-  double sum = 0;
-  long n = 0;
+namespace {
+
+void add_variance(const Image& variance, const std::vector<unsigned char>* mask, double& sum,
+                  long& n) {
+  const size_t c = static_cast<size_t>(variance.channels);
   for (size_t k = 0; k < variance.size(); ++k) {
-    if (mask && !(*mask)[k]) continue;
+    if (mask && !(*mask)[k / c]) continue;
     sum += variance.data[k];
     ++n;
   }
+}
+
+}  // namespace
+
+double image_standard_error(const Image& variance, const std::vector<unsigned char>* mask) {
+  double sum = 0;
+  long n = 0;
+  add_variance(variance, mask, sum, n);
+  return n > 0 ? std::sqrt(sum / double(n)) : 0.0;
+}
+
+double sequence_standard_error(const std::vector<Image>& variance,
+                               const std::vector<unsigned char>* mask) {
+  double sum = 0;
+  long n = 0;
+  for (const Image& v : variance)
+    add_variance(v, mask, sum, n);
   return n > 0 ? std::sqrt(sum / double(n)) : 0.0;
 }
 

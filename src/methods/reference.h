@@ -11,9 +11,10 @@
 // `--batches B` (default 2). Flat water costs one path of K + 1 instants per sample, K
 // chosen per frame so that the path's interpolation error is at most 1e-4 of the light's
 // radius (reference_segments). The stratified estimator of before remains as
-// `supersample` (methods/supersample.h).
+// `supersample` (methods/stratified.h).
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -38,6 +39,10 @@ struct ReferenceSettings {
   int quiet = 1;  // quiet pixels: quiet x quiet strata of T samples per batch
   double margin = kReferencePilotMargin;
 };
+
+// The settings `--method reference` gets from its flags (--samples when given, --batches,
+// --adaptive, --quiet-samples), for either engine.
+ReferenceSettings reference_settings(const MethodOptions& o);
 
 // The sub-intervals K of flat water's paths for a scene and shutter: the smallest K
 // (1 to kMaxSegments) with the cubic Hermite interpolation's error bound
@@ -65,7 +70,8 @@ class ReferenceMethod final : public Method {
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                   Image& out) const override;
-  // The variance of each pixel of the last frame rendered (channel 0).
+  // The variance of each pixel's estimate in the last frame rendered, per channel (as the
+  // image's).
   const Image* pixel_variance() const override { return &variance_; }
 
   // Pixel (i, j) of ctx's frame.
@@ -76,6 +82,7 @@ class ReferenceMethod final : public Method {
 
  private:
   const KernelFrameInputs& inputs(const FrameContext& ctx) const;
+  void resize_variance(const FrameContext& ctx) const;
 
   ReferenceSettings settings_;
   Precision precision_;
@@ -87,9 +94,19 @@ class ReferenceMethod final : public Method {
   mutable Image variance_;
 };
 
-// The standard error of an image, sqrt(mean of the pixels' variances), over the pixels
-// whose mask entry is nonzero (all without a mask): the expected RMSE of the estimate
-// against the exact image.
+// The standard error of an image, sqrt(mean of the values' variances) over all channels of
+// the pixels whose mask entry (one per pixel) is nonzero (all without a mask): the expected
+// RMSE of the estimate against the exact image.
 double image_standard_error(const Image& variance, const std::vector<unsigned char>* mask = nullptr);
+// The same over a sequence of frames (the RMSE's set: all frames' values).
+double sequence_standard_error(const std::vector<Image>& variance,
+                               const std::vector<unsigned char>* mask = nullptr);
+// A method's RMSE against the reference with the reference's own noise taken out:
+// E[RMSE^2] = error^2 + se^2 for a reference whose noise is independent of the method's
+// error, so sqrt(max(0, RMSE^2 - se^2)).
+inline double noise_corrected_rmse(double rmse, double se) {
+  const double d = rmse * rmse - se * se;
+  return d > 0 ? std::sqrt(d) : 0.0;
+}
 
 }  // namespace sg

@@ -64,15 +64,17 @@ RadianceWeights SpecaaMethod::shade_pixel(const FrameContext& ctx, int i, int j,
   if (!own.hit) {
     return miss_weights(m, normalize(m.camera.direction(i + 0.5, j + 0.5)));
   }
+  if (own.footprint.at_camera) return fallback(ctx, i, j);
   vec2 ddx, ddy;
-  if (options_.derivatives == SpecaaDerivatives::quad && nx.hit && ny.hit) {
+  if (options_.derivatives == SpecaaDerivatives::quad && nx.hit && ny.hit &&
+      !nx.footprint.at_camera && !ny.footprint.at_camera) {
     // Within the quad the difference runs from the even to the odd pixel.
     ddx = (i & 1) ? own.h_perp - nx.h_perp : nx.h_perp - own.h_perp;
     ddy = (j & 1) ? own.h_perp - ny.h_perp : ny.h_perp - own.h_perp;
   } else {
     specaa_analytic_derivatives(m, own, ctx.time.end, ddx, ddy);
   }
-  return specaa_weights(m, own, ddx, ddy, options_);
+  return finite_or_fallback(specaa_weights(m, own, ddx, ddy, options_), ctx, i, j);
 }
 
 RadianceWeights SpecaaMethod::weights(const FrameContext& ctx, int i, int j) const {

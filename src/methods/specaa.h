@@ -1,7 +1,7 @@
 // Geometric specular anti-aliasing (`--method specaa`): the filtering kernel of Kaplanyan,
 // Hill, Patney, Lefohn 2016 (HPG) with the projected-half-vector derivatives of Tokuyoshi
-// and Kaplanyan 2019 (I3D), as Chermain et al. 2021 use them (shared/papers/
-// chermain2021-geometric-glint-antialiasing.txt, Sec. 4.1, 6.1, Eqs. 7, 20-21). The kernel
+// and Kaplanyan 2019 (I3D), as Chermain et al. 2021 use them (Sec. 4.1,
+// 6.1, Eqs. 7, 20-21; docs/references.md). The kernel
 // itself, its constants and its conversion to the NDF plane: shading/specular_aa.h.
 //
 // Per pixel, at the frame time t_f (stateless: one frame, no history):
@@ -36,6 +36,7 @@
 // A pixel whose centre ray misses the water sees the sky (miss_radiance), as `point`.
 #pragma once
 
+#include "methods/fallback.h"
 #include "methods/method.h"
 #include "scene/footprint.h"
 #include "shading/specular_aa.h"
@@ -60,10 +61,14 @@ void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, dou
 RadianceWeights specaa_weights(const SceneModel& m, const SpecaaSample& s, const vec2& ddx,
                                const vec2& ddy, const SpecaaOptions& o);
 
-class SpecaaMethod final : public Method {
+// Fallback (methods/fallback.h): where the camera is under the surface (no footprint, no
+// derivatives) or the lobe's shading is not finite, the pixel gets the spec's radiance along its
+// centre ray (what `point` returns) and is counted.
+class SpecaaMethod final : public Method, public FallbackCounter {
  public:
   explicit SpecaaMethod(SpecaaOptions o) : options_(o) {}
   std::string name() const override { return "specaa"; }
+  void begin_frame(const FrameContext&) override { reset_fallbacks(); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
   // Quad derivatives share samples: a tile samples its quad-aligned cover once.
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,

@@ -28,10 +28,12 @@ void TaaMethod::reset() {
 
 void TaaMethod::begin_frame(const FrameContext& ctx) {
   const SceneModel& m = ctx.model;
-  if (has_history_ && (ctx.time.frame != last_frame_ + 1 || history_.width != m.width() ||
-                       history_.height != m.height())) {
+  if (has_history_ &&
+      (ctx.time.frame != last_frame_ + 1 || history_.width != m.width() ||
+       history_.height != m.height() || history_.channels != (m.scene.grey() ? 1 : 3))) {
     reset();  // a cut: the history belongs to another sequence
   }
+  reset_fallbacks();
   jitter_ = taa_jitter(ctx.time.frame, options_.jitter_count);
   t_prev_ = m.scene.frame_time(ctx.time.frame - 1);
   motion_.assign(static_cast<size_t>(m.width()) * m.height(), vec2(0));
@@ -81,17 +83,25 @@ void TaaMethod::end_frame(const FrameContext& ctx, Image& img) {
   tbb::parallel_for(tbb::blocked_range<int>(0, img.height), [&](const tbb::blocked_range<int>& r) {
     for (int j = r.begin(); j < r.end(); ++j) {
       for (int i = 0; i < img.width; ++i) {
-        const double c = current.at(i, j);
         const vec2 p = vec2(i + 0.5, j + 0.5) - motion_[static_cast<size_t>(j) * img.width + i];
-        double h;
-        if (!sample_history(history_, p, o.history, h)) {
-          img.at(i, j) = static_cast<float>(c);
-          continue;
+        for (int ch = 0; ch < img.channels; ++ch) {  // each channel alone, clamp included
+          const double c = current.at(i, j, ch);
+          double h;
+          if (!sample_history(history_, p, o.history, h, ch)) {
+            img.at(i, j, ch) = static_cast<float>(c);
+            continue;
+          }
+          if (o.clamp != TaaClamp::none) {
+            h = clip_to_box(h, neighbourhood_box(current, i, j, o.clamp, o.gamma, ch));
+          }
+          const double blended = taa_blend(h, c, o.alpha);
+          if (std::isfinite(blended)) {
+            img.at(i, j, ch) = static_cast<float>(blended);
+          } else {
+            if (ch == 0) count_fallback();  // a pixel counts once
+            img.at(i, j, ch) = static_cast<float>(c);
+          }
         }
-        if (o.clamp != TaaClamp::none) {
-          h = clip_to_box(h, neighbourhood_box(current, i, j, o.clamp, o.gamma));
-        }
-        img.at(i, j) = static_cast<float>(taa_blend(h, c, o.alpha));
       }
     }
   });

@@ -26,8 +26,9 @@
 //     `--taa-gamma` default 1; `minmax`: Karis 2014; `none`).
 //  5. Blend: out = lerp(history, current, alpha), `--taa-alpha` default 0.1 (Karis 2014;
 //     Survey Sec. 4). out becomes the history of the next frame.
-// The blend is on the spec's linear value; Karis's luminance weighting (1 / (1 + luma),
-// against bright fireflies) is left out because it biases the linear mean that every
+// Steps 3-5 run on each channel of a colour image alone (the clamp's box too), as engines
+// that clip in RGB do. The blend is on the spec's linear value; Karis's luminance weighting (1 / (1
+// + luma), against bright fireflies) is left out because it biases the linear mean that every
 // method here is measured on. No sharpening, no motion-dependent alpha.
 //
 // Stateful: frames must arrive in order. The first frame after reset() (or after a frame
@@ -41,11 +42,14 @@
 
 #include <vector>
 
+#include "methods/fallback.h"
 #include "methods/method.h"
 
 namespace sg {
 
-class TaaMethod final : public Method {
+// Fallback (methods/fallback.h): a blended value that is not finite is replaced by the
+// current sample and counted.
+class TaaMethod final : public Method, public FallbackCounter {
  public:
   // Throws sg::Error naming the flag for a bad option.
   explicit TaaMethod(const TaaOptions& options);

@@ -21,8 +21,8 @@ vec2 taa_jitter(int frame, int count) {
 
 namespace {
 
-double texel(const Image& img, int i, int j) {
-  return img.at(std::clamp(i, 0, img.width - 1), std::clamp(j, 0, img.height - 1));
+double texel(const Image& img, int i, int j, int c) {
+  return img.at(std::clamp(i, 0, img.width - 1), std::clamp(j, 0, img.height - 1), c);
 }
 
 // Catmull-Rom weights (Keys 1981, a = -1/2) of the taps at offsets -1, 0, 1, 2 for a
@@ -37,14 +37,14 @@ void catmull_rom_weights(double f, double w[4]) {
 
 }  // namespace
 
-bool sample_history(const Image& h, const vec2& p, TaaHistoryFilter filter, double& value) {
+bool sample_history(const Image& h, const vec2& p, TaaHistoryFilter filter, double& value, int c) {
   if (!(p.x >= 0 && p.x <= h.width && p.y >= 0 && p.y <= h.height)) return false;
   const double u = p.x - 0.5, v = p.y - 0.5;
   const double fu = std::floor(u), fv = std::floor(v);
   const int i0 = static_cast<int>(fu), j0 = static_cast<int>(fv);
   const double a = u - fu, b = v - fv;
-  const double t00 = texel(h, i0, j0), t10 = texel(h, i0 + 1, j0);
-  const double t01 = texel(h, i0, j0 + 1), t11 = texel(h, i0 + 1, j0 + 1);
+  const double t00 = texel(h, i0, j0, c), t10 = texel(h, i0 + 1, j0, c);
+  const double t01 = texel(h, i0, j0 + 1, c), t11 = texel(h, i0 + 1, j0 + 1, c);
   if (filter == TaaHistoryFilter::bilinear) {
     value = (1 - b) * ((1 - a) * t00 + a * t10) + b * ((1 - a) * t01 + a * t11);
     return true;
@@ -56,19 +56,20 @@ bool sample_history(const Image& h, const vec2& p, TaaHistoryFilter filter, doub
   for (int y = 0; y < 4; ++y) {
     double row = 0;
     for (int x = 0; x < 4; ++x)
-      row += wu[x] * texel(h, i0 - 1 + x, j0 - 1 + y);
+      row += wu[x] * texel(h, i0 - 1 + x, j0 - 1 + y, c);
     sum += wv[y] * row;
   }
   value = std::clamp(sum, std::min({t00, t10, t01, t11}), std::max({t00, t10, t01, t11}));
   return true;
 }
 
-NeighbourhoodBox neighbourhood_box(const Image& c, int i, int j, TaaClamp mode, double gamma) {
+NeighbourhoodBox neighbourhood_box(const Image& img, int i, int j, TaaClamp mode, double gamma,
+                                   int c) {
   double lo = INFINITY, hi = -INFINITY, s = 0, s2 = 0;
   int n = 0;
-  for (int y = std::max(0, j - 1); y <= std::min(c.height - 1, j + 1); ++y) {
-    for (int x = std::max(0, i - 1); x <= std::min(c.width - 1, i + 1); ++x) {
-      const double v = c.at(x, y);
+  for (int y = std::max(0, j - 1); y <= std::min(img.height - 1, j + 1); ++y) {
+    for (int x = std::max(0, i - 1); x <= std::min(img.width - 1, i + 1); ++x) {
+      const double v = img.at(x, y, c);
       lo = std::min(lo, v);
       hi = std::max(hi, v);
       s += v;

@@ -1,9 +1,9 @@
-// The building blocks of temporal anti-aliasing (methods/taa.h), on one-channel images:
-// sub-pixel jitter, history resampling, neighbourhood clamping and the exponential blend.
-// References: Karis 2014, "High Quality Temporal Supersampling" (SIGGRAPH course); Salvi
-// 2016, "An Excursion in Temporal Supersampling" (GDC; variance clipping); Yang, Liu and
-// Salvi 2020, "A Survey of Temporal Antialiasing Techniques" (Computer Graphics Forum,
-// Secs. 3-5: jitter sequences, reprojection, history rectification).
+// The building blocks of temporal anti-aliasing (methods/taa.h), on one channel of an
+// image (a colour image is resolved channel by channel): sub-pixel jitter, history resampling,
+// neighbourhood clamping and the exponential blend. References: Karis 2014, "High Quality Temporal
+// Supersampling" (SIGGRAPH course); Salvi 2016, "An Excursion in Temporal Supersampling" (GDC;
+// variance clipping); Yang, Liu and Salvi 2020, "A Survey of Temporal Antialiasing Techniques"
+// (Computer Graphics Forum, Secs. 3-5: jitter sequences, reprojection, history rectification).
 //
 //  - Jitter: the Halton (2, 3) sequence (radical inverses in bases 2 and 3, Survey Sec. 3.1),
 //    indices 1..K cycling with the frame (index (f mod K) + 1: index 0 is the origin, which
@@ -36,13 +36,16 @@ double halton(int index, int base);
 // The jitter offset of frame `frame` (any integer) for a cycle of `count` (>= 1) offsets.
 vec2 taa_jitter(int frame, int count);
 
-// The history at image-plane point p; false when p lies outside [0, W] x [0, H].
-bool sample_history(const Image& history, const vec2& p, TaaHistoryFilter filter, double& value);
+// Channel c of the history at image-plane point p; false when p lies outside [0, W] x [0, H].
+bool sample_history(const Image& history, const vec2& p, TaaHistoryFilter filter, double& value,
+                    int c = 0);
 
 struct NeighbourhoodBox {
   double lo = 0, hi = 0;
 };
-NeighbourhoodBox neighbourhood_box(const Image& current, int i, int j, TaaClamp mode, double gamma);
+// The box of channel c.
+NeighbourhoodBox neighbourhood_box(const Image& current, int i, int j, TaaClamp mode, double gamma,
+                                   int c = 0);
 
 inline double clip_to_box(double history, const NeighbourhoodBox& box) {
   return history < box.lo ? box.lo : (history > box.hi ? box.hi : history);

@@ -49,5 +49,87 @@ TEST(Metrics, TemporalErrorAndFlicker) {
   EXPECT_THROW(compare_sequences(img, std::vector<Image>(2, Image(2, 1))), Error);
 }
 
+// A grey image as three equal channels.
+Image as_rgb(const Image& g) {
+  Image c = Image::with_channels(g.width, g.height, 3);
+  for (int k = 0; k < 3; ++k)
+    c.set_channel(k, g);
+  return c;
+}
+
+Image pattern(int w, int h, float phase) {
+  Image img(w, h);
+  for (size_t p = 0; p < img.size(); ++p)
+    img.data[p] = 0.5f + 0.5f * std::sin(0.7f * p + phase) * (p % 3 == 0 ? 1.0f : 0.01f);
+  return img;
+}
+
+TEST(Metrics, GreyAsOneOrThreeEqualChannelsGivesTheSameFigures) {
+  const std::vector<Image> a = {pattern(9, 5, 0), pattern(9, 5, 1), pattern(9, 5, 2)};
+  const std::vector<Image> b = {pattern(9, 5, 0.1f), pattern(9, 5, 0.9f), pattern(9, 5, 2.3f)};
+  std::vector<Image> a3, b3;
+  for (size_t f = 0; f < a.size(); ++f) {
+    a3.push_back(as_rgb(a[f]));
+    b3.push_back(as_rgb(b[f]));
+  }
+  std::vector<unsigned char> mask(45, 1);
+  mask[3] = mask[17] = 0;
+  using Mask = const std::vector<unsigned char>*;
+  for (Mask m : {Mask(nullptr), Mask(&mask)}) {
+    const ImageMetrics g = compare_images(a[1], b[1], 1.0, m);
+    for (const Image* other :
+         {static_cast<const Image*>(&b3[1]), &b[1]}) {  // 3 against 3, and 3 against a grey 1
+      const ImageMetrics c = compare_images(a3[1], *other, 1.0, m);
+      EXPECT_NEAR(c.rmse, g.rmse, 1e-15);
+      EXPECT_NEAR(c.psnr, g.psnr, 1e-12);
+      EXPECT_NEAR(c.mean_a, g.mean_a, 1e-15);
+      EXPECT_NEAR(c.mean_b, g.mean_b, 1e-15);
+      EXPECT_EQ(c.max_abs, g.max_abs);
+      EXPECT_EQ(c.pixels, g.pixels);
+      ASSERT_EQ(c.channels.size(), 3u);
+      for (const ChannelMetrics& ch : c.channels)
+        EXPECT_NEAR(ch.rmse, g.rmse, 1e-15);
+    }
+    ASSERT_EQ(g.channels.size(), 1u);
+    EXPECT_EQ(g.channels[0].rmse, g.rmse);
+    const SequenceMetrics gs = compare_sequences(a, b, 1.0, m);
+    const SequenceMetrics cs = compare_sequences(a3, b3, 1.0, m);
+    EXPECT_NEAR(cs.rmse, gs.rmse, 1e-15);
+    EXPECT_NEAR(cs.temporal_error, gs.temporal_error, 1e-15);
+    EXPECT_NEAR(cs.flicker_a, gs.flicker_a, 1e-15);
+    EXPECT_NEAR(cs.flicker_b, gs.flicker_b, 1e-15);
+    ASSERT_EQ(cs.channels.size(), 3u);
+    for (const SequenceChannelMetrics& ch : cs.channels) {
+      EXPECT_NEAR(ch.rmse, gs.rmse, 1e-15);
+      EXPECT_NEAR(ch.temporal_error, gs.temporal_error, 1e-15);
+    }
+  }
+}
+
+TEST(Metrics, ColourIsTakenOverAllChannelsAndPerChannel) {
+  // Differences 0.3 in R, 0 in G, -0.4 in B at one pixel of two.
+  Image a = Image::with_channels(2, 1, 3), b = Image::with_channels(2, 1, 3);
+  a.at(0, 0, 0) = 0.3f;
+  b.at(0, 0, 2) = 0.4f;
+  const ImageMetrics m = compare_images(a, b);
+  EXPECT_NEAR(m.rmse, std::sqrt((0.09 + 0.16) / 6), 1e-7);  // over the 3 W H values
+  EXPECT_NEAR(m.max_abs, 0.4, 1e-7);
+  EXPECT_NEAR(m.mean_a, 0.3 / 6, 1e-8);
+  ASSERT_EQ(m.channels.size(), 3u);
+  EXPECT_NEAR(m.channels[0].rmse, std::sqrt(0.09 / 2), 1e-7);
+  EXPECT_EQ(m.channels[1].rmse, 0.0);
+  EXPECT_NEAR(m.channels[2].rmse, std::sqrt(0.16 / 2), 1e-7);
+  EXPECT_NEAR(m.channels[2].mean_b, 0.2, 1e-7);
+  // Temporal error per channel: only G changes, by 0.5, where the reference is still.
+  Image g1 = a;
+  g1.at(1, 0, 1) = 0.5f;
+  const SequenceMetrics s = compare_sequences({a, g1}, {b, b});
+  EXPECT_NEAR(s.temporal_error, std::sqrt(0.25 / 6), 1e-7);
+  EXPECT_NEAR(s.channels[1].temporal_error, std::sqrt(0.25 / 2), 1e-7);
+  EXPECT_EQ(s.channels[0].temporal_error, 0.0);
+  EXPECT_NEAR(s.channels[1].flicker_a, 0.25, 1e-7);
+  EXPECT_THROW(compare_images(a, Image::with_channels(3, 1, 3)), Error);
+}
+
 }  // namespace
 }  // namespace sg

@@ -3,15 +3,11 @@
 // cmake/embed_files.cmake (src/CMakeLists.txt lists them).
 #pragma once
 
-#include <string_view>
 #include <vector>
 
-namespace sg {
+#include "base/embedded_file.h"
 
-struct EmbeddedFile {
-  std::string_view name;   // file name in the study folder
-  std::string_view bytes;  // contents
-};
+namespace sg {
 
 const std::vector<EmbeddedFile>& report_assets();
 

@@ -16,6 +16,13 @@ Picture grey_picture(int width, int height, const std::vector<uint8_t>& grey) {
   return p;
 }
 
+Picture to_picture(int width, int height, int channels, const std::vector<uint8_t>& values) {
+  if (channels == 1) return grey_picture(width, height, values);
+  Picture p(width, height);
+  p.rgb = values;
+  return p;
+}
+
 void write_picture(const std::string& path, const Picture& p) {
   write_png_rgb8(path, p.width, p.height, p.rgb);
 }
@@ -31,7 +38,11 @@ CropBox best_crop(const Image& img, const std::vector<unsigned char>& mask, int 
   for (int j = 0; j < h; ++j) {
     for (int i = 0; i < w; ++i) {
       const size_t k = size_t(j) * w + i;
-      const double v = mask[k] && std::isfinite(img.data[k]) ? std::max(0.0f, img.data[k]) : 0.0;
+      double v = 0;
+      for (int c = 0; c < img.channels && mask[k]; ++c) {
+        const float x = img.data[k * img.channels + c];
+        v += std::isfinite(x) ? std::max(0.0f, x) : 0.0f;
+      }
       S(i + 1, j + 1) = v + S(i, j + 1) + S(i + 1, j) - S(i, j);
     }
   }
@@ -88,6 +99,10 @@ Picture zoomed_crop(const Picture& p, const CropBox& c, int zoom, int cell_w, in
   return out;
 }
 
+Picture enlarged_crop(const Picture& p, const CropBox& c, int zoom) {
+  return zoomed_crop(p, c, zoom, c.width * zoom, c.height * zoom, 0);
+}
+
 void draw_box(Picture& p, const CropBox& b, const uint8_t colour[3]) {
   auto put = [&](int i, int j) {
     if (i >= 0 && i < p.width && j >= 0 && j < p.height) std::copy(colour, colour + 3, p.at(i, j));
@@ -134,8 +149,8 @@ Picture compose_grid(const std::vector<std::vector<Picture>>& cells, int gap, ui
 double error_scale(const Image& a, const Image& b, const std::vector<unsigned char>& mask,
                    double q) {
   std::vector<double> d;
-  for (size_t k = 0; k < a.size(); ++k) {
-    const double x = std::fabs(static_cast<double>(a.data[k]) - b.data[k]);
+  for (size_t k = 0; k < a.pixels(); ++k) {
+    const double x = std::fabs(mean_difference(a, b, k));
     if (mask[k] && x > 0) d.push_back(x);
   }
   if (d.empty()) return 0;

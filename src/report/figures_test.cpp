@@ -85,6 +85,42 @@ TEST(Video, SameBytesEveryTimeAndAClearErrorWithoutFfmpeg) {
         << e.what();
   }
   EXPECT_FALSE(fs::exists(dir / "c.mp4"));
+  // RGB frames: three bytes per pixel, also the same bytes every time.
+  std::vector<std::vector<uint8_t>> rgb;
+  for (const auto& f : frames) {
+    std::vector<uint8_t> px;
+    for (uint8_t v : f)
+      px.insert(px.end(), {v, static_cast<uint8_t>(255 - v), static_cast<uint8_t>(v / 2)});
+    rgb.push_back(px);
+  }
+  encode_h264_rgb((dir / "d.mp4").string(), 33, 17, 30, rgb);
+  encode_h264_rgb((dir / "e.mp4").string(), 33, 17, 30, rgb);
+  EXPECT_EQ(read_file((dir / "d.mp4").string()), read_file((dir / "e.mp4").string()));
+  EXPECT_NE(read_file((dir / "d.mp4").string()), bytes);
+  EXPECT_THROW(encode_h264_rgb((dir / "f.mp4").string(), 33, 17, 30, frames), Error);  // grey
+}
+
+// Colour pictures: display values of three channels become RGB pixels as they are; crops
+// enlarge each pixel to a kCropScale x kCropScale block.
+TEST(Figures, ColourPicturesAndEnlargedCrops) {
+  const std::vector<uint8_t> v = {10, 20, 30, 40, 50, 60};
+  const Picture p = to_picture(2, 1, 3, v);
+  EXPECT_EQ(p.rgb, v);
+  const Picture g = to_picture(2, 1, 1, {7, 9});
+  EXPECT_EQ(g.at(1, 0)[2], 9);
+  const Picture c = enlarged_crop(p, CropBox{1, 0, 1, 1}, 2);
+  ASSERT_EQ(c.width, 2);
+  ASSERT_EQ(c.height, 2);
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 2; ++i)
+      EXPECT_EQ(c.at(i, j)[1], 50);
+  }
+  // A colour image's energy (best_crop) and error scale count every channel.
+  Image a = Image::with_channels(4, 1, 3), b = Image::with_channels(4, 1, 3);
+  a.at(3, 0, 2) = 1.0f;
+  const std::vector<unsigned char> all(4, 1);
+  EXPECT_EQ(best_crop(a, all, 1, 1).x, 3);
+  EXPECT_FLOAT_EQ(error_scale(a, b, all, 1.0), 1.0f / 3);
 }
 
 }  // namespace

@@ -48,6 +48,11 @@ std::string fmt(const char* f, double v) {
 std::string code(const std::string& s) {
   return "<code>" + html_escape(s) + "</code>";
 }
+// An RMSE with the noise-corrected one below it, small.
+std::string rmse_cell(const RegionMetrics& m) {
+  if (!(m.reference_se > 0)) return fmt("%.3g", m.rmse);
+  return fmt("%.3g", m.rmse) + " <small>(" + fmt("%.3g", m.rmse_corrected) + ")</small>";
+}
 
 // Equal-width labels above a picture or video whose columns are equal.
 std::string column_labels(const SceneResult& sc) {
@@ -103,17 +108,84 @@ std::string scene_table(const SceneResult& sc) {
       o << "<td>&ndash;</td><td>&ndash;</td><td>&ndash;</td><td>" << fmt("%.3g", a.flicker)
         << "</td><td>&ndash;</td><td>&ndash;</td><td>&ndash;</td><td>&ndash;</td>";
     } else {
-      o << "<td>" << fmt("%.3g", a.rmse) << "</td><td>" << fmt("%.2f", a.psnr) << "</td><td>"
+      o << "<td>" << rmse_cell(a) << "</td><td>" << fmt("%.2f", a.psnr) << "</td><td>"
         << fmt("%.3g", a.temporal_error) << "</td><td>" << fmt("%.3g", a.flicker) << "</td><td>"
-        << fmt("%.3g", n.rmse) << "</td><td>" << fmt("%.3g", n.temporal_error) << "</td><td>"
-        << fmt("%.3g", f.rmse) << "</td><td>" << fmt("%.3g", f.temporal_error) << "</td>";
+        << rmse_cell(n) << "</td><td>" << fmt("%.3g", n.temporal_error) << "</td><td>"
+        << rmse_cell(f) << "</td><td>" << fmt("%.3g", f.temporal_error) << "</td>";
     }
     o << "<td>" << fmt("%.3g", v.ms_per_frame) << "</td></tr>\n";
   };
   row(sc.reference, true);
   for (const auto& v : sc.methods)
     row(v, false);
+  o << "</tbody></table>\n<p>" << html_escape(reference_noise_text(sc, "'")) << "</p>\n";
+  return o.str();
+}
+
+// Colour: RMSE and temporal error of each channel, whole image.
+std::string channel_table(const SceneResult& sc) {
+  std::ostringstream o;
+  o << "<table class=\"num channels\"><thead><tr><th rowspan=\"2\">variant</th><th "
+       "colspan=\"3\">RMSE</th><th colspan=\"3\">temporal error</th></tr><tr>";
+  for (int k = 0; k < 2; ++k) {
+    for (const char* c : kChannelNames)
+      o << "<th>" << c << "</th>";
+  }
+  o << "</tr></thead><tbody>\n";
+  for (const auto& v : sc.methods) {
+    const auto& ch = v.at(Region::image).channels;
+    if (ch.size() != 3) continue;
+    o << "<tr><th>" << code(v.label) << "</th>";
+    for (const auto& c : ch)
+      o << "<td>" << fmt("%.3g", c.rmse) << "</td>";
+    for (const auto& c : ch)
+      o << "<td>" << fmt("%.3g", c.temporal_error) << "</td>";
+    o << "</tr>\n";
+  }
   o << "</tbody></table>\n";
+  return o.str();
+}
+
+// Every column's near and far crops at kCropScale:1 pixels, shown at their own size.
+std::string crops_table(const SceneResult& sc) {
+  if (sc.reference.near_crop_picture.empty()) return "";
+  std::ostringstream o;
+  o << "<h3>Crops at " << kCropScale << ":1</h3>\n<p>Frame " << sc.shown_frame
+    << ", each pixel shown as " << kCropScale << "&times;" << kCropScale
+    << " screen pixels (never shrunk): the near crop (" << sc.near_crop.width << "&times;"
+    << sc.near_crop.height << " pixels at " << sc.near_crop.x << ", " << sc.near_crop.y
+    << ") and the far crop (at " << sc.far_crop.x << ", " << sc.far_crop.y
+    << "), where the reference's glitter is brightest.</p>\n<div class=\"crops\"><table>"
+       "<thead><tr><th>variant</th><th>near</th><th>far</th></tr></thead><tbody>\n";
+  auto row = [&](const VariantResult& v, const std::string& label) {
+    const int w = sc.near_crop.width * kCropScale, h = sc.near_crop.height * kCropScale;
+    o << "<tr><th>" << label << "</th>";
+    for (const std::string* pic : {&v.near_crop_picture, &v.far_crop_picture}) {
+      o << "<td><img class=\"crop\" src=\"" << html_escape(*pic) << "\" width=\"" << w
+        << "\" height=\"" << h << "\" alt=\"" << html_escape(v.label) << "\"></td>";
+    }
+    o << "</tr>\n";
+  };
+  row(sc.reference, "reference");
+  for (const auto& v : sc.methods) {
+    if (!v.near_crop_picture.empty()) row(v, code(v.label));
+  }
+  o << "</tbody></table></div>\n";
+  return o.str();
+}
+
+// The flicker plot: one pixel's value over the frames, reference against methods.
+std::string flicker_section(const SceneResult& sc) {
+  if (sc.flicker_pixel.x < 0 || sc.reference.trace.empty()) return "";
+  std::ostringstream o;
+  o << "<h3>Flicker at one pixel</h3>\n<p>The value of pixel (" << sc.flicker_pixel.x << ", "
+    << sc.flicker_pixel.y << ") in each frame"
+    << (sc.channels == 3 ? " (the mean of its channels)" : "")
+    << ", linear: the pixel of the water where " << code(sc.flicker_pixel.chosen_by)
+    << " has its largest temporal error. The reference is the black line; a method that "
+       "flickers jumps where it does not.</p>\n"
+    << "<div class=\"chart flicker\"><canvas id=\"chart-flicker-" << file_slug(sc.name)
+    << "\" data-scene=\"" << html_escape(sc.name) << "\"></canvas></div>\n";
   return o.str();
 }
 
@@ -136,6 +208,7 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
     o << "<div class=\"chart\"><canvas id=\"chart-cost-" << file_slug(sc.name) << "\" data-scene=\""
       << html_escape(sc.name) << "\"></canvas></div>\n";
   }
+  if (sc.channels == 3) o << channel_table(sc);
   if (!sc.grid.empty()) {
     o << "<h3>Frame " << sc.shown_frame << "</h3>\n<figure class=\"grid\">" << column_labels(sc)
       << "<img src=\"" << html_escape(sc.grid) << "\" alt=\"" << html_escape(sc.name)
@@ -147,6 +220,8 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
       << fmt("%.3g", sc.error_range)
       << " at the ends of the scale shown in the reference column).</figcaption></figure>\n";
   }
+  o << crops_table(sc);
+  o << flicker_section(sc);
   if (!sc.reference.picture.empty() && !sc.methods.empty()) {
     o << "<h3>Reference against a method</h3>\n<div class=\"slider\"><label>method <select>";
     for (const auto& v : sc.methods) {
@@ -216,6 +291,8 @@ std::string report_html(const StudyResults& r) {
        "over pixels and frame pairs of (I<sub>f</sub> &minus; I<sub>f&minus;1</sub>) &minus; "
        "(R<sub>f</sub> &minus; R<sub>f&minus;1</sub>); flicker = mean |I<sub>f</sub> &minus; "
        "I<sub>f&minus;1</sub>|.</li>\n"
+    << "<li>Colour scenes: every figure is taken over the three channels together (RMSE "
+       "over 3 W H values per frame); the per-channel table gives each channel alone.</li>\n"
     << "<li>Near and far: the pixels whose centre ray meets the water, sorted by the "
        "distance from the camera to that point; the nearer half and the farther half.</li>\n"
     << "<li>Pictures and videos: value &times; 2<sup>" << fmt("%g", s.exposure)

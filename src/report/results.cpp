@@ -30,12 +30,23 @@ double number(const json& j) {
 }
 
 json to_json(const RegionMetrics& m) {
-  return {{"rmse", number(m.rmse)},
-          {"psnr", number(m.psnr)},
-          {"temporal_error", number(m.temporal_error)},
-          {"flicker", number(m.flicker)},
-          {"flicker_reference", number(m.flicker_reference)},
-          {"pixels", m.pixels}};
+  json j = {{"rmse", number(m.rmse)},
+            {"psnr", number(m.psnr)},
+            {"temporal_error", number(m.temporal_error)},
+            {"flicker", number(m.flicker)},
+            {"flicker_reference", number(m.flicker_reference)},
+            {"pixels", m.pixels},
+            {"reference_se", number(m.reference_se)},
+            {"rmse_corrected", number(m.rmse_corrected)}};
+  if (!m.channels.empty()) {  // colour: {"R": {...}, "G": {...}, "B": {...}}
+    j["channels"] = json::object();
+    for (size_t c = 0; c < m.channels.size() && c < kChannelNames.size(); ++c) {
+      j["channels"][kChannelNames[c]] = {{"rmse", number(m.channels[c].rmse)},
+                                         {"temporal_error", number(m.channels[c].temporal_error)},
+                                         {"flicker", number(m.channels[c].flicker)}};
+    }
+  }
+  return j;
 }
 RegionMetrics region_from_json(const json& j) {
   RegionMetrics m;
@@ -45,6 +56,17 @@ RegionMetrics region_from_json(const json& j) {
   m.flicker = number(j.at("flicker"));
   m.flicker_reference = number(j.at("flicker_reference"));
   m.pixels = j.at("pixels").get<long>();
+  // Files from before the reference measured its noise: unknown noise, the RMSE as it is.
+  m.reference_se = j.contains("reference_se") ? number(j.at("reference_se"))
+                                              : std::numeric_limits<double>::quiet_NaN();
+  m.rmse_corrected = j.contains("rmse_corrected") ? number(j.at("rmse_corrected")) : m.rmse;
+  if (j.contains("channels")) {
+    for (const char* c : kChannelNames) {
+      const json& x = j.at("channels").at(c);
+      m.channels.push_back(
+          {number(x.at("rmse")), number(x.at("temporal_error")), number(x.at("flicker"))});
+    }
+  }
   return m;
 }
 
@@ -61,7 +83,10 @@ json to_json(const VariantResult& v) {
           {"frames_cached", v.frames_cached},
           {"regions", regions},
           {"picture", v.picture},
-          {"error_map", v.error_map}};
+          {"error_map", v.error_map},
+          {"near_crop_picture", v.near_crop_picture},
+          {"far_crop_picture", v.far_crop_picture},
+          {"trace", v.trace}};
 }
 VariantResult variant_from_json(const json& j) {
   VariantResult v;
@@ -76,6 +101,10 @@ VariantResult variant_from_json(const json& j) {
     v.regions[k] = region_from_json(j.at("regions").at(kRegionNames[k]));
   v.picture = j.at("picture").get<std::string>();
   v.error_map = j.at("error_map").get<std::string>();
+  // Keys added with colour and the report's crops: optional, so older files still read.
+  v.near_crop_picture = j.value("near_crop_picture", std::string());
+  v.far_crop_picture = j.value("far_crop_picture", std::string());
+  if (j.contains("trace")) v.trace = j.at("trace").get<std::vector<double>>();
   return v;
 }
 
@@ -161,6 +190,7 @@ std::string results_to_json(const StudyResults& r) {
                            {"near_pixels", sc.near_pixels},
                            {"far_pixels", sc.far_pixels},
                            {"split_distance", number(sc.split_distance)},
+                           {"channels", sc.channels},
                            {"near_crop", to_json(sc.near_crop)},
                            {"far_crop", to_json(sc.far_crop)},
                            {"error_range", number(sc.error_range)},
@@ -168,8 +198,14 @@ std::string results_to_json(const StudyResults& r) {
                            {"methods", methods},
                            {"budgets", budgets},
                            {"equal_cost", sc.equal_cost ? to_json(*sc.equal_cost) : json(nullptr)},
+                           {"flicker_pixel", sc.flicker_pixel.x < 0
+                                                 ? json(nullptr)
+                                                 : json{{"x", sc.flicker_pixel.x},
+                                                        {"y", sc.flicker_pixel.y},
+                                                        {"chosen_by", sc.flicker_pixel.chosen_by}}},
                            {"grid", sc.grid},
-                           {"video", sc.video}});
+                           {"video", sc.video},
+                           {"crops", sc.crops}});
   }
   return j.dump(1) + "\n";
 }
@@ -206,6 +242,7 @@ StudyResults results_from_json(const std::string& text, const std::string& name)
       sc.near_pixels = sj.at("near_pixels").get<long>();
       sc.far_pixels = sj.at("far_pixels").get<long>();
       sc.split_distance = number(sj.at("split_distance"));
+      sc.channels = sj.value("channels", 1);
       sc.near_crop = crop_from_json(sj.at("near_crop"));
       sc.far_crop = crop_from_json(sj.at("far_crop"));
       sc.error_range = number(sj.at("error_range"));
@@ -217,6 +254,12 @@ StudyResults results_from_json(const std::string& text, const std::string& name)
       if (!sj.at("equal_cost").is_null()) sc.equal_cost = equal_cost_from_json(sj.at("equal_cost"));
       sc.grid = sj.at("grid").get<std::string>();
       sc.video = sj.at("video").get<std::string>();
+      sc.crops = sj.value("crops", std::string());
+      if (sj.contains("flicker_pixel") && !sj.at("flicker_pixel").is_null()) {
+        const json& fp = sj.at("flicker_pixel");
+        sc.flicker_pixel = {fp.at("x").get<int>(), fp.at("y").get<int>(),
+                            fp.at("chosen_by").get<std::string>()};
+      }
       r.scenes.push_back(std::move(sc));
     }
   } catch (const json::exception& e) {
@@ -260,7 +303,12 @@ std::string results_to_csv(const StudyResults& r) {
           << kRegionNames[k] << "," << g17(m.rmse) << "," << g17(m.psnr) << ","
           << g17(m.temporal_error) << "," << g17(m.flicker) << "," << g17(m.flicker_reference)
           << "," << g17(v.ms_per_frame) << "," << g17(v.spp) << "," << m.pixels << ","
-          << v.frames_rendered << "," << v.frames_cached << "," << (v.stateful ? 1 : 0) << "\n";
+          << v.frames_rendered << "," << v.frames_cached << "," << (v.stateful ? 1 : 0);
+      for (int c = 0; c < 3; ++c)
+        out << "," << (m.channels.size() == 3 ? g17(m.channels[c].rmse) : "");
+      for (int c = 0; c < 3; ++c)
+        out << "," << (m.channels.size() == 3 ? g17(m.channels[c].temporal_error) : "");
+      out << "\n";
     }
   };
   for (const SceneResult& sc : r.scenes) {
@@ -333,8 +381,41 @@ std::string fmt(const char* f, double v) {
 std::string md_code(const std::string& s) {
   return "`" + s + "`";
 }
+// An RMSE with the noise-corrected one in brackets (the raw one alone when the
+// reference's noise is unknown).
+std::string rmse_cell(const RegionMetrics& m) {
+  if (!(m.reference_se > 0)) return fmt("%.3g", m.rmse);
+  return fmt("%.3g", m.rmse) + " (" + fmt("%.3g", m.rmse_corrected) + ")";
+}
 
 }  // namespace
+
+std::string reference_noise_text(const SceneResult& sc, const std::string& q) {
+  const RegionMetrics &a = sc.reference.at(Region::image), &n = sc.reference.at(Region::near),
+                      &f = sc.reference.at(Region::far);
+  if (!(a.reference_se >= 0)) {
+    return "The reference does not measure its noise: the RMSEs are against it as it is.";
+  }
+  std::string t = "The reference's standard error (its expected RMSE against the exact "
+                  "image): " +
+                  fmt("%.3g", a.reference_se) + " (near " + fmt("%.3g", n.reference_se) +
+                  ", far " + fmt("%.3g", f.reference_se) +
+                  "). RMSEs are against the reference, the noise-corrected RMSE "
+                  "sqrt(max(0, RMSE^2 - se^2)) in brackets.";
+  // Methods whose RMSEs differ by less than the reference's noise.
+  std::string close;
+  for (size_t x = 0; x < sc.methods.size(); ++x) {
+    for (size_t y = x + 1; y < sc.methods.size(); ++y) {
+      const double d = sc.methods[x].at(Region::image).rmse - sc.methods[y].at(Region::image).rmse;
+      if (std::abs(d) < a.reference_se) {
+        close += (close.empty() ? "" : ", ") + q + sc.methods[x].label + q + " and " + q +
+                 sc.methods[y].label + q;
+      }
+    }
+  }
+  if (!close.empty()) t += " Differences smaller than the reference's noise: " + close + ".";
+  return t;
+}
 
 std::string results_to_markdown(const StudyResults& r, const std::string& prefix) {
   const StudySettings& s = r.settings;
@@ -392,24 +473,69 @@ std::string results_to_markdown(const StudyResults& r, const std::string& prefix
       << fmt("%.4g", sc.reference.at(Region::near).flicker) << ", far "
       << fmt("%.4g", sc.reference.at(Region::far).flicker) << "), "
       << fmt("%.4g", sc.reference.ms_per_frame) << " ms per frame.\n\n";
-    o << "| variant | RMSE | PSNR (dB) | temporal error | flicker | near RMSE | far RMSE | near "
-         "temporal | far temporal | ms/frame |\n";
+    o << reference_noise_text(sc, "`") << "\n\n";
+    o << "| variant | RMSE (corrected) | PSNR (dB) | temporal error | flicker | near RMSE "
+         "(corrected) | far RMSE (corrected) | near temporal | far temporal | ms/frame |\n";
     o << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& v : sc.methods) {
       const RegionMetrics &a = v.at(Region::image), &n = v.at(Region::near), &f = v.at(Region::far);
-      o << "| " << md_code(v.label) << " | " << fmt("%.3g", a.rmse) << " | " << fmt("%.2f", a.psnr)
+      o << "| " << md_code(v.label) << " | " << rmse_cell(a) << " | " << fmt("%.2f", a.psnr)
         << " | " << fmt("%.3g", a.temporal_error) << " | " << fmt("%.3g", a.flicker) << " | "
-        << fmt("%.3g", n.rmse) << " | " << fmt("%.3g", f.rmse) << " | "
+        << rmse_cell(n) << " | " << rmse_cell(f) << " | "
         << fmt("%.3g", n.temporal_error) << " | " << fmt("%.3g", f.temporal_error) << " | "
         << fmt("%.3g", v.ms_per_frame) << " |\n";
     }
+    if (sc.channels == 3) {
+      o << "\nPer channel (whole image):\n\n| variant | RMSE R | RMSE G | RMSE B | temporal R | "
+           "temporal G | temporal B |\n|---|---:|---:|---:|---:|---:|---:|\n";
+      for (const auto& v : sc.methods) {
+        const auto& ch = v.at(Region::image).channels;
+        if (ch.size() != 3) continue;
+        o << "| " << md_code(v.label) << " |";
+        for (const auto& c : ch)
+          o << " " << fmt("%.3g", c.rmse) << " |";
+        for (const auto& c : ch)
+          o << " " << fmt("%.3g", c.temporal_error) << " |";
+        o << "\n";
+      }
+    }
+    if (!sc.crops.empty()) {
+      o << "\n![" << sc.name << ": crops at " << kCropScale << ":1](" << prefix << sc.crops
+        << ")\n\nCrops at " << kCropScale << ":1 pixels, frame " << sc.shown_frame
+        << ": the near crop (left) and the far crop (right) of each column, one row each: "
+           "reference";
+      for (const auto& v : sc.methods)
+        o << ", " << md_code(v.label);
+      o << ".\n";
+    }
+    if (sc.flicker_pixel.x >= 0 && !sc.reference.trace.empty()) {
+      o << "\nFlicker at pixel (" << sc.flicker_pixel.x << ", " << sc.flicker_pixel.y << "), where "
+        << md_code(sc.flicker_pixel.chosen_by)
+        << " has its largest temporal error on the water: its linear value"
+        << (sc.channels == 3 ? " (mean of the channels)" : "")
+        << " in each frame.\n\n| frame | reference |";
+      for (const auto& v : sc.methods)
+        o << " " << md_code(v.label) << " |";
+      o << "\n|---:|---:|";
+      for (size_t k = 0; k < sc.methods.size(); ++k)
+        o << "---:|";
+      o << "\n";
+      for (size_t f = 0; f < sc.reference.trace.size(); ++f) {
+        o << "| " << s.first_frame + static_cast<int>(f) << " | "
+          << fmt("%.4g", sc.reference.trace[f]) << " |";
+        for (const auto& v : sc.methods)
+          o << " " << (f < v.trace.size() ? fmt("%.4g", v.trace[f]) : "-") << " |";
+        o << "\n";
+      }
+    }
     if (!sc.budgets.empty()) {
-      o << "\nThe supersampling curve:\n\n| budget | samples per pixel | RMSE | near RMSE | far "
-           "RMSE | temporal error | ms/frame |\n|---|---:|---:|---:|---:|---:|---:|\n";
+      o << "\nThe supersampling curve (RMSE, the noise-corrected RMSE in brackets):\n\n| budget "
+           "| samples per pixel | RMSE | near RMSE | far RMSE | temporal error | ms/frame "
+           "|\n|---|---:|---:|---:|---:|---:|---:|\n";
       for (const auto& b : sc.budgets) {
         o << "| " << md_code(b.label) << " | " << fmt("%g", b.spp) << " | "
-          << fmt("%.3g", b.at(Region::image).rmse) << " | " << fmt("%.3g", b.at(Region::near).rmse)
-          << " | " << fmt("%.3g", b.at(Region::far).rmse) << " | "
+          << rmse_cell(b.at(Region::image)) << " | " << rmse_cell(b.at(Region::near)) << " | "
+          << rmse_cell(b.at(Region::far)) << " | "
           << fmt("%.3g", b.at(Region::image).temporal_error) << " | " << fmt("%.3g", b.ms_per_frame)
           << " |\n";
       }
@@ -434,7 +560,9 @@ std::string results_summary_markdown(const StudyResults& r, const std::string& p
          "its difference.*\n\n";
   }
   o << "RMSE (temporal error) on linear values, " << s.width << "x" << s.height << ", frames "
-    << s.first_frame << "-" << s.last_frame << ", reference " << md_code(s.reference) << ":\n\n";
+    << s.first_frame << "-" << s.last_frame << ", reference " << md_code(s.reference)
+    << "; where the reference measures its noise, the noise-corrected RMSE follows the RMSE "
+       "after a slash:\n\n";
   o << "| variant |";
   for (const auto& sc : r.scenes)
     o << " " << sc.name << " |";
@@ -450,8 +578,10 @@ std::string results_summary_markdown(const StudyResults& r, const std::string& p
         if (m.label == label) v = &m;
       }
       if (v) {
-        o << " " << fmt("%.3g", v->at(Region::image).rmse) << " ("
-          << fmt("%.3g", v->at(Region::image).temporal_error) << ") |";
+        const RegionMetrics& m = v->at(Region::image);
+        o << " " << fmt("%.3g", m.rmse);
+        if (m.reference_se > 0) o << " / " << fmt("%.3g", m.rmse_corrected);
+        o << " (" << fmt("%.3g", m.temporal_error) << ") |";
       } else {
         o << " - |";
       }

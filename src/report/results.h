@@ -20,13 +20,24 @@ namespace sg {
 enum class Region { image = 0, water = 1, near = 2, far = 3 };
 inline constexpr std::array<const char*, 4> kRegionNames = {"image", "water", "near", "far"};
 
+// One channel's figures of a colour study (R, G or B).
+struct ChannelFigures {
+  double rmse = 0, temporal_error = 0, flicker = 0;
+};
+inline constexpr std::array<const char*, 3> kChannelNames = {"R", "G", "B"};
+
 struct RegionMetrics {
-  double rmse = 0;               // over all pixels of the region in all frames
+  double rmse = 0;               // over all values (pixels x channels) of the region, all frames
   double psnr = 0;               // 20 log10(1 / rmse); +inf when rmse = 0
   double temporal_error = 0;     // metrics.h: frame-to-frame change the reference lacks
   double flicker = 0;            // mean |I_f - I_{f-1}| of the variant
   double flicker_reference = 0;  // the same of the reference
   long pixels = 0;               // per frame
+  // The reference's standard error over the same values (NaN when the reference does not
+  // measure its noise) and the RMSE with it taken out, sqrt(max(0, rmse^2 - se^2)).
+  double reference_se = 0;
+  double rmse_corrected = 0;
+  std::vector<ChannelFigures> channels;  // R, G, B of a colour scene; empty for a grey one
 };
 
 struct VariantResult {
@@ -35,9 +46,12 @@ struct VariantResult {
   bool stateful = false;
   double spp = 0;  // samples per pixel for reference/supersample, 0 otherwise
   double ms_per_frame = 0;
-  int frames_rendered = 0, frames_cached = 0;  // in this run
-  std::array<RegionMetrics, 4> regions{};      // indexed by Region
-  std::string picture, error_map;              // figure files relative to the study folder
+  int frames_rendered = 0, frames_cached = 0;       // in this run
+  std::array<RegionMetrics, 4> regions{};           // indexed by Region
+  std::string picture, error_map;                   // figure files relative to the study folder
+  std::string near_crop_picture, far_crop_picture;  // the crops at kCropScale:1 pixels
+  // The flicker pixel's value (mean over the channels) in each frame, when the study has one.
+  std::vector<double> trace;
 
   const RegionMetrics& at(Region r) const { return regions[static_cast<int>(r)]; }
   RegionMetrics& at(Region r) { return regions[static_cast<int>(r)]; }
@@ -54,18 +68,32 @@ struct CropBox {
   int x = 0, y = 0, width = 0, height = 0;
 };
 
+// Screen pixels per image pixel of the report's crops: glints are a pixel or two wide, so
+// the crops are shown enlarged, never shrunk.
+inline constexpr int kCropScale = 2;
+
+// The pixel whose value over time the report plots: where the variant `chosen_by` (point
+// sampling when the study has it) has its largest temporal error against the reference.
+struct FlickerPixel {
+  int x = -1, y = -1;  // -1: none (a study of one frame)
+  std::string chosen_by;
+};
+
 struct SceneResult {
   std::string name, file;
   int shown_frame = 0;  // the frame of the pictures
   long water_pixels = 0, near_pixels = 0, far_pixels = 0;
   double split_distance = 0;
+  int channels = 1;  // of the scene's images: 1 grey, 3 colour
   CropBox near_crop, far_crop;
   double error_range = 0;  // |difference| at the ends of the error maps' colour scale
   VariantResult reference;
   std::vector<VariantResult> methods;
   std::vector<VariantResult> budgets;  // the supersampling curve, increasing spp
   std::optional<EqualCost> equal_cost;
+  FlickerPixel flicker_pixel;
   std::string grid, video;  // figure files relative to the study folder ("" if none)
+  std::string crops;        // every column's near and far crops at kCropScale:1, one picture
 };
 
 struct StudySettings {
@@ -91,10 +119,28 @@ StudyResults results_from_json(const std::string& text, const std::string& name_
 // CSV (RFC 4180 quoting): header, then one row per scene x variant (reference, method,
 // budget) x region. Numbers round-trip (17 significant digits).
 std::string results_to_csv(const StudyResults& r);
-inline constexpr std::array<const char*, 15> kCsvColumns = {
-    "scene",           "kind",          "variant",           "region",       "rmse", "psnr",
-    "temporal_error",  "flicker",       "flicker_reference", "ms_per_frame", "spp",  "pixels",
-    "frames_rendered", "frames_cached", "stateful"};
+// The per-channel columns (rmse_r ... temporal_error_b) are empty for a grey scene.
+inline constexpr std::array<const char*, 21> kCsvColumns = {"scene",
+                                                            "kind",
+                                                            "variant",
+                                                            "region",
+                                                            "rmse",
+                                                            "psnr",
+                                                            "temporal_error",
+                                                            "flicker",
+                                                            "flicker_reference",
+                                                            "ms_per_frame",
+                                                            "spp",
+                                                            "pixels",
+                                                            "frames_rendered",
+                                                            "frames_cached",
+                                                            "stateful",
+                                                            "rmse_r",
+                                                            "rmse_g",
+                                                            "rmse_b",
+                                                            "temporal_error_r",
+                                                            "temporal_error_g",
+                                                            "temporal_error_b"};
 // Parses CSV text into rows of fields (quotes resolved); throws sg::Error on bad quoting.
 std::vector<std::vector<std::string>> parse_csv(const std::string& text);
 
@@ -120,5 +166,10 @@ std::string results_summary_markdown(const StudyResults& r, const std::string& p
 std::string replace_marked_section(const std::string& text, const std::string& begin,
                                    const std::string& end, const std::string& content,
                                    const std::string& name_for_errors);
+
+// The sentence on a scene's reference noise: its standard error (whole image, near, far),
+// which figures are corrected for it, and the methods whose RMSEs differ by less than it
+// (labels quoted with `quote`).
+std::string reference_noise_text(const SceneResult& sc, const std::string& quote);
 
 }  // namespace sg

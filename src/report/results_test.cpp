@@ -2,7 +2,10 @@
 // the Markdown and the README section are generated from them.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
+#include <functional>
 #include <set>
 
 #include "base/error.h"
@@ -79,9 +82,25 @@ StudyResults sample() {
     sc.equal_cost = e;
     sc.grid = std::string("img/") + name + "-grid.png";
     sc.video = std::string("video/") + name + ".mp4";
+    sc.crops = std::string("img/") + name + "-crops.png";
+    sc.flicker_pixel = {7, 3, "point"};
+    for (VariantResult* v : {&sc.reference, &sc.methods[0], &sc.methods[1], &sc.methods[2]}) {
+      v->near_crop_picture = "img/x/" + v->name + "-near.png";
+      v->far_crop_picture = "img/x/" + v->name + "-far.png";
+      v->trace = {0.125, 0.5 + v->ms_per_frame, 1.0 / 3.0, 0.0};
+    }
     r.scenes.push_back(sc);
   }
   r.scenes[1].equal_cost.reset();
+  // The second scene is in colour: per-channel figures.
+  SceneResult& c = r.scenes[1];
+  c.channels = 3;
+  for (VariantResult* v : {&c.reference, &c.methods[0], &c.methods[1], &c.methods[2]}) {
+    for (RegionMetrics& m : v->regions) {
+      for (int k = 0; k < 3; ++k)
+        m.channels.push_back({m.rmse * (k + 1) / 3.0, m.temporal_error / (k + 2), m.flicker * k});
+    }
+  }
   return r;
 }
 
@@ -103,6 +122,17 @@ void expect_same(const VariantResult& a, const VariantResult& b) {
   }
   EXPECT_EQ(a.picture, b.picture);
   EXPECT_EQ(a.error_map, b.error_map);
+  EXPECT_EQ(a.near_crop_picture, b.near_crop_picture);
+  EXPECT_EQ(a.far_crop_picture, b.far_crop_picture);
+  EXPECT_EQ(a.trace, b.trace);
+  for (int k = 0; k < 4; ++k) {
+    ASSERT_EQ(a.regions[k].channels.size(), b.regions[k].channels.size());
+    for (size_t c = 0; c < a.regions[k].channels.size(); ++c) {
+      EXPECT_EQ(a.regions[k].channels[c].rmse, b.regions[k].channels[c].rmse);
+      EXPECT_EQ(a.regions[k].channels[c].temporal_error, b.regions[k].channels[c].temporal_error);
+      EXPECT_EQ(a.regions[k].channels[c].flicker, b.regions[k].channels[c].flicker);
+    }
+  }
 }
 
 TEST(Results, JsonRoundTrips) {
@@ -124,12 +154,47 @@ TEST(Results, JsonRoundTrips) {
       expect_same(x.methods[m], y.methods[m]);
     ASSERT_EQ(x.budgets.size(), y.budgets.size());
     EXPECT_EQ(x.equal_cost.has_value(), y.equal_cost.has_value());
+    EXPECT_EQ(x.channels, y.channels);
+    EXPECT_EQ(x.crops, y.crops);
+    EXPECT_EQ(x.flicker_pixel.x, y.flicker_pixel.x);
+    EXPECT_EQ(x.flicker_pixel.y, y.flicker_pixel.y);
+    EXPECT_EQ(x.flicker_pixel.chosen_by, y.flicker_pixel.chosen_by);
   }
+  EXPECT_EQ(b.scenes[1].methods[0].regions[2].channels.size(), 3u);
+  EXPECT_TRUE(b.scenes[0].methods[0].regions[2].channels.empty());
   EXPECT_TRUE(std::isinf(b.scenes[0].reference.regions[0].psnr));
   EXPECT_EQ(b.scenes[0].equal_cost->cost.spp, 2.5);
   EXPECT_EQ(b.scenes[0].equal_cost->rmse.status, CurveStatus::above);
   EXPECT_THROW(results_from_json("{}", "x.json"), Error);
   EXPECT_THROW(results_from_json("not json", "x.json"), Error);
+}
+
+// A results.json written before colour, crops and the flicker plot still reads.
+TEST(Results, FilesWithoutTheColourKeysRead) {
+  StudyResults r = sample();
+  r.scenes.pop_back();  // the grey scene only
+  nlohmann::json j = nlohmann::json::parse(results_to_json(r));
+  std::function<void(nlohmann::json&)> strip = [&](nlohmann::json& x) {
+    if (x.is_object()) {
+      for (const char* key :
+           {"channels", "crops", "flicker_pixel", "trace", "near_crop_picture", "far_crop_picture"})
+        x.erase(key);
+    }
+    if (x.is_structured()) {
+      for (auto& y : x)
+        strip(y);
+    }
+  };
+  strip(j);
+  const std::string text = j.dump(1);
+  for (const char* key : {"channels", "crops", "flicker_pixel", "trace", "crop_picture"})
+    ASSERT_EQ(text.find(key), std::string::npos) << key;
+  const StudyResults b = results_from_json(text, "old.json");
+  EXPECT_EQ(b.scenes[0].channels, 1);
+  EXPECT_TRUE(b.scenes[0].crops.empty());
+  EXPECT_EQ(b.scenes[0].flicker_pixel.x, -1);
+  EXPECT_TRUE(b.scenes[0].methods[0].trace.empty());
+  EXPECT_EQ(b.scenes[0].methods[0].regions[0].rmse, r.scenes[0].methods[0].regions[0].rmse);
 }
 
 TEST(Results, CsvHoldsEverySceneVariantRegionAndMetric) {
@@ -168,6 +233,16 @@ TEST(Results, CsvHoldsEverySceneVariantRegionAndMetric) {
     EXPECT_EQ(std::stod(row[8]), m.flicker_reference);
     EXPECT_EQ(std::stod(row[9]), v->ms_per_frame);
     EXPECT_EQ(std::stol(row[11]), m.pixels);
+    // Per-channel columns: numbers for the colour scene, empty for the grey one.
+    for (int c = 0; c < 3; ++c) {
+      if (m.channels.empty()) {
+        EXPECT_EQ(row[15 + c], "");
+        EXPECT_EQ(row[18 + c], "");
+      } else {
+        EXPECT_EQ(std::stod(row[15 + c]), m.channels[c].rmse);
+        EXPECT_EQ(std::stod(row[18 + c]), m.channels[c].temporal_error);
+      }
+    }
   }
   for (const auto& sc : r.scenes) {
     for (const auto& v : sc.methods) {
@@ -188,6 +263,12 @@ TEST(Results, MarkdownAndReadmeSection) {
   EXPECT_NE(md.find("`supersample --samples 2x2x1`"), std::string::npos);
   EXPECT_NE(md.find("| No AA | `point` | 0.0797 (1.00) |"), std::string::npos);
   EXPECT_NE(md.find("reaches RMSE 0.03"), std::string::npos);
+  // Crops, the flicker table (one row per frame), the colour scene's per-channel table.
+  EXPECT_NE(md.find("](../out/img/high-crops.png)"), std::string::npos);
+  EXPECT_NE(md.find("Flicker at pixel (7, 3), where `point`"), std::string::npos);
+  EXPECT_NE(md.find("| 3 | 0.8333 | 1.833 | 2.833 | 3.833 |"), std::string::npos);
+  EXPECT_EQ(md.find("Per channel"), md.rfind("Per channel"));  // the colour scene only
+  EXPECT_GT(md.find("Per channel"), md.find("### high"));
 
   const std::string readme = "intro\n<!-- demo:begin -->\nold\nold\n<!-- demo:end -->\nrest\n";
   const std::string filled = replace_marked_section(readme, "<!-- demo:begin -->",

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -12,6 +13,7 @@
 #include "engine/render.h"
 #include "image/display.h"
 #include "metrics/metrics.h"
+#include "methods/reference.h"
 #include "report/cache.h"
 #include "report/figures.h"
 #include "report/html.h"
@@ -65,6 +67,9 @@ double cost_weight(const StudyVariant& v) {
 
 struct Sequence {
   std::vector<Image> frames;
+  // A method that measures its own noise (reference): each frame's per-pixel variance of
+  // its estimate, cached beside the frame (variance_key); empty for other methods.
+  std::vector<Image> variance;
   double ms_per_frame = 0;
   int rendered = 0, cached = 0;
   bool stateful = false;
@@ -124,7 +129,7 @@ class Study {
     if (progress_) progress_(std::clamp(fraction, 0.0, 1.0), what);
   }
   Sequence obtain(const SceneModel& model, const StudyVariant& v, const std::string& what);
-  VariantResult measure(const StudyVariant& v, const Sequence& s, const std::vector<Image>& ref,
+  VariantResult measure(const StudyVariant& v, const Sequence& s, const Sequence& ref,
                         const WaterRegions& w) const;
   SceneResult run_scene(const StudyScene& sc, const std::string& scene_slug);
 
@@ -139,17 +144,25 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   std::unique_ptr<Method> method = build(v);
   Sequence s;
   s.stateful = method->stateful();
+  const bool noise = method->pixel_variance() != nullptr;
   const int a = c_.first_frame, n = c_.last_frame - c_.first_frame + 1;
   const std::vector<std::string> k = keys(model.scene, label, s.stateful);
   s.frames.resize(n);
+  if (noise) s.variance.resize(n);
   std::vector<double> ms(n, 0.0);
   std::vector<bool> have(n, false);
   for (int q = 0; q < n; ++q) {
     auto f = cache_->load(label, k[q]);
-    if (f && f->image.width == model.width() && f->image.height == model.height()) {
+    if (f && f->image.width == model.width() && f->image.height == model.height() &&
+        f->image.channels == (model.scene.grey() ? 1 : 3)) {
       s.frames[q] = std::move(f->image);
       ms[q] = f->ms;
       have[q] = true;
+    }
+    if (have[q] && noise) {  // a frame without its variance is rendered again
+      auto v = cache_->load(label, variance_key(k[q]));
+      have[q] = v && v->image.same_shape(s.frames[q]);
+      if (have[q]) s.variance[q] = std::move(v->image);
     }
   }
   const int missing = static_cast<int>(std::count(have.begin(), have.end(), false));
@@ -163,6 +176,10 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   auto keep = [&](int f, const Image& img, double t) {
     const int q = f - a;
     if (q < 0 || q >= n) return;  // frames before the range (warm-up) are not kept
+    if (noise) {  // before the frame, whose sidecar vouches for both
+      s.variance[q] = *method->pixel_variance();
+      cache_->store(label, variance_key(k[q]), s.variance[q], t);
+    }
     cache_->store(label, k[q], img, t);
     s.frames[q] = img;
     ms[q] = t;
@@ -192,8 +209,9 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   return s;
 }
 
-VariantResult Study::measure(const StudyVariant& v, const Sequence& s,
-                             const std::vector<Image>& ref, const WaterRegions& w) const {
+VariantResult Study::measure(const StudyVariant& v, const Sequence& s, const Sequence& reference,
+                             const WaterRegions& w) const {
+  const std::vector<Image>& ref = reference.frames;
   VariantResult r;
   r.label = canonical_label(v.label);
   r.name = v.name;
@@ -212,8 +230,60 @@ VariantResult Study::measure(const StudyVariant& v, const Sequence& s,
     o.flicker = m.flicker_a;
     o.flicker_reference = m.flicker_b;
     o.pixels = m.frames.front().pixels;
+    if (!reference.variance.empty()) {
+      o.reference_se = sequence_standard_error(reference.variance, masks[k]);
+      o.rmse_corrected = noise_corrected_rmse(o.rmse, o.reference_se);
+    } else {
+      o.reference_se = std::numeric_limits<double>::quiet_NaN();
+      o.rmse_corrected = o.rmse;
+    }
+    if (m.channels.size() == 3) {
+      for (const SequenceChannelMetrics& c : m.channels)
+        o.channels.push_back({c.rmse, c.temporal_error, c.flicker_a});
+    }
   }
   return r;
+}
+
+// The pixel where `a` has its largest temporal error against `ref` (summed over frame pairs
+// and channels), among the pixels of `mask`; {-1, -1} with fewer than two frames.
+std::pair<int, int> largest_temporal_error(const std::vector<Image>& a,
+                                           const std::vector<Image>& ref,
+                                           const std::vector<unsigned char>& mask) {
+  if (a.size() < 2 || ref.size() != a.size()) return {-1, -1};
+  const Image& first = a.front();
+  std::vector<double> te(first.pixels(), 0.0);
+  const int n = std::max(first.channels, ref.front().channels);
+  for (size_t f = 1; f < a.size(); ++f) {
+    for (size_t k = 0; k < te.size(); ++k) {
+      for (int c = 0; c < n; ++c) {
+        const double da = double(channel_value(a[f], k, c)) - channel_value(a[f - 1], k, c);
+        const double dr = double(channel_value(ref[f], k, c)) - channel_value(ref[f - 1], k, c);
+        te[k] += (da - dr) * (da - dr);
+      }
+    }
+  }
+  size_t best = 0;
+  double best_te = -1;
+  for (size_t k = 0; k < te.size(); ++k) {
+    if (mask[k] && te[k] > best_te) {
+      best = k;
+      best_te = te[k];
+    }
+  }
+  return {static_cast<int>(best % first.width), static_cast<int>(best / first.width)};
+}
+
+// The value of pixel (x, y), the mean over its channels, in each frame.
+std::vector<double> pixel_trace(const std::vector<Image>& frames, int x, int y) {
+  std::vector<double> t;
+  for (const Image& f : frames) {
+    double v = 0;
+    for (int c = 0; c < f.channels; ++c)
+      v += f.at(x, y, c);
+    t.push_back(v / f.channels);
+  }
+  return t;
 }
 
 SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug) {
@@ -231,17 +301,17 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
 
   const std::string tag = scene.name + ": ";
   const Sequence ref = obtain(model, c_.reference, tag + canonical_label(c_.reference.label));
-  r.reference = measure(c_.reference, ref, ref.frames, w);
+  r.reference = measure(c_.reference, ref, ref, w);
 
   // Methods: metrics, and the display frames of every variant for pictures and videos.
   std::vector<Sequence> seqs;
   for (const auto& m : c_.methods) {
     seqs.push_back(obtain(model, m, tag + canonical_label(m.label)));
-    r.methods.push_back(measure(m, seqs.back(), ref.frames, w));
+    r.methods.push_back(measure(m, seqs.back(), ref, w));
   }
   for (const auto& b : c_.budgets) {
     const Sequence s = obtain(model, b, tag + canonical_label(b.label));
-    r.budgets.push_back(measure(b, s, ref.frames, w));
+    r.budgets.push_back(measure(b, s, ref, w));
   }
   std::stable_sort(r.budgets.begin(), r.budgets.end(),
                    [](const VariantResult& x, const VariantResult& y) { return x.spp < y.spp; });
@@ -264,6 +334,28 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
     }
   }
 
+  // The flicker plot: the pixel where point sampling (else the first method) has its
+  // largest temporal error on the water, and every column's value there over time.
+  r.channels = ref.frames.front().channels;
+  if (!seqs.empty()) {
+    size_t by = 0;
+    for (size_t m = 0; m < c_.methods.size(); ++m) {
+      if (c_.methods[m].name == "point") {
+        by = m;
+        break;
+      }
+    }
+    const std::vector<unsigned char> everywhere(ref.frames.front().pixels(), 1);
+    const auto [x, y] = largest_temporal_error(seqs[by].frames, ref.frames,
+                                               w.water_pixels > 0 ? w.water : everywhere);
+    if (x >= 0) {
+      r.flicker_pixel = FlickerPixel{x, y, r.methods[by].label};
+      r.reference.trace = pixel_trace(ref.frames, x, y);
+      for (size_t m = 0; m < seqs.size(); ++m)
+        r.methods[m].trace = pixel_trace(seqs[m].frames, x, y);
+    }
+  }
+
   if (!c_.pictures && !c_.video) return r;
   report(done_weight_ / total_weight_, tag + "pictures and video");
   const int W = scene.width, H = scene.height, n = static_cast<int>(ref.frames.size());
@@ -272,7 +364,8 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   const Image& ref_shown = ref.frames.back();
   r.far_crop = best_crop(ref_shown, w.far, cw, ch);
   r.near_crop = best_crop(ref_shown, w.near, cw, ch, &r.far_crop);
-  const std::vector<unsigned char> all(ref_shown.size(), 1);
+  const std::vector<unsigned char> all(ref_shown.pixels(), 1);
+  const int C = ref_shown.channels;
   const std::vector<unsigned char>& error_mask = w.water_pixels > 0 ? w.water : all;
   for (const auto& s : seqs) {
     r.error_range =
@@ -294,13 +387,14 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   fs::create_directories(fs::path(c_.out_dir) / img_dir);
   const uint8_t kBackground = 24, kNear[3] = {255, 160, 32}, kFar[3] = {64, 200, 255};
   std::vector<std::vector<Picture>> grid(5);
+  std::vector<std::vector<Picture>> crops;  // per column: near and far at kCropScale:1
   // Display frames of every column: all frames for the video, the last for pictures.
   std::vector<std::vector<std::vector<uint8_t>>> shown(cols.size());
   for (size_t col = 0; col < cols.size(); ++col) {
     const auto& frames = cols[col]->frames;
     for (int f = c_.video ? 0 : n - 1; f < n; ++f)
       shown[col].push_back(display_srgb8(frames[f], c_.display));
-    Picture pic = grey_picture(W, H, shown[col].back());
+    Picture pic = to_picture(W, H, C, shown[col].back());
     Picture marked = pic;
     if (col == 0) {
       draw_box(marked, r.near_crop, kNear);
@@ -323,9 +417,17 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
     grid[2].push_back(error_crop(r.near_crop));
     grid[3].push_back(zoomed_crop(pic, r.far_crop, z, W, H, kBackground));
     grid[4].push_back(error_crop(r.far_crop));
+    crops.push_back(
+        {enlarged_crop(pic, r.near_crop, kCropScale), enlarged_crop(pic, r.far_crop, kCropScale)});
     if (c_.pictures) {
       results[col]->picture = img_dir + "/" + slugs[col] + ".png";
       write_picture((fs::path(c_.out_dir) / results[col]->picture).string(), pic);
+      results[col]->near_crop_picture = img_dir + "/" + slugs[col] + "-near.png";
+      results[col]->far_crop_picture = img_dir + "/" + slugs[col] + "-far.png";
+      write_picture((fs::path(c_.out_dir) / results[col]->near_crop_picture).string(),
+                    crops.back()[0]);
+      write_picture((fs::path(c_.out_dir) / results[col]->far_crop_picture).string(),
+                    crops.back()[1]);
       if (col > 0) {
         results[col]->error_map = img_dir + "/" + slugs[col] + "-error.png";
         write_picture((fs::path(c_.out_dir) / results[col]->error_map).string(), err);
@@ -335,27 +437,38 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   if (c_.pictures) {
     r.grid = "img/" + scene_slug + "-grid.png";
     write_picture((fs::path(c_.out_dir) / r.grid).string(), compose_grid(grid, 2, kBackground));
+    r.crops = "img/" + scene_slug + "-crops.png";
+    write_picture((fs::path(c_.out_dir) / r.crops).string(), compose_grid(crops, 2, kBackground));
   }
   if (c_.video) {
     // Two rows: the frames, and their near crops zoomed; columns as in the grid.
     const int gap = 2, VW = int(cols.size()) * W + (int(cols.size()) - 1) * gap, VH = 2 * H + gap;
-    std::vector<std::vector<uint8_t>> frames(n, std::vector<uint8_t>(size_t(VW) * VH, kBackground));
+    std::vector<std::vector<uint8_t>> frames(
+        n, std::vector<uint8_t>(size_t(VW) * VH * C, kBackground));
     for (int f = 0; f < n; ++f) {
       for (size_t col = 0; col < cols.size(); ++col) {
-        const Picture pic = grey_picture(W, H, shown[col][f]);
+        const Picture pic = to_picture(W, H, C, shown[col][f]);
         const Picture crop = zoomed_crop(pic, r.near_crop, z, W, H, kBackground);
         const int x0 = int(col) * (W + gap);
         for (int j = 0; j < H; ++j) {
           for (int i = 0; i < W; ++i) {
-            frames[f][size_t(j) * VW + x0 + i] = shown[col][f][size_t(j) * W + i];
-            frames[f][size_t(H + gap + j) * VW + x0 + i] = crop.at(i, j)[0];
+            for (int c = 0; c < C; ++c) {
+              frames[f][(size_t(j) * VW + x0 + i) * C + c] =
+                  shown[col][f][(size_t(j) * W + i) * C + c];
+              frames[f][(size_t(H + gap + j) * VW + x0 + i) * C + c] = crop.at(i, j)[c];
+            }
           }
         }
       }
     }
     fs::create_directories(fs::path(c_.out_dir) / "video");
     r.video = "video/" + scene_slug + ".mp4";
-    encode_h264((fs::path(c_.out_dir) / r.video).string(), VW, VH, scene.animation.fps, frames);
+    const std::string video = (fs::path(c_.out_dir) / r.video).string();
+    if (C == 1) {
+      encode_h264(video, VW, VH, scene.animation.fps, frames);
+    } else {
+      encode_h264_rgb(video, VW, VH, scene.animation.fps, frames);
+    }
   }
   return r;
 }

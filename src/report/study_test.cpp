@@ -4,11 +4,13 @@
 // frames is missing, and the results hold every method, region and figure.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "base/error.h"
 #include "methods/point.h"
 #include "report/cache.h"
+#include "report/regions.h"
 #include "report/study.h"
 #include "testing/testing.h"
 
@@ -190,6 +192,85 @@ TEST_F(StudyTest, ResultsHoldEveryMethodRegionAndTheEqualCostComparison) {
   EXPECT_EQ(s.equal_cost->target_rmse, s.methods[0].at(Region::image).rmse);
   EXPECT_TRUE(fs::exists(fs::path(dir_) / "results.json"));
   EXPECT_FALSE(fs::exists(fs::path(dir_) / "index.html"));
+}
+
+// A colour scene: frames cached as RGB, figures over all channels and per channel, the
+// flicker pixel where point sampling's temporal error is largest, crops at 2:1 pixels.
+TEST_F(StudyTest, ColourSceneHasPerChannelFiguresCropsAndAFlickerTrace) {
+  c_.methods.pop_back();  // no ema
+  Scene& s = c_.scenes[0].scene;
+  s.light.radiance = Rgb(3, 2, 1);
+  s.sky = SkyDesc{Rgb(0.02, 0.05, 0.1), Rgb(0.1, 0.06, 0.04), 0.5, true};
+  s.surface.fresnel = FresnelMode::schlick;
+  s.surface.sea_radiance = Rgb(0, 0.01, 0.02);
+  const StudyResults r = run_study(c_);
+  const SceneResult& sc = r.scenes[0];
+  EXPECT_EQ(sc.channels, 3);
+  const RegionMetrics& m = method(r, "point").at(Region::image);
+  ASSERT_EQ(m.channels.size(), 3u);
+  // The whole is the root mean square of the channels (equal pixel counts).
+  const double ms = (std::pow(m.channels[0].rmse, 2) + std::pow(m.channels[1].rmse, 2) +
+                     std::pow(m.channels[2].rmse, 2)) /
+                    3;
+  EXPECT_NEAR(m.rmse, std::sqrt(ms), 1e-12 * m.rmse);
+  EXPECT_GT(m.channels[0].rmse, m.channels[2].rmse);  // the light is redder than blue
+  // Frames are cached in colour and reused.
+  FrameCache cache(dir_ + "/cache");
+  const auto f = cache.load("point", frame_key(s, "point", 2));
+  ASSERT_TRUE(f);
+  EXPECT_EQ(f->image.channels, 3);
+  EXPECT_EQ(run_study(c_).scenes[0].methods[0].frames_rendered, 0);
+  // The flicker pixel and its traces: one value per frame per column.
+  ASSERT_GE(sc.flicker_pixel.x, 0);
+  EXPECT_EQ(sc.flicker_pixel.chosen_by, "point");
+  EXPECT_EQ(sc.reference.trace.size(), 4u);
+  for (const auto& v : sc.methods)
+    EXPECT_EQ(v.trace.size(), 4u);
+  // Crops: kCropScale:1 of a quarter of each side.
+  ASSERT_FALSE(sc.crops.empty());
+  EXPECT_TRUE(fs::exists(fs::path(dir_) / sc.crops));
+  EXPECT_TRUE(fs::exists(fs::path(dir_) / sc.methods[0].near_crop_picture));
+  EXPECT_EQ(sc.near_crop.width, 24 / 4);
+}
+
+// The flicker pixel is where point sampling's temporal error is largest: checked against a
+// brute-force search on a grey study.
+TEST_F(StudyTest, FlickerPixelIsThePointOfLargestTemporalError) {
+  c_.methods.pop_back();
+  c_.pictures = false;
+  c_.html = false;
+  c_.scenes[0].scene.light.angular_radius_deg = 3;  // glints at this size
+  const StudyResults r = run_study(c_);
+  const SceneResult& sc = r.scenes[0];
+  ASSERT_GE(sc.flicker_pixel.x, 0);
+  FrameCache cache(dir_ + "/cache");
+  const Scene& s = c_.scenes[0].scene;
+  std::vector<Image> p, ref;
+  for (int f = 0; f < 4; ++f) {
+    p.push_back(cache.load("point", frame_key(s, "point", f))->image);
+    ref.push_back(cache.load(c_.reference.label, frame_key(s, c_.reference.label, f))->image);
+  }
+  auto te = [&](int i, int j) {
+    double e = 0;
+    for (int f = 1; f < 4; ++f) {
+      const double d =
+          (p[f].at(i, j) - p[f - 1].at(i, j)) - (ref[f].at(i, j) - ref[f - 1].at(i, j));
+      e += d * d;
+    }
+    return e;
+  };
+  const double chosen = te(sc.flicker_pixel.x, sc.flicker_pixel.y);
+  EXPECT_GT(chosen, 0);
+  const WaterRegions w = water_regions(SceneModel(s), frame_time(s, 0).end);
+  for (int j = 0; j < s.height; ++j) {
+    for (int i = 0; i < s.width; ++i) {
+      if (w.water[size_t(j) * s.width + i]) {
+        EXPECT_LE(te(i, j), chosen) << i << "," << j;
+      }
+    }
+  }
+  EXPECT_EQ(sc.methods[0].trace[2], p[2].at(sc.flicker_pixel.x, sc.flicker_pixel.y));
+  EXPECT_EQ(sc.reference.trace[3], ref[3].at(sc.flicker_pixel.x, sc.flicker_pixel.y));
 }
 
 TEST_F(StudyTest, BadConfigurationNamesTheOption) {

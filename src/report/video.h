@@ -1,5 +1,7 @@
-// Videos of a study: 8-bit grey frames encoded as H.264 in MP4 by ffmpeg (Debian package
-// `ffmpeg`), run as a subprocess that reads raw frames on its standard input. Flags are
+// Videos of a study and of `render --video`: 8-bit grey or RGB frames encoded as H.264 in
+// MP4 by ffmpeg (Debian package `ffmpeg`), run as a subprocess that reads raw frames on
+// its standard input. RGB frames are converted to yuv420p with the Rec. 709 matrix and
+// tagged as such (the frames' primaries are Rec. 709 / sRGB). Flags are
 // fixed for the same bytes from the same frames: libx264 preset "medium", CRF 18,
 // one thread, yuv420p, -bitexact, no metadata, +faststart (plays while loading).
 // Odd sizes are padded to even ones (yuv420p needs them).
@@ -16,5 +18,13 @@ namespace sg {
 void encode_h264(const std::string& path, int width, int height, double fps,
                  const std::vector<std::vector<uint8_t>>& grey_frames,
                  const std::string& ffmpeg = "ffmpeg");
+// Throws the error encode_h264 would when `ffmpeg` cannot be started (checked before a
+// long render whose frames go to a video).
+void check_ffmpeg(const std::string& ffmpeg = "ffmpeg");
+
+// The same for RGB frames (3 bytes per pixel, rows top to bottom).
+void encode_h264_rgb(const std::string& path, int width, int height, double fps,
+                     const std::vector<std::vector<uint8_t>>& rgb_frames,
+                     const std::string& ffmpeg = "ffmpeg");
 
 }  // namespace sg

@@ -21,8 +21,9 @@ PixelFootprint footprint(const SceneModel& m, double px, double py, double t, bo
   }
   f.hit = true;
   f.point = hit.point;
-  f.view = normalize(o - hit.point);
   f.distance = length(o - hit.point);
+  f.at_camera = !(f.distance > 0);
+  f.view = f.at_camera ? -normalize(d) : normalize(o - hit.point);
   f.dp_dpx = transfer_differential(d, s, m.camera.ddir_dpx(), normal);
   f.dp_dpy = transfer_differential(d, s, m.camera.ddir_dpy(), normal);
   return f;

@@ -22,6 +22,10 @@ struct PixelFootprint {
   vec3 dp_dpx{0};  // d point / d px
   vec3 dp_dpy{0};  // d point / d py
   double distance = 0;
+  // The camera is under the displaced surface at this instant (possible only within the
+  // waves' amplitude of the water): by the spec's convention the ray hits at the camera
+  // itself, the view is the ray's reverse and the footprint is a point (dP = 0).
+  bool at_camera = false;
 
   // The 2x2 map from image-plane offsets (px, py) to horizontal offsets (x, z).
   mat2 xz_jacobian() const { return mat2(vec2(dp_dpx.x, dp_dpx.z), vec2(dp_dpy.x, dp_dpy.z)); }

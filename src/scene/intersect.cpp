@@ -41,7 +41,6 @@ RayHit intersect_displaced(const WaveField& waves, const vec3& o, const vec3& d,
   if (!(s1 >= s0)) return r;
   const double lip = std::fabs(d.y) + waves.slope_bound() * std::hypot(d.x, d.z);
   const double min_step = kGrazeDepth / std::max(lip, 1e-300);
-  const long max_steps = 2000000;
 
   double s = s0, fs = f(s);
   if (fs <= 0) {
@@ -52,7 +51,8 @@ RayHit intersect_displaced(const WaveField& waves, const vec3& o, const vec3& d,
     if (evaluations) *evaluations += evals;
     return r;
   }
-  for (long step = 0; step < max_steps && s < s1; ++step) {
+  long step = 0;
+  for (; step < kMaxMarchSteps && s < s1; ++step) {
     double next = std::min(s1, s + std::max(fs / lip, min_step));
     if (!std::isfinite(next)) break;
     double fn = f(next);
@@ -78,6 +78,7 @@ RayHit intersect_displaced(const WaveField& waves, const vec3& o, const vec3& d,
     fs = fn;
     if (s >= s1) break;
   }
+  r.exhausted = !r.hit && step >= kMaxMarchSteps;
   if (evaluations) *evaluations += evals;
   return r;
 }

@@ -10,6 +10,14 @@
 // grazes that dip less than kGrazeDepth (1e-6 m) below the surface before leaving it. The
 // bracketed root is then refined with TOMS 748 (Boost.Math) to |f| <= kRootTolerance
 // (1e-9 m), or to a bracket of relative width 2^-50. Both figures are tested.
+//
+// Bounded work: at most kMaxMarchSteps steps (one height evaluation, a sum over the waves,
+// each) plus 100 root-refinement steps per ray, whatever the ray. The bound is reached
+// only by a ray that runs inside the slab nearly parallel to the water for its whole
+// length (a horizontal ray from a camera below the crests, whose slab never ends); such
+// a ray is reported as a miss (it sees the sky) with `exhausted` set. With the scene
+// limits (scene_limits.h: the sum of slopes at most 1000) a step is at least
+// kGrazeDepth / 1000 m long.
 #pragma once
 
 #include "math/vec.h"
@@ -19,10 +27,12 @@ namespace sg {
 
 inline constexpr double kGrazeDepth = 1e-6;     // metres
 inline constexpr double kRootTolerance = 1e-9;  // metres
+inline constexpr long kMaxMarchSteps = 2000000;
 
 struct RayHit {
   bool hit = false;
-  double s = 0;  // ray parameter: point = origin + s * dir
+  bool exhausted = false;  // displaced: the march ran kMaxMarchSteps steps without a hit
+  double s = 0;            // ray parameter: point = origin + s * dir
   vec3 point{0};
 };
 

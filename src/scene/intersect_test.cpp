@@ -104,5 +104,20 @@ TEST(Intersect, StatedGrazeDepthBoundsWhatCanBeMissed) {
   EXPECT_TRUE(intersect_displaced(w, vec3(-2, 0.5 - 10 * kGrazeDepth, 0), vec3(1, 0, 0), 0).hit);
 }
 
+TEST(Intersect, TheMarchIsBoundedWhateverTheRay) {
+  // Two waves that cancel: the water is flat (h = 0) but the slab is |y| <= 0.2. A
+  // horizontal ray at y = 0.1 stays in the slab forever and never meets the water: the
+  // march stops after kMaxMarchSteps steps and says so.
+  WaveField w({Wave{0.1, {1.0, 0.0}, 0.0, 0.0}, Wave{0.1, {1.0, 0.0}, 0.0, kPi}});
+  long evals = 0;
+  const RayHit r = intersect_displaced(w, vec3(0, 0.1, 0), vec3(1, 0, 0), 0, &evals);
+  EXPECT_FALSE(r.hit);
+  EXPECT_TRUE(r.exhausted);
+  EXPECT_LE(evals, kMaxMarchSteps + 1);
+  // A ray that meets the water, or leaves the slab, is not exhausted.
+  EXPECT_FALSE(intersect_displaced(w, vec3(0, 0.1, 0), vec3(1, -0.1, 0), 0).exhausted);
+  EXPECT_FALSE(intersect_displaced(w, vec3(0, 0.1, 0), vec3(1, 0.1, 0), 0).exhausted);
+}
+
 }  // namespace
 }  // namespace sg

@@ -78,6 +78,8 @@ struct Scene {
 
   // True when every radiance has three equal channels (a grey image renders the scene).
   bool grey() const;
+  // The format the scene needs: 2 with colour or a gradient sky, else 1 (scene_to_json).
+  int format_version() const;
 
   // Frame f is displayed at t_f = t0 + f / fps and integrates [t_f - shutter/fps, t_f].
   double frame_time(int frame) const { return animation.t0 + frame / animation.fps; }

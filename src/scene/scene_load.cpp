@@ -1,5 +1,8 @@
-// Loading `sunglint-scene/1` files: parse, check every key against its rule, reject
-// unknown keys. Each rule lives in one place below; docs/scene-format-notes.md lists them.
+// Loading `sunglint-scene/1` and `/2` files: parse, check every key against its rule and
+// its physical range (scene_limits.h), reject unknown and duplicate keys. Each rule lives in
+// one place below; docs/scene-format-notes.md lists them with their reasons. Format /2 adds
+// [r, g, b] radiances and the sky gradient (read_radiance, read_sky); a /1 file that uses
+// them is an error naming the key.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -10,6 +13,7 @@
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "scene/scene.h"
+#include "scene/scene_limits.h"
 
 namespace sg {
 namespace {
@@ -17,6 +21,7 @@ namespace {
 using json = nlohmann::json;
 
 constexpr const char* kFormat = "sunglint-scene/1";
+constexpr const char* kFormat2 = "sunglint-scene/2";
 constexpr int kMaxImageSide = 16384;
 
 // A JSON object being read: remembers which keys were consumed so that the rest can be
@@ -120,8 +125,99 @@ void require(bool ok, const std::string& path, const std::string& rule) {
   if (!ok) ObjectReader::fail(path, rule);
 }
 
-void require_nonzero(const vec3& v, const std::string& path) {
-  require(length(v) > 1e-12, path, "must not be zero-length");
+// |v| without overflow (glm's length squares first: 1e200 components give inf).
+double norm(const vec3& v) {
+  return std::hypot(v.x, v.y, v.z);
+}
+
+// A number as the messages print it: "1e+07", "0.45", "6283.19".
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// lo <= v <= hi, else "PATH: must be in [lo, hi] UNIT (got v)".
+void require_in(double v, double lo, double hi, const std::string& path, const std::string& unit,
+                const std::string& why = "") {
+  if (!(v >= lo && v <= hi)) {
+    ObjectReader::fail(path, "must be in [" + num(lo) + ", " + num(hi) + "]" +
+                                 (unit.empty() ? "" : " " + unit) +
+                                 (why.empty() ? "" : " (" + why + ")") + ", got " + num(v));
+  }
+}
+
+// A direction of any length in [kMinDirectionLength, kMaxDirectionLength] (normalised
+// later; outside that range its normalisation under- or overflows).
+void require_direction(const vec3& v, const std::string& path) {
+  const double len = norm(v);
+  require(len >= limits::kMinDirectionLength, path, "must not be zero-length");
+  if (!(len <= limits::kMaxDirectionLength)) {
+    ObjectReader::fail(path, "must have a length of at most " + num(limits::kMaxDirectionLength) +
+                                 " (got " + num(len) + ")");
+  }
+}
+
+// A radiance: >= 0, at most kMaxRadiance (scene_limits.h).
+double check_radiance(double v, const std::string& path) {
+  require(v >= 0, path, "must be >= 0");
+  if (!(v <= limits::kMaxRadiance)) {
+    ObjectReader::fail(path,
+                       "must be at most " + num(limits::kMaxRadiance) + " (got " + num(v) + ")");
+  }
+  return v;
+}
+
+const std::string kNeeds2 = std::string("needs \"format\": \"") + kFormat2 + "\"";
+
+// A radiance (format /2): a number (grey: three equal channels) or [r, g, b], each finite
+// in [0, kMaxRadiance]. Format /1 (version 1) has numbers only.
+Rgb read_radiance(ObjectReader& o, const std::string& key, double fallback, int version) {
+  if (!o.has(key)) return Rgb(fallback);
+  const std::string p = o.key_path(key);
+  const json& v = o.get(key);
+  const std::string shape = "must be a number or an array of 3 numbers [r, g, b]";
+  if (v.is_array()) {
+    require(version >= 2, p, "an [r, g, b] radiance " + kNeeds2);
+    require(v.size() == 3, p, shape);
+    Rgb c;
+    for (int k = 0; k < 3; ++k) {
+      const std::string pk = p + "[" + std::to_string(k) + "]";
+      c[k] = check_radiance(ObjectReader::as_number(v[k], pk), pk);
+    }
+    return c;
+  }
+  if (version >= 2 && !v.is_number()) ObjectReader::fail(p, shape);
+  return Rgb(check_radiance(ObjectReader::as_number(v, p), p));
+}
+
+// `sky`: a constant `radiance`, or (format /2) `zenith` and `horizon` with an optional
+// `exponent` (default 0.5, > 0); not both forms.
+SkyDesc read_sky(ObjectReader o, int version) {
+  const bool z = o.has("zenith"), h = o.has("horizon");
+  if (version < 2) {
+    for (const char* k : {"zenith", "horizon", "exponent"}) {
+      require(!o.has(k), o.key_path(k), kNeeds2);
+    }
+  }
+  SkyDesc sky;
+  if (!z && !h) {
+    require(!o.has("exponent"), o.key_path("exponent"),
+            "needs the gradient sky (sky.zenith and sky.horizon)");
+    sky = SkyDesc::constant(read_radiance(o, "radiance", 0.0, version));
+  } else {
+    require(!o.has("radiance"), o.key_path("radiance"),
+            "not allowed with sky.zenith and sky.horizon (a sky is constant or a gradient)");
+    require(z, o.key_path("zenith"), "missing (required with sky.horizon)");
+    require(h, o.key_path("horizon"), "missing (required with sky.zenith)");
+    sky.gradient = true;
+    sky.zenith = read_radiance(o, "zenith", 0.0, version);
+    sky.horizon = read_radiance(o, "horizon", 0.0, version);
+    sky.exponent = o.number_or("exponent", 0.5);
+    require(sky.exponent > 0, o.key_path("exponent"), "must be > 0");
+  }
+  o.finish();
+  return sky;
 }
 
 CameraDesc read_camera(ObjectReader o) {
@@ -130,27 +226,38 @@ CameraDesc read_camera(ObjectReader o) {
   c.look_at = o.vector<3>("look_at");
   c.up = o.vector<3>("up");
   c.vfov_deg = o.number("vfov_deg");
-  require(c.position.y > 0, o.key_path("position"), "must be above the water at rest (y > 0)");
-  require(length(c.look_at - c.position) > 1e-12, o.key_path("look_at"),
+  if (!(norm(c.position) <= limits::kMaxCameraDistance)) {
+    ObjectReader::fail(o.key_path("position"),
+                       "must be within " + num(limits::kMaxCameraDistance) +
+                           " m of the origin (got |position| = " + num(norm(c.position)) + " m)");
+  }
+  if (!(c.position.y >= limits::kMinCameraHeight)) {
+    ObjectReader::fail(o.key_path("position"), "must be above the water at rest (y >= " +
+                                                   num(limits::kMinCameraHeight) + " m)");
+  }
+  if (!(norm(c.look_at) <= limits::kMaxLookAtDistance)) {
+    ObjectReader::fail(o.key_path("look_at"),
+                       "must be within " + num(limits::kMaxLookAtDistance) +
+                           " m of the origin (got |look_at| = " + num(norm(c.look_at)) + " m)");
+  }
+  require(length(c.look_at - c.position) > 1e-6, o.key_path("look_at"),
           "must differ from camera.position");
-  require_nonzero(c.up, o.key_path("up"));
+  require_direction(c.up, o.key_path("up"));
   require(length(cross(normalize(c.look_at - c.position), normalize(c.up))) > 1e-6,
           o.key_path("up"), "must not be parallel to the viewing direction");
-  require(c.vfov_deg > 0 && c.vfov_deg < 180, o.key_path("vfov_deg"), "must be in (0, 180)");
+  require_in(c.vfov_deg, limits::kMinVfov, limits::kMaxVfov, o.key_path("vfov_deg"), "degrees");
   o.finish();
   return c;
 }
 
-LightDesc read_light(ObjectReader o) {
+LightDesc read_light(ObjectReader o, int version) {
   LightDesc l;
   l.direction = o.vector<3>("direction");
-  require_nonzero(l.direction, o.key_path("direction"));
+  require_direction(l.direction, o.key_path("direction"));
   l.angular_radius_deg = o.number("angular_radius_deg");
-  require(l.angular_radius_deg > 0 && l.angular_radius_deg < 90, o.key_path("angular_radius_deg"),
-          "must be in (0, 90)");
-  const double radiance = o.number_or("radiance", 1.0);
-  require(radiance >= 0, o.key_path("radiance"), "must be >= 0");
-  l.radiance = Rgb(radiance);
+  require_in(l.angular_radius_deg, limits::kMinLightRadius, limits::kMaxLightRadius,
+             o.key_path("angular_radius_deg"), "degrees");
+  l.radiance = read_radiance(o, "radiance", 1.0, version);
   l.visible = o.boolean_or("visible", false);
   o.finish();
   return l;
@@ -161,27 +268,48 @@ Wave read_wave(ObjectReader o) {
   w.amplitude = o.number("amplitude");
   require(w.amplitude >= 0, o.key_path("amplitude"), "must be >= 0");
   w.wave_vector = o.vector<2>("wave_vector");
+  const double k = length(w.wave_vector);
+  if (!(k >= kTwoPi / limits::kMaxWavelength && k <= kTwoPi / limits::kMinWavelength)) {
+    ObjectReader::fail(o.key_path("wave_vector"),
+                       "the wavelength 2 pi / |k| must be in [" + num(limits::kMinWavelength) +
+                           ", " + num(limits::kMaxWavelength) + "] m (got " +
+                           (k > 0 ? num(kTwoPi / k) + " m" : std::string("|k| = 0")) + ")");
+  }
+  if (!(w.amplitude * k <= limits::kMaxSteepness)) {
+    ObjectReader::fail(o.key_path("amplitude"),
+                       "the steepness amplitude * |wave_vector| must be at most " +
+                           num(limits::kMaxSteepness) + " (Stokes' limit of breaking), got " +
+                           num(w.amplitude * k));
+  }
   w.angular_frequency = o.number("angular_frequency");
+  require_in(w.angular_frequency, -limits::kMaxAngularFrequency, limits::kMaxAngularFrequency,
+             o.key_path("angular_frequency"), "rad/s");
   w.phase = o.number_or("phase", 0.0);
+  require_in(w.phase, -limits::kMaxPhase, limits::kMaxPhase, o.key_path("phase"), "rad");
   o.finish();
   return w;
 }
 
-SurfaceDesc read_surface(ObjectReader o) {
+SurfaceDesc read_surface(ObjectReader o, int version) {
   SurfaceDesc s;
   s.geometry = o.choice_or("geometry", {"flat", "displaced"}, "flat") == "flat"
                    ? Geometry::flat
                    : Geometry::displaced;
   s.fresnel = o.choice_or("fresnel", {"none", "schlick"}, "none") == "none" ? FresnelMode::none
                                                                             : FresnelMode::schlick;
-  const double sea = o.number_or("sea_radiance", 0.0);
-  require(sea >= 0, o.key_path("sea_radiance"), "must be >= 0");
-  s.sea_radiance = Rgb(Rgb(sea));
+  s.sea_radiance = read_radiance(o, "sea_radiance", 0.0, version);
   const std::string wpath = o.key_path("waves");
   const json& waves = o.get("waves");
   require(waves.is_array(), wpath, "must be an array of wave objects");
+  double slope_sum = 0;
   for (size_t k = 0; k < waves.size(); ++k) {
     s.waves.push_back(read_wave(ObjectReader(waves[k], wpath + "[" + std::to_string(k) + "]")));
+    slope_sum += s.waves.back().amplitude * length(s.waves.back().wave_vector);
+  }
+  if (!(slope_sum <= limits::kMaxSlopeSum)) {
+    ObjectReader::fail(wpath,
+                       "the sum of the steepnesses amplitude * |wave_vector| must be at most " +
+                           num(limits::kMaxSlopeSum) + " (got " + num(slope_sum) + ")");
   }
   o.finish();
   return s;
@@ -189,58 +317,88 @@ SurfaceDesc read_surface(ObjectReader o) {
 
 AnimationDesc read_animation(ObjectReader o) {
   AnimationDesc a;
+  const double T = limits::kMaxTime;
   a.t0 = o.number("t0");
+  require_in(a.t0, -T, T, o.key_path("t0"), "s");
   a.fps = o.number("fps");
-  require(a.fps > 0, o.key_path("fps"), "must be > 0");
+  require_in(a.fps, limits::kMinFps, limits::kMaxFps, o.key_path("fps"), "frames per second");
   a.frames = o.integer("frames");
   require(a.frames >= 1, o.key_path("frames"), "must be >= 1");
   a.shutter = o.number("shutter");
-  require(a.shutter >= 0, o.key_path("shutter"), "must be >= 0");
+  require_in(a.shutter, 0, limits::kMaxShutter, o.key_path("shutter"), "of the frame interval");
+  // Every time the animation reaches, from frame 0's shutter opening to the last frame.
+  const double first = a.t0 - a.shutter / a.fps, last = a.t0 + (a.frames - 1) / a.fps;
+  if (!(first >= -T)) {
+    ObjectReader::fail(o.key_path("t0"), "frame 0's shutter opens at t0 - shutter / fps = " +
+                                             num(first) + " s, before -" + num(T) + " s");
+  }
+  if (!(last <= T)) {
+    ObjectReader::fail(o.key_path("frames"), "the last frame is at t0 + (frames - 1) / fps = " +
+                                                 num(last) + " s, after " + num(T) + " s");
+  }
   o.finish();
   return a;
 }
 
-// Finds where a JSON text fails to parse: the key path of the value being read and the
-// byte position (nlohmann's DOM parser reports neither for a number overflow).
-class ErrorLocator : public nlohmann::json_sax<json> {
+// The JSON reader: builds the document (nlohmann's DOM builder, driven through its SAX
+// interface, in one pass) and on the way finds where a text fails to parse (the key path
+// of the value being read and the byte position; the DOM parser reports neither for a
+// number overflow) and the first duplicate key (the DOM parser would keep the last value
+// silently).
+class JsonReader {
  public:
+  using number_integer_t = json::number_integer_t;
+  using number_unsigned_t = json::number_unsigned_t;
+  using number_float_t = json::number_float_t;
+  using string_t = json::string_t;
+  using binary_t = json::binary_t;
+
+  explicit JsonReader(json& out) : dom_(out, false) {}
+
   std::string path() const {
     std::string p;
     for (const Frame& f : stack_) {
       if (f.array) {
-        p += "[" + std::to_string(f.index) + "]";
+        p.append("[").append(std::to_string(f.index)).append("]");
       } else if (!f.key.empty()) {
-        p += (p.empty() ? "" : ".") + f.key;
+        if (!p.empty()) p.push_back('.');
+        p.append(f.key);
       }
     }
     return p;
   }
   size_t position = 0;
   std::string reason;
+  std::string duplicate;  // the key path of the first duplicate key, if any
 
-  bool null() override { return value(); }
-  bool boolean(bool) override { return value(); }
-  bool number_integer(number_integer_t) override { return value(); }
-  bool number_unsigned(number_unsigned_t) override { return value(); }
-  bool number_float(number_float_t, const string_t&) override { return value(); }
-  bool string(string_t&) override { return value(); }
-  bool binary(binary_t&) override { return value(); }
-  bool start_object(std::size_t) override {
-    stack_.push_back({false, 0, ""});
-    return true;
+  bool null() { return value() && dom_.null(); }
+  bool boolean(bool v) { return value() && dom_.boolean(v); }
+  bool number_integer(number_integer_t v) { return value() && dom_.number_integer(v); }
+  bool number_unsigned(number_unsigned_t v) { return value() && dom_.number_unsigned(v); }
+  bool number_float(number_float_t v, const string_t& s) {
+    return value() && dom_.number_float(v, s);
   }
-  bool key(string_t& k) override {
+  bool string(string_t& v) { return value() && dom_.string(v); }
+  bool binary(binary_t& v) { return value() && dom_.binary(v); }
+  bool start_object(std::size_t n) {
+    stack_.push_back({false, 0, "", {}});
+    return dom_.start_object(n);
+  }
+  bool key(string_t& k) {
     stack_.back().key = k;
-    return true;
+    if (!stack_.back().keys.insert(k).second) {
+      duplicate = path();
+      return false;
+    }
+    return dom_.key(k);
   }
-  bool end_object() override { return end(); }
-  bool start_array(std::size_t) override {
-    stack_.push_back({true, 0, ""});
-    return true;
+  bool end_object() { return end() && dom_.end_object(); }
+  bool start_array(std::size_t n) {
+    stack_.push_back({true, 0, "", {}});
+    return dom_.start_array(n);
   }
-  bool end_array() override { return end(); }
-  bool parse_error(std::size_t pos, const std::string&,
-                   const nlohmann::detail::exception& e) override {
+  bool end_array() { return end() && dom_.end_array(); }
+  bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
     position = pos;
     reason = e.id == 406 ? "number out of range" : "";
     return false;
@@ -251,6 +409,7 @@ class ErrorLocator : public nlohmann::json_sax<json> {
     bool array;
     size_t index;
     std::string key;
+    std::set<std::string> keys;  // of an object: the keys read so far
   };
   bool value() {
     if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
@@ -260,6 +419,7 @@ class ErrorLocator : public nlohmann::json_sax<json> {
     stack_.pop_back();
     return value();
   }
+  nlohmann::detail::json_sax_dom_parser<json> dom_;
   std::vector<Frame> stack_;
 };
 
@@ -280,21 +440,24 @@ std::string line_col(const std::string& text, size_t byte) {
 
 Scene parse_scene(const std::string& text, const std::string& name) {
   json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception&) {
-    ErrorLocator where;
-    json::sax_parse(text, &where);
-    const std::string at = line_col(text, where.position > 0 ? where.position - 1 : 0);
-    const std::string path = where.path();
+  JsonReader check(j);
+  if (!json::sax_parse(text, &check)) {
+    if (!check.duplicate.empty()) {
+      throw Error(name + ": " + check.duplicate +
+                  ": duplicate key (JSON object keys must be unique)");
+    }
+    const std::string at = line_col(text, check.position > 0 ? check.position - 1 : 0);
+    const std::string path = check.path();
     throw Error(name + ": " + (path.empty() ? "" : path + ": ") +
-                (where.reason.empty() ? "invalid JSON" : where.reason) + " at " + at);
+                (check.reason.empty() ? "invalid JSON" : check.reason) + " at " + at);
   }
   try {
     ObjectReader top(j, "");
     const std::string format = top.string("format");
-    require(format == kFormat, "format",
-            std::string("must be \"") + kFormat + "\" (got \"" + format + "\")");
+    require(format == kFormat || format == kFormat2, "format",
+            std::string("must be \"") + kFormat + "\" or \"" + kFormat2 + "\" (got \"" + format +
+                "\")");
+    const int version = format == kFormat ? 1 : 2;
     Scene s;
     s.name = top.has("name") ? top.string("name") : std::filesystem::path(name).stem().string();
     {
@@ -308,15 +471,9 @@ Scene parse_scene(const std::string& text, const std::string& name) {
       img.finish();
     }
     s.camera = read_camera(top.object("camera"));
-    s.light = read_light(top.object("light"));
-    if (top.has("sky")) {
-      ObjectReader sky = top.object("sky");
-      const double radiance = sky.number_or("radiance", 0.0);
-      require(radiance >= 0, "sky.radiance", "must be >= 0");
-      s.sky = SkyDesc::constant(Rgb(radiance));
-      sky.finish();
-    }
-    s.surface = read_surface(top.object("surface"));
+    s.light = read_light(top.object("light"), version);
+    if (top.has("sky")) s.sky = read_sky(top.object("sky"), version);
+    s.surface = read_surface(top.object("surface"), version);
     s.animation = read_animation(top.object("animation"));
     top.finish();
     return s;
@@ -326,7 +483,7 @@ Scene parse_scene(const std::string& text, const std::string& name) {
 }
 
 Scene load_scene(const std::string& path) {
-  return parse_scene(read_file(path), path);
+  return parse_scene(read_file(path, limits::kMaxSceneFileBytes), path);
 }
 
 bool Scene::grey() const {
@@ -334,10 +491,22 @@ bool Scene::grey() const {
   return g(light.radiance) && g(sky.zenith) && g(sky.horizon) && g(surface.sea_radiance);
 }
 
+int Scene::format_version() const {
+  return grey() && !sky.gradient ? 1 : 2;
+}
+
 std::string scene_to_json(const Scene& s) {
   auto v3 = [](const vec3& v) { return json::array({v.x, v.y, v.z}); };
-  // Grey radiances as one number (format /1); colour is written by format /2.
+  // Grey radiances as one number (format /1); colour and the gradient sky need format /2.
+  // A scene that needs neither is written as /1, byte for byte as before /2 existed (the
+  // study's cache keys hash this text).
   auto radiance = [&](const Rgb& c) { return c.x == c.y && c.y == c.z ? json(c.x) : v3(c); };
+  json sky = {{"radiance", radiance(s.sky.zenith)}};
+  if (s.sky.gradient) {
+    sky = {{"zenith", radiance(s.sky.zenith)},
+           {"horizon", radiance(s.sky.horizon)},
+           {"exponent", s.sky.exponent}};
+  }
   json waves = json::array();
   for (const Wave& w : s.surface.waves) {
     waves.push_back({{"amplitude", w.amplitude},
@@ -346,7 +515,7 @@ std::string scene_to_json(const Scene& s) {
                      {"phase", w.phase}});
   }
   json j = {
-      {"format", kFormat},
+      {"format", s.format_version() == 1 ? kFormat : kFormat2},
       {"name", s.name},
       {"image", {{"width", s.width}, {"height", s.height}}},
       {"camera",
@@ -359,7 +528,7 @@ std::string scene_to_json(const Scene& s) {
         {"angular_radius_deg", s.light.angular_radius_deg},
         {"radiance", radiance(s.light.radiance)},
         {"visible", s.light.visible}}},
-      {"sky", {{"radiance", radiance(s.sky.zenith)}}},
+      {"sky", sky},
       {"surface",
        {{"geometry", s.surface.geometry == Geometry::flat ? "flat" : "displaced"},
         {"fresnel", s.surface.fresnel == FresnelMode::none ? "none" : "schlick"},

@@ -1,6 +1,6 @@
 // The ocean BRDF and lighting of Bruneton, Neyret, Holzschuch 2010 ("Real-time Realistic
-// Ocean Lighting using Seamless Transitions from Geometry to BRDF", shared/papers/
-// bruneton2010-ocean-lighting-geometry-to-brdf.txt, Sec. 4-5): the anisotropic Gaussian
+// Ocean Lighting using Seamless Transitions from Geometry to BRDF", docs/references.md,
+// Sec. 4-5): the anisotropic Gaussian
 // BRDF of Ross, Dion, Potvin 2005 with Smith shadowing, the reflected sun (Eq. 15), the
 // effective Fresnel reflectance (Eqs. 24, 26) and the filtered environment (Eq. 27).
 //

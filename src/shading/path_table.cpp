@@ -399,7 +399,27 @@ PathTables PathTables::load_or_generate(const std::string& path, const PathTable
   return t;
 }
 
+namespace {
+std::string& cache_dir_override() {
+  static std::string dir;
+  return dir;
+}
+std::function<void(const PathTableCacheResult&)>& cache_notice() {
+  static std::function<void(const PathTableCacheResult&)> notice;
+  return notice;
+}
+}  // namespace
+
+void PathTables::set_cache_dir(const std::string& dir) {
+  cache_dir_override() = dir;
+}
+
+void PathTables::set_cache_notice(std::function<void(const PathTableCacheResult&)> notice) {
+  cache_notice() = std::move(notice);
+}
+
 std::string PathTables::default_cache_dir() {
+  if (!cache_dir_override().empty()) return cache_dir_override();
   auto env = [](const char* name) {
     const char* v = std::getenv(name);
     return std::string(v ? v : "");
@@ -421,7 +441,9 @@ struct Shared {
             PathTables::default_cache_dir().empty()
                 ? std::string()
                 : PathTables::default_cache_dir() + "/" + PathTables::kCacheFileName,
-            {}, &result)) {}
+            {}, &result)) {
+    if (!result.loaded && cache_notice()) cache_notice()(result);
+  }
 };
 const Shared& shared_state() {
   static const Shared s;  // thread-safe initialisation (C++11 "magic statics")

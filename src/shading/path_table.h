@@ -35,16 +35,19 @@
 // The slices are independent and are computed in parallel, so the bytes do not depend on
 // the number of threads.
 //
-// Cache: one file, path_tables.bin, in $SUNGLINT_CACHE_DIR, else $XDG_CACHE_HOME/sunglint,
-// else $HOME/.cache/sunglint, else <temp>/sunglint. Little-endian: the magic "SGPATHTB",
-// the format version, the dimensions and parameters, the payload size, the F and S floats,
-// and a zlib crc32 of everything before it. A missing, truncated, corrupt or stale
-// (version or parameter mismatch) file is regenerated and rewritten atomically; a cache
-// that cannot be written is not an error, the tables then live in memory only.
+// Cache: one file, path_tables.bin (64 MiB), in the folder set by set_cache_dir (the CLI's
+// --cache-dir), else $SUNGLINT_CACHE_DIR, else $XDG_CACHE_HOME/sunglint, else
+// $HOME/.cache/sunglint, else <temp>/sunglint. When the shared tables are generated, the
+// notice set by set_cache_notice is called once (the CLI announces the file on stderr).
+// Little-endian: the magic "SGPATHTB", the format version, the dimensions and parameters, the
+// payload size, the F and S floats, and a zlib crc32 of everything before it. A missing, truncated,
+// corrupt or stale (version or parameter mismatch) file is regenerated and rewritten atomically; a
+// cache that cannot be written is not an error, the tables then live in memory only.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -87,6 +90,12 @@ class PathTables {
                                      PathTableCacheResult* result = nullptr);
   // The cache directory (see above); "" when none can be named.
   static std::string default_cache_dir();
+  // Overrides the cache directory of shared() ("" restores the default); call it before the
+  // first use of shared().
+  static void set_cache_dir(const std::string& dir);
+  // Called once, by the first use of shared(), when it generated the tables (and wrote them
+  // to the cache file, or could not: see the result's `written` and `note`).
+  static void set_cache_notice(std::function<void(const PathTableCacheResult&)> notice);
   static constexpr const char* kCacheFileName = "path_tables.bin";
   // The process-wide tables with the default parameters, loaded or generated on first use
   // (thread-safe), and how they were obtained.

@@ -2,7 +2,7 @@
 // Patney, Lefohn 2016 ("Filtering Distributions of Normals for Shading Antialiasing", HPG)
 // estimated from the screen-space derivatives of the projected half vector of Tokuyoshi and
 // Kaplanyan 2019 ("Improved Geometric Specular Antialiasing", I3D), as Chermain et al. 2021
-// (shared/papers/chermain2021-geometric-glint-antialiasing.txt, Sec. 4.1 and 6.1) use them.
+// (docs/references.md, Sec. 4.1 and 6.1) use them.
 //
 // The half vector h = normalize(v + l) is expressed in the shading frame (t, b, n) of the
 // surface normal; its projected form is h_perp = (h . t, h . b) (Chermain Eq. 21). Across

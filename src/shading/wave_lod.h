@@ -1,5 +1,5 @@
-// The geometry-to-BRDF transition of Bruneton, Neyret, Holzschuch 2010 (shared/papers/
-// bruneton2010-ocean-lighting-geometry-to-brdf.txt, Sec. 3.2): each wave keeps a weight
+// The geometry-to-BRDF transition of Bruneton, Neyret, Holzschuch 2010 (docs/references.md,
+// Sec. 3.2): each wave keeps a weight
 // w(N_min, N_max, lambda / l) of its amplitude in the geometry and the normals, where lambda
 // is its wavelength and l the projected size of a pixel (or grid cell) on the water, with
 // the smoothstep

@@ -13,15 +13,7 @@ inline Scene project_scene(const std::string& name) {
   return load_scene(std::string(SG_SOURCE_DIR) + "/scenes/" + name + ".json");
 }
 
-// The shared fixtures beside the project (../shared/scenes), when present.
-inline std::string shared_scene_path(const std::string& name) {
-  return std::string(SG_SOURCE_DIR) + "/../shared/scenes/" + name + ".json";
-}
-inline bool shared_scenes_present() {
-  return std::filesystem::exists(shared_scene_path("simple"));
-}
-
-// The camera and light of the shared scenes, with the given waves, at a small size.
+// The camera and light of the project's scenes, with the given waves, at a small size.
 inline Scene small_scene(std::vector<Wave> waves, int width = 64, int height = 36) {
   Scene s;
   s.name = "test";

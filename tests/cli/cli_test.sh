@@ -34,6 +34,36 @@ expect_ok() {
     fails=$((fails + 1))
   fi
 }
+# expect_rc NAME RC PATTERN CMD...: the command must exit with RC and print PATTERN.
+expect_rc() {
+  local name=$1 want=$2 pattern=$3
+  shift 3
+  local out rc
+  out=$("$@" 2>&1)
+  rc=$?
+  if [ $rc -eq "$want" ] && grep -qF -- "$pattern" <<<"$out"; then
+    passes=$((passes + 1))
+  else
+    echo "FAIL $name: rc=$rc (wanted $want), wanted '$pattern', got: $out"
+    fails=$((fails + 1))
+  fi
+}
+# expect_fast NAME SECONDS CMD...: the command must end (any exit code) within SECONDS.
+expect_fast() {
+  local name=$1 limit=$2
+  shift 2
+  local t0 t1
+  t0=$(date +%s%N)
+  timeout "$limit" "$@" >/dev/null 2>&1
+  if [ $? -eq 124 ]; then
+    echo "FAIL $name: still running after $limit s"
+    fails=$((fails + 1))
+    return
+  fi
+  t1=$(date +%s%N)
+  passes=$((passes + 1))
+  echo "  $name: $(((t1 - t0) / 1000000)) ms"
+}
 expect_no_file() {
   if [ -e "$2" ] || compgen -G "$2.tmp*" >/dev/null; then
     echo "FAIL $1: $2 (or a temporary) was left behind"
@@ -168,6 +198,252 @@ expect_ok "diff picture" "$bin" diff "$work/r1.exr" "$work/r3.pfm" --out "$work/
 [ -s "$work/d.png" ] && passes=$((passes + 1)) || { echo "FAIL diff picture missing"; fails=$((fails + 1)); }
 expect_ok "info" "$bin" info "$scene" --waves
 expect_ok "info json" "$bin" info "$scene" --json
+
+# Colour (format /2): RGB files, per-channel metrics; the display pipeline and videos.
+colour=$src/scenes/sunset.json
+expect_ok "colour exr" "$bin" render "$colour" -m point --width 32 -q --out "$work/c.exr"
+expect_ok "colour pfm" "$bin" render "$colour" -m point --width 32 -q --out "$work/c.pfm"
+[ "$(head -c 2 "$work/c.pfm")" = PF ] && passes=$((passes + 1)) || { echo "FAIL colour pfm is not PF"; fails=$((fails + 1)); }
+[ "$(head -c 2 "$work/r3.pfm")" = Pf ] && passes=$((passes + 1)) || { echo "FAIL grey pfm is not Pf"; fails=$((fails + 1)); }
+out=$("$bin" diff "$work/c.exr" "$work/c.pfm" --json 2>&1)
+if grep -q '"rmse": 0.0' <<<"$out" && grep -q '"B": {' <<<"$out"; then passes=$((passes + 1)); else
+  echo "FAIL colour diff (EXR and PFM of one frame): $out"
+  fails=$((fails + 1))
+fi
+expect_ok "colour frame 1" "$bin" render "$colour" -m point --width 32 -q --out "$work/c2.exr" --frame 1
+out=$("$bin" diff "$work/c2.exr" "$work/c.exr" 2>&1)
+grep -q '^rmse .*(R .*, G .*, B .*)' <<<"$out" && passes=$((passes + 1)) || { echo "FAIL per-channel diff: $out"; fails=$((fails + 1)); }
+# PNG colour type (IHDR byte 25): 2 = RGB for colour, 0 = grey.
+png_type() { od -An -tu1 -j25 -N1 "$1" | tr -d ' '; }
+expect_ok "colour png" "$bin" render "$colour" -m point --width 32 -q --out "$work/c.png"
+expect_ok "colour png display" "$bin" render "$colour" -m point --width 32 -q --display --out "$work/cd.png"
+expect_ok "grey png display" "$bin" render "$scene" -m point --width 32 -q --display --out "$work/gd.png"
+if [ "$(png_type "$work/c.png")" = 2 ] && [ "$(png_type "$work/gd.png")" = 0 ] && ! cmp -s "$work/c.png" "$work/cd.png"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL png colour types or --display has no effect"
+  fails=$((fails + 1))
+fi
+# --video: the range in one command, no --out needed, same bytes twice.
+expect_ok "video" "$bin" render "$colour" -m point --width 32 --frames 0-3 -q --video "$work/v.mp4"
+expect_ok "video again" "$bin" render "$colour" -m point --width 32 --frames 0-3 -q --video "$work/v2.mp4"
+if [ "$(od -An -c -j4 -N4 "$work/v.mp4" | tr -d ' ')" = ftyp ] && cmp -s "$work/v.mp4" "$work/v2.mp4"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL --video: no MP4, or two runs differ"
+  fails=$((fails + 1))
+fi
+expect_ok "video and frames" "$bin" render "$scene" -m point --width 32 --frames 0-1 -q \
+  --video "$work/g.mp4" --display --out "$work/vf_%d.png"
+[ -s "$work/g.mp4" ] && [ -s "$work/vf_1.png" ] && passes=$((passes + 1)) || { echo "FAIL --video with --out"; fails=$((fails + 1)); }
+# Bad combinations name the flag and fail before rendering: the reference at 64x64x64
+# samples per pixel would take minutes.
+slow=(-m reference --samples 64x64x64)
+expect_fail "video without frames" "--video: needs --frames A-B" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --video "$work/x.mp4"
+expect_fail "video not mp4" "--video: must be an .mp4 file (got '$work/x.avi')" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/x.avi"
+expect_fail "video folder" "--video: folder '$work/nope' does not exist" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/nope/x.mp4"
+expect_fail "display exr" "--display: applies to .png output" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --display --out "$work/x.exr"
+expect_fail "no glare alone" "--no-glare: needs --display or --video" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --no-glare --out "$work/x.png"
+expect_fail "no output" "--out: required (or --video FILE.mp4 with --frames A-B)" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}"
+expect_fail "video and frame" "--frame" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --frame 2 --video "$work/x.mp4"
+expect_fail "video without ffmpeg" "--video: ffmpeg: not found" \
+  env PATH=/nonexistent "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/x.mp4"
+for f in x.mp4 x.avi x.exr x.png; do expect_no_file "bad video/display flags" "$work/$f"; done
+expect_fail "format /1 with colour" "light.radiance: an [r, g, b] radiance needs" \
+  "$bin" render "$src/tests/scenes/bad/v1_rgb_light.json" -m point --out "$work/x.exr"
+expect_ok "info colour" "$bin" info "$colour"
+
+# ---------------------------------------------------------------------------------------
+# Bad and extreme input (docs/scene-format-notes.md; README "Exit codes").
+edge=$src/tests/scenes/edge bad=$src/tests/scenes/bad
+
+# Outputs are checked before the first pixel: a missing or unwritable folder fails at
+# once (the full-size reference takes seconds), with exit code 1 and no file.
+expect_rc "missing folder" 1 "folder '$work/nodir' does not exist (--mkdir creates it)" \
+  "$bin" render "$scene" -m reference -o "$work/nodir/r.exr"
+expect_fast "missing folder fails before rendering" 3 \
+  "$bin" render "$scene" -m reference -o "$work/nodir/r.exr"
+expect_no_file "missing folder" "$work/nodir"
+if [ "$(id -u)" = 0 ]; then ro=/sys; else ro=$work/readonly && mkdir -p "$ro" && chmod 555 "$ro"; fi
+expect_rc "unwritable folder" 1 "cannot write in folder '$ro'" \
+  "$bin" render "$scene" -m reference -o "$ro/r.exr"
+expect_fast "unwritable folder fails before rendering" 3 \
+  "$bin" render "$scene" -m reference -o "$ro/r.exr"
+expect_rc "output is a folder" 1 "cannot write: it is a folder" \
+  bash -c "mkdir -p '$work/isdir.exr' && '$bin' render '$scene' -m point -o '$work/isdir.exr'"
+# The README's sequence example, in a fresh folder, with --mkdir (it says so first).
+mkdir -p "$work/fresh"
+expect_rc "readme sequence without --mkdir" 1 "folder 'seq' does not exist" \
+  bash -c "cd '$work/fresh' && '$bin' render '$scene' -m point --frames 0-2 --width 16 -o seq/point_%04d.exr"
+expect_rc "readme sequence with --mkdir" 0 "created folder 'seq' (--mkdir)" \
+  bash -c "cd '$work/fresh' && '$bin' render '$scene' -m point --frames 0-2 --width 16 -o seq/point_%04d.exr --mkdir"
+for f in 0 1 2; do
+  [ -s "$work/fresh/seq/point_000$f.exr" ] && passes=$((passes + 1)) || {
+    echo "FAIL readme sequence: seq/point_000$f.exr missing"
+    fails=$((fails + 1))
+  }
+done
+expect_rc "diff --out into a missing folder" 1 "does not exist (--mkdir creates it)" \
+  "$bin" diff "$work/r1.exr" "$work/r3.pfm" --out "$work/nodir2/d.png"
+expect_rc "diff --out --mkdir" 0 "created folder" \
+  "$bin" diff "$work/r1.exr" "$work/r3.pfm" --out "$work/newdir/d.png" --mkdir
+expect_rc "compare into a file" 1 "--out: '$work/r1.exr' is not a folder" \
+  "$bin" compare "$scene" -m point --frames 0-0 --width 16 --no-video -q --out "$work/r1.exr"
+expect_rc "compare into an unwritable folder" 1 "--out: cannot write in folder '$ro'" \
+  "$bin" compare "$scene" -m point --frames 0-0 --no-video -q --out "$ro/study"
+expect_fast "compare into an unwritable folder fails before rendering" 3 \
+  "$bin" compare "$scene" -m point --frames 0-0 --no-video -q --out "$ro/study"
+expect_rc "report into a missing folder" 1 "does not exist" \
+  "$bin" report "$work/no_results.json" --markdown "$work/nodir3/r.md"
+
+# Displaced water with the camera under a crest: every method renders (the writers refuse
+# a non-finite pixel, so exit code 0 means every pixel is finite).
+for m in point reference supersample staa lean taa microspec specaa bruneton; do
+  expect_rc "under the crests: $m" 0 "-> $work/below_$m.pfm" \
+    "$bin" render "$edge/camera_below_crests.json" -m "$m" --width 48 --samples 2x2x2 \
+    --lean-size 256 --taa-warmup 2 -q -o "$work/below_$m.pfm"
+done
+expect_rc "under the crests: finite" 0 "rmse     0" \
+  "$bin" diff "$work/below_staa.pfm" "$work/below_staa.pfm"
+# The baselines count the pixels where their model fails (here: all of frame 0).
+expect_rc "fallback pixels counted" 0 ", 1296 fallback pixels" \
+  "$bin" render "$edge/camera_below_crests.json" -m lean --lean-size 256 --width 48 -q \
+  -o "$work/below_lean.pfm"
+# The shortest and longest waves at the breaking steepness on displaced water: bounded
+# work (every method on every edge scene: EdgeScenes.EveryMethodIsFinite).
+for m in point staa; do
+  expect_rc "extreme waves: $m" 0 "-> $work/extreme.pfm" \
+    timeout 60 "$bin" render "$edge/extreme_waves.json" -m "$m" --width 64 -q -o "$work/extreme.pfm"
+done
+
+# diff refuses non-finite input, naming the file and the pixel count.
+python3 - "$work" <<'PY'
+import struct, sys
+w, h = 4, 3
+vals = [0.5] * (w * h)
+vals[5] = float("nan")
+vals[7] = float("inf")
+with open(sys.argv[1] + "/nan.pfm", "wb") as f:
+    f.write(b"Pf\n%d %d\n-1.0\n" % (w, h) + struct.pack("<%df" % (w * h), *vals))
+    vals[5] = vals[7] = 0.5
+with open(sys.argv[1] + "/fine.pfm", "wb") as f:
+    f.write(b"Pf\n%d %d\n-1.0\n" % (w, h) + struct.pack("<%df" % (w * h), *vals))
+PY
+expect_rc "diff of NaN" 1 "$work/nan.pfm: 2 of 12 pixels are not finite (NaN or infinite)" \
+  "$bin" diff "$work/nan.pfm" "$work/fine.pfm"
+expect_rc "diff of NaN as the reference" 1 "$work/nan.pfm: 2 of 12 pixels are not finite" \
+  "$bin" diff "$work/fine.pfm" "$work/nan.pfm"
+
+# Extreme values are rejected by the scene loader with the key (exit code 1).
+expect_rc "wave vector 1e8" 1 "surface.waves[0].wave_vector: the wavelength 2 pi / |k| must be in" \
+  "$bin" render "$bad/wave_vector_huge.json" -m point -o "$work/x.exr"
+expect_rc "amplitude 1e15" 1 "surface.waves[0].amplitude: the steepness amplitude * |wave_vector|" \
+  "$bin" render "$bad/amplitude_steep.json" -m reference -o "$work/x.exr"
+expect_rc "light radiance 1e308" 1 "light.radiance: must be at most 1e+10" \
+  "$bin" render "$bad/light_radiance_huge.json" -m staa -o "$work/x.exr"
+expect_rc "camera y 1e308" 1 "camera.position: must be within 100000 m of the origin" \
+  "$bin" info "$bad/camera_high.json"
+expect_rc "t0 1e308" 1 "animation.t0: must be in [-1e+07, 1e+07] s, got 1e+308" \
+  "$bin" render "$bad/t0_huge.json" -m point -o "$work/x.exr"
+expect_rc "duplicate key" 1 "surface.waves[2].amplitude: duplicate key" \
+  "$bin" info "$bad/duplicate_key.json"
+expect_no_file "rejected scenes" "$work/x.exr"
+# Files that are not regular files fail at once.
+expect_rc "info /dev/zero" 1 "/dev/zero: cannot read: not a regular file" "$bin" info /dev/zero
+expect_fast "info /dev/zero is immediate" 5 "$bin" info /dev/zero
+expect_rc "render a folder" 1 "$work: cannot read: a folder" "$bin" render "$work" -m point -o "$work/x.exr"
+mkfifo "$work/fifo.json"
+expect_rc "info a fifo" 1 "fifo.json: cannot read: not a regular file" "$bin" info "$work/fifo.json"
+expect_fast "info a fifo is immediate" 5 "$bin" info "$work/fifo.json"
+
+# Usage errors exit with 2, naming the flag; failed work with 1; help with 0.
+expect_rc "exposure nan" 2 "--exposure: must be a number in [-64, 64] (got 'nan')" \
+  "$bin" render "$scene" -m point --exposure nan -o "$work/x.png"
+expect_no_file "exposure nan" "$work/x.png"
+expect_rc "width abc" 2 "--width: must be an integer in [1, 16384] (got 'abc')" \
+  "$bin" render "$scene" -m point --width abc -o "$work/x.exr"
+expect_rc "threads x" 2 "--threads: must be an integer in [0, 1024] (got 'x')" \
+  "$bin" render "$scene" -m point -j x -o "$work/x.exr"
+expect_rc "unknown flag" 2 "--bogus" "$bin" render "$scene" -m point --bogus -o "$work/x.exr"
+expect_rc "missing flag" 2 "--out: required" "$bin" render "$scene" -m point
+expect_rc "no subcommand" 2 "A subcommand is required" "$bin"
+expect_rc "unknown method" 2 "--method: unknown method 'nope'" \
+  "$bin" render "$scene" -m nope -o "$work/x.exr"
+expect_rc "frame past the animation" 2 "--frame: frame 60 is outside the animation" \
+  "$bin" render "$scene" -m point --frame 60 -o "$work/x.exr"
+expect_rc "taa alpha nan" 2 "--taa-alpha: must be a finite number (got 'nan')" \
+  "$bin" render "$scene" -m taa --taa-alpha nan -o "$work/x.exr"
+expect_rc "alias start nan" 2 "--alias-start: must be a number in [0, 100] (got 'nan')" \
+  "$bin" render "$scene" -m staa --alias-start nan -o "$work/x.exr"
+expect_rc "diff peak nan" 2 "--peak: must be a finite number (got 'nan')" \
+  "$bin" diff "$work/r1.exr" "$work/r3.pfm" --peak nan
+expect_rc "bench frame" 2 "--frame: frame 99 is outside the animation" \
+  "$bin" bench "$scene" --methods point --frame 99 --width 16 --height 9
+expect_rc "compare variant flag" 2 "--method: 'point --bogus'" \
+  "$bin" compare "$scene" -m "point --bogus" --out "$work/study"
+expect_rc "bad scene is failed work" 1 "surface.waves[3].amplitude: must be >= 0" \
+  "$bin" render "$bad/amplitude_negative.json" -m point -o "$work/x.exr"
+expect_rc "help" 0 "Exit codes" "$bin" --help
+expect_rc "render help" 0 "--mkdir" "$bin" render --help
+
+# Progress: on a terminal a bar; in a log one line per frame; none with -q.
+log=$("$bin" render "$scene" -m point --frames 0-2 --width 16 -o "$work/pl_%02d.pfm" 2>&1 >/dev/null)
+if [ "$(grep -c '^point frame [0-2] ' <<<"$log")" = 3 ] && [ "$(wc -l <<<"$log")" = 3 ]; then
+  passes=$((passes + 1))
+else
+  echo "FAIL progress in a log: wanted 3 lines, one per frame, got: $log"
+  fails=$((fails + 1))
+fi
+quiet=$("$bin" render "$scene" -m point --frames 0-2 --width 16 -q -o "$work/pl_%02d.pfm" 2>&1 >/dev/null)
+[ -z "$quiet" ] && passes=$((passes + 1)) || { echo "FAIL -q printed: $quiet"; fails=$((fails + 1)); }
+tty=$(script -qec "'$bin' render '$scene' -m point --frames 0-2 --width 16 -o '$work/pt_%02d.pfm'" /dev/null 2>&1)
+if grep -qF "[##############################] 100.0%" <<<"$tty" && ! grep -q "point frame" <<<"$tty"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL progress on a terminal: wanted a bar, got: $tty"
+  fails=$((fails + 1))
+fi
+
+# The path-table cache is announced once, where it is written, and its folder can be chosen.
+out=$(SUNGLINT_CACHE_DIR="$work/cache_env" "$bin" render "$scene" -m staa --width 16 -q -o "$work/c.pfm" 2>&1)
+if grep -qF "cached them in $work/cache_env/path_tables.bin" <<<"$out" && [ -s "$work/cache_env/path_tables.bin" ]; then
+  passes=$((passes + 1))
+else
+  echo "FAIL cache announcement: $out"
+  fails=$((fails + 1))
+fi
+out=$(SUNGLINT_CACHE_DIR="$work/cache_env" "$bin" render "$scene" -m staa --width 16 -q -o "$work/c.pfm" 2>&1)
+if grep -q "path-integral" <<<"$out"; then
+  echo "FAIL cache announced again when it was read: $out"
+  fails=$((fails + 1))
+else
+  passes=$((passes + 1))
+fi
+# --cache-dir wins over the environment: with the environment pointing at a folder that
+# cannot exist, the tables are read from --cache-dir's folder, silently (no generation:
+# generating them takes a minute in the sanitizer build).
+out=$(SUNGLINT_CACHE_DIR=/proc/none "$bin" render "$scene" -m staa --width 16 -q -o "$work/c.pfm" \
+  --cache-dir "$work/cache_env" 2>&1)
+if [ $? -eq 0 ] && ! grep -q "path-integral" <<<"$out"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL --cache-dir not used: $out"
+  fails=$((fails + 1))
+fi
+
+# A clone stands alone: no paths into ../shared and no internal issue numbers in the docs,
+# the README or the code's comments.
+hits=$(cd "$src" && grep -rnE '\.\./shared|shared/(papers|spec|scenes)|[Ii]ssues? #?[0-9]' README.md docs src tests scripts \
+  --include='*.md' --include='*.h' --include='*.cpp' --include='*.sh' --include='*.py' --include='*.glsl' 2>/dev/null |
+  grep -v "^tests/cli/cli_test.sh:")
+[ -z "$hits" ] && passes=$((passes + 1)) || { echo "FAIL references a clone lacks: $hits"; fails=$((fails + 1)); }
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

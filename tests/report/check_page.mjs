@@ -1,7 +1,8 @@
 // Opens an HTML page in headless Chromium and checks what a reader would see: the page
 // loads with no console error, no uncaught exception and no failed load; every <img> has
-// decoded pixels; every <video> has decoded a frame; every chart canvas belongs to a
-// Chart.js chart. Saves a full-page screenshot. Exit status 0 when all checks pass.
+// decoded pixels, and an <img class="crop"> (the report's crops at 2:1) is shown no
+// smaller than its pixels; every <video> has decoded a frame; every chart canvas belongs
+// to a Chart.js chart (their ids are printed). Saves a full-page screenshot. Exit status 0 when all checks pass.
 //
 // Chromium is driven through the Chrome DevTools Protocol over a pipe
 // (--remote-debugging-pipe: JSON messages ending in a NUL byte on file descriptors 3 and
@@ -121,7 +122,11 @@ const pageChecks = `(async () => {
   await settle(() => imgs.every((i) => i.complete));
   for (const i of imgs) {
     if (!i.complete || i.naturalWidth === 0) problems.push('image does not load: ' + i.getAttribute('src'));
+    else if (i.classList.contains('crop') && i.getBoundingClientRect().width < i.naturalWidth) {
+      problems.push('crop shown shrunk: ' + i.getAttribute('src'));
+    }
   }
+  const crops = imgs.filter((i) => i.classList.contains('crop')).length;
   const videos = [...document.querySelectorAll('video')];
   await settle(() => videos.every((v) => v.error || v.readyState >= 2));
   for (const v of videos) {
@@ -136,7 +141,8 @@ const pageChecks = `(async () => {
       if (!Chart.getChart(c)) problems.push('canvas without a chart: ' + (c.id || '?'));
     }
   }
-  return { problems, images: imgs.length, videos: videos.length, charts: canvases.length };
+  return { problems, images: imgs.length, crops, videos: videos.length, charts: canvases.length,
+    chartIds: canvases.map((c) => c.id) };
 })()`;
 
 (async () => {
@@ -169,7 +175,8 @@ const pageChecks = `(async () => {
   const r = await send('Runtime.evaluate',
     { expression: pageChecks, awaitPromise: true, returnByValue: true }, sessionId);
   if (r.exceptionDetails) problems.push(`page checks threw: ${r.exceptionDetails.text}`);
-  const v = (r.result && r.result.value) || { problems: [], images: 0, videos: 0, charts: 0 };
+  const v = (r.result && r.result.value) ||
+    { problems: [], images: 0, crops: 0, videos: 0, charts: 0, chartIds: [] };
   problems.push(...v.problems);
   // Full-page screenshot: grow the viewport to the content's height (capped).
   const m = await send('Page.getLayoutMetrics', {}, sessionId);
@@ -182,6 +189,7 @@ const pageChecks = `(async () => {
   await new Promise((ok) => setTimeout(ok, 200));
   clearTimeout(timer);
   console.log(`check_page: ${v.images} images, ${v.videos} videos, ${v.charts} charts; screenshot ${screenshot}`);
+  console.log(`check_page: ${v.crops} crops; charts ${v.chartIds.join(' ')}`);
   if (problems.length > 0) {
     for (const p of problems) console.log(`PROBLEM ${p}`);
     finish(1);

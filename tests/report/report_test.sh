@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The study as a user meets it: `sunglint compare` on two shared scenes at a tiny size
 # writes a report that opens in headless Chromium with no console error, every picture
-# and video decoded and every chart drawn (check_page.mjs, which also saves a
+# and video decoded, every chart drawn (the flicker plot of each scene among them) and the
+# crops shown at 2:1 pixels, never shrunk (check_page.mjs, which also saves a
 # screenshot); a copy broken on purpose (a missing picture, a missing video, a script
 # error) is caught; bad options fail naming the option; without ffmpeg the error says
 # what to do.
@@ -22,13 +23,14 @@ chromium=${CHROMIUM:-/usr/bin/chromium}
 
 study=$work/study
 run_compare() {
-  "$bin" compare "$src/scenes/simple.json" "$src/scenes/high.json" -m point \
+  "$bin" compare "$src/scenes/simple.json" "$src/scenes/high.json" "$src/scenes/sunset.json" -m point \
     -m "supersample --samples 2x2x1" --frames 0-2 --width 48 --reference 2x2x2 \
     --budgets 1x1x1,2x2x1 -q "$@"
 }
 if out=$(run_compare --out "$study" 2>&1); then pass; else fail "compare: $out"; fi
 for f in index.html results.json results.csv results.md chart.umd.min.js report.js report.css \
-  img/simple-grid.png img/high-grid.png video/simple.mp4 video/high.mp4; do
+  img/simple-grid.png img/high-grid.png img/simple-crops.png img/simple/point-near.png \
+  img/high/reference-samples-2x2x2-far.png video/simple.mp4 video/high.mp4 video/sunset.mp4; do
   [ -s "$study/$f" ] && pass || fail "missing $study/$f"
 done
 grep -q "report: $study/index.html" <<<"$out" && pass || fail "compare does not say where the report is: $out"
@@ -37,22 +39,42 @@ grep -q "report: $study/index.html" <<<"$out" && pass || fail "compare does not 
 if shot=$(node "$src/tests/report/check_page.mjs" "$study/index.html" "$work/screenshot.png" \
   --chromium "$chromium" 2>&1); then
   pass
-  grep -q "6 images, 2 videos, 6 charts" <<<"$shot" && pass || fail "unexpected page content: $shot"
+  # 9 pictures (grids, sliders) and 18 crops (3 scenes x 3 columns x near, far); 4 charts of
+  # the study, a quality-cost curve and a flicker plot per scene. The colour scene's video
+  # (RGB, Rec. 709) decodes like the grey ones.
+  grep -q "27 images, 3 videos, 10 charts" <<<"$shot" && pass || fail "unexpected page content: $shot"
+  grep -q "18 crops; charts .*chart-flicker-simple.*chart-flicker-high.*chart-flicker-sunset" \
+    <<<"$shot" && pass || fail "no crops or flicker charts: $shot"
 else
   fail "report page: $shot"
 fi
+# The crops are 2:1 pixels of a 12x6 window of the 48x27 frames (a quarter of each side).
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $3 * 256 + $4 "x" $7 * 256 + $8}'; }
+[ "$(png_size "$study/img/simple/point-near.png")" = 24x12 ] && pass ||
+  fail "crop size $(png_size "$study/img/simple/point-near.png"), wanted 24x12"
+# The flicker pixel and its traces are in results.json; the Markdown has the table.
+grep -q '"flicker_pixel": {' "$study/results.json" && pass || fail "no flicker pixel in results.json"
+grep -q '^Flicker at pixel (' "$study/results.md" && pass || fail "no flicker table in results.md"
+# The colour scene: per-channel figures in results.json, .csv and the page.
+grep -q '"channels": 3' "$study/results.json" && pass || fail "colour scene not in colour"
+grep -q '^sunset,method,point,image,.*,[0-9.e-]*,[0-9.e-]*,[0-9.e-]*$' "$study/results.csv" && pass ||
+  fail "no per-channel columns for the colour scene in results.csv"
+grep -q 'class="num channels"' "$study/index.html" && pass || fail "no per-channel table in the page"
 [ -s "$work/screenshot.png" ] && pass || fail "no screenshot"
 
 # A broken copy must be caught: the check can fail.
 broken=$work/broken
 cp -r "$study" "$broken"
-rm "$broken/img/simple-grid.png" "$broken/video/high.mp4"
+rm "$broken/img/simple-grid.png" "$broken/video/high.mp4" "$broken/img/high/point-far.png"
+sed -i 's|class="crop" src="img/simple/point-near.png" width="24"|class="crop" src="img/simple/point-near.png" width="12"|' \
+  "$broken/index.html"
 echo 'window.undefinedFunction();' >>"$broken/report.js"
 if bad=$(node "$src/tests/report/check_page.mjs" "$broken/index.html" "$work/broken.png" \
   --chromium "$chromium" 2>&1); then
   fail "a broken report passed the check: $bad"
 else
-  for want in "image does not load: img/simple-grid.png" "video/high.mp4" "undefinedFunction"; do
+  for want in "image does not load: img/simple-grid.png" "video/high.mp4" "undefinedFunction" \
+    "image does not load: img/high/point-far.png" "crop shown shrunk: img/simple/point-near.png"; do
     grep -qF "$want" <<<"$bad" && pass || fail "broken report: '$want' not reported: $bad"
   done
 fi

@@ -115,6 +115,32 @@
     });
   });
 
+  // Flicker: one pixel's value over the frames, the reference against every method.
+  scenes.forEach(function (s) {
+    var canvas = document.getElementById('chart-flicker-' + slug(s.name));
+    if (!canvas || !s.flicker_pixel) return;
+    var first = results.settings.frames[0];
+    var frames = s.reference.trace.map(function (_, f) { return first + f; });
+    var datasets = [{ label: 'reference', data: s.reference.trace, borderColor: '#000',
+      backgroundColor: '#000', borderWidth: 3, pointRadius: 0 }];
+    s.methods.forEach(function (m, k) {
+      datasets.push({ label: m.label, data: m.trace, borderColor: colour(k),
+        backgroundColor: colour(k), borderWidth: 1.5, pointRadius: 2 });
+    });
+    new Chart(canvas, {
+      type: 'line',
+      data: { labels: frames, datasets: datasets },
+      options: Object.assign({}, common, {
+        plugins: { title: { display: true, text: s.name + ': pixel (' + s.flicker_pixel.x + ', ' +
+          s.flicker_pixel.y + ') over time' } },
+        scales: {
+          x: { title: { display: true, text: 'frame' } },
+          y: { beginAtZero: true, title: { display: true, text: 'linear value' } }
+        }
+      })
+    });
+  });
+
   // Sliders: the method's picture over the reference's, cut at the slider's position.
   Array.prototype.forEach.call(document.querySelectorAll('.slider'), function (box) {
     var over = box.querySelector('img.over');

@@ -1,0 +1,172 @@
+#include "gl_engine/gl_engine.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+
+#include "base/error.h"
+#include "gl/check.h"
+#include "gl/dispatch.h"
+#include "gl_engine/uniforms.h"
+#include "methods/reference.h"
+#include "shading/kernel_frame.h"
+#include "shading/kernel_table.h"
+#include "shading/path_table.h"
+
+namespace sg::gl_engine {
+
+const char* gl_methods() {
+  return "point, supersample, reference, staa-temporal, staa";
+}
+
+GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
+  validate(o);
+  GlVariant v;
+  if (method == "point") {
+    v.entry = KernelEntry::point;
+  } else if (method == "reference") {
+    const ReferenceSettings rs = reference_settings(o);
+    v.entry = KernelEntry::reference;
+    v.segments = kf::kMaxSegments;
+    v.reference.sx = rs.samples.sx;
+    v.reference.sy = rs.samples.sy;
+    v.reference.nt = rs.samples.st;
+    v.reference.batches = rs.batches;
+    v.reference.adaptive = rs.adaptive;
+    v.reference.quiet_sx = v.reference.quiet_sy = rs.quiet;
+    v.reference.margin = static_cast<float>(rs.margin);
+  } else if (method == "supersample") {
+    v.entry = KernelEntry::stratified;
+    v.counts.sx = o.samples.sx;
+    v.counts.sy = o.samples.sy;
+    v.counts.nt = o.samples.st;
+    v.counts.time_at_frame = method == "supersample" && o.samples.st == 1;
+  } else if (method == "staa-temporal") {
+    v.entry = KernelEntry::staa_temporal;
+    v.segments = o.staa.segments;
+  } else if (method == "staa") {
+    if (o.staa.footprint == FootprintMode::exact) {
+      throw Error("--footprint exact: not on the GL engine (the swept parallelogram is "
+                  "integrated on the host: use --engine cpu, or --footprint gaussian|none)");
+    }
+    v.entry = KernelEntry::staa;
+    v.segments = o.staa.segments;
+    const StaaOptions& s = o.staa;
+    const AliasRange range = alias_range(s);
+    v.params.per_pixel_ndf = s.ndf == NdfMode::per_pixel;
+    v.params.ndf_mean_shift = s.ndf_mean_shift;
+    v.params.kernels = s.kernels;
+    v.params.elongation_threshold = static_cast<float>(s.elongation_threshold);
+    v.params.fallback_riemann = s.fallback == FallbackMode::riemann;
+    v.params.fallback_along_path = s.fallback_along_path;
+    v.params.riemann_cells = s.riemann_cells;
+    v.params.alias_start = static_cast<float>(range.start);
+    v.params.alias_end = static_cast<float>(range.end);
+    v.params.nyquist_max = s.nyquist_max_axis;
+    v.params.footprint = s.footprint == FootprintMode::none ? 0 : 1;
+    v.params.curvature_limit = static_cast<float>(s.curvature_limit);
+  } else {
+    throw Error("--method " + method + ": not on the GL engine (it runs " + gl_methods() +
+                "; use --engine cpu)");
+  }
+  return v;
+}
+
+GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
+    : v_(gl_variant(method, o)), program_(kernel_program(v_.entry, v_.segments)) {
+  if (v_.entry == KernelEntry::staa) {
+    const PathTables& t = PathTables::shared();
+    const kernel_tables::R32Texture2D f = t.f_texture();
+    const kernel_tables::R32Texture3D s = t.s_texture();
+    table_f_ = gl::Texture::table(GL_TEXTURE_2D, f.width, f.height, 1,
+                                  {f.data, size_t(f.width) * f.height});
+    table_s_ = gl::Texture::table(GL_TEXTURE_2D_ARRAY, s.width, s.height, s.layers,
+                                  {s.data, size_t(s.width) * s.height * s.layers});
+    tinfo_ = t.kernel_info_float();
+    const KernelFitTexture& k = kernel_fit_texture();
+    const kernel_tables::R32Texture2D kv = k.view();
+    fits_ = gl::Texture::table(GL_TEXTURE_2D, kv.width, kv.height, 1, k.texels);
+    finfo_ = k.info_float;
+  }
+  inputs_ = std::make_unique<KernelInputsF>();
+}
+
+GlEngine::~GlEngine() = default;
+
+void GlEngine::upload(const FrameContext& ctx) {
+  const int segments = v_.entry == KernelEntry::reference
+                           ? reference_segments(ctx.model, ctx.time.duration())
+                           : v_.segments;
+  build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_);
+  const int w = ctx.model.width(), h = ctx.model.height();
+  if (w != width_ || h != height_) {
+    weights_ = gl::Texture::image_2d(w, h, GL_RGBA32F);
+    width_ = w;
+    height_ = h;
+  }
+  // The wave buffer: at least one texel (a scene may have no waves).
+  std::vector<float> texels(std::max<size_t>(4, inputs_->texels.size() * 4), 0.0f);
+  for (size_t i = 0; i < inputs_->texels.size(); ++i) {
+    for (int c = 0; c < 4; ++c) texels[4 * i + c] = inputs_->texels[i][c];
+  }
+  if (waves_.texels() * 4 != texels.size()) {
+    waves_ = gl::TextureBuffer(texels, GL_RGBA32F);
+  } else {
+    waves_.update(texels);
+  }
+  UniformWriter u(program_);
+  u.set("image_size", kf::ivec2(w, h));
+  set_uniforms(u, "frame", inputs_->frame);
+  if (v_.entry == KernelEntry::stratified) set_uniforms(u, "counts", v_.counts);
+  if (v_.entry == KernelEntry::reference) set_uniforms(u, "ref_params", v_.reference);
+  if (v_.entry == KernelEntry::staa) {
+    set_uniforms(u, "params", v_.params);
+    set_uniforms(u, "tinfo", tinfo_);
+    set_uniforms(u, "finfo", finfo_);
+  }
+}
+
+void GlEngine::run() {
+  weights_.bind_image(0, GL_WRITE_ONLY);
+  waves_.bind(1);
+  if (v_.entry == KernelEntry::staa) {
+    table_f_.bind_texture(2);
+    table_s_.bind_texture(3);
+    fits_.bind_texture(4);
+  }
+  gl::dispatch_2d(program_, width_, height_);
+}
+
+void GlEngine::dispatch(const FrameContext& ctx) {
+  upload(ctx);
+  timer_.begin();
+  run();
+  timer_.end();
+  gl::barrier();
+  last_ms_ = timer_.milliseconds();
+  gl::check_errors("GL engine dispatch");
+}
+
+std::vector<float> GlEngine::read_weights() const {
+  return weights_.read();
+}
+
+double GlEngine::time_dispatch(const FrameContext& ctx, int warmup, int repeats) {
+  upload(ctx);
+  for (int k = 0; k < warmup; ++k) run();
+  gl::barrier();
+  std::vector<double> ms;
+  for (int k = 0; k < std::max(1, repeats); ++k) {
+    timer_.begin();
+    run();
+    timer_.end();
+    ms.push_back(timer_.milliseconds());
+  }
+  gl::barrier();
+  gl::check_errors("GL engine timing");
+  std::sort(ms.begin(), ms.end());
+  last_ms_ = ms[ms.size() / 2];
+  return last_ms_;
+}
+
+}  // namespace sg::gl_engine

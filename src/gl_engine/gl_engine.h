@@ -1,0 +1,80 @@
+// The GL engine: the shading kernel run as an OpenGL 4.5 compute shader, one invocation per
+// pixel, in float (docs/gpu.md). It runs `point`, `supersample`, `reference`,
+// `staa-temporal` and `staa` (both NDFs, `--footprint none|gaussian`, every kernel count
+// and fallback) with the CPU engine's estimators and seeds; anything else is refused with a
+// message naming the method or flag, never rendered elsewhere. Its `reference` is the CPU
+// engine's estimator (kernel/reference.glsl, its K per frame from the waves and the
+// shutter) but does not report its noise: the batches' spread stays on the GPU.
+//
+// Per frame, on the host: the kernel's inputs in float (shading/kernel_frame.h: the phases
+// reduced in double at the frame's time, camera-relative, the waves sorted), uploaded as
+// the wave buffer texture and the kernel's structs as uniforms (gl_engine/uniforms.h); one
+// dispatch; the weights stay in an RGBA32F image on the GPU until read back. The tables
+// (path tables, kernel fits) are uploaded once, as textures. Needs a current GL context.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/program.h"
+#include "gl/texture.h"
+#include "gl/texture_buffer.h"
+#include "gl/timer.h"
+#include "gl_engine/kernel_program.h"
+#include "methods/method.h"
+#include "methods/options.h"
+#include "shading/kernel_frame.h"
+
+namespace sg::gl_engine {
+
+// What the GL engine runs for a method and its options; throws sg::Error naming the method
+// or the flag the engine lacks.
+struct GlVariant {
+  KernelEntry entry = KernelEntry::point;
+  int segments = 1;
+  kf::SampleCounts counts{};
+  kf::ReferenceParams reference{};  // `reference`: segments is the cap, each frame picks K
+  kf::StaaParams params{};
+};
+GlVariant gl_variant(const std::string& method, const MethodOptions& options);
+
+// The methods the GL engine runs, for messages and help.
+const char* gl_methods();
+
+class GlEngine {
+ public:
+  GlEngine(const std::string& method, const MethodOptions& options);
+  ~GlEngine();
+
+  // Builds the frame's inputs and dispatches; the weights are then in weights_texture().
+  void dispatch(const FrameContext& ctx);
+  // The weights of the last dispatch, row 0 at the top, (light, zenith, horizon, sea) per
+  // pixel; waits for the GPU.
+  std::vector<float> read_weights() const;
+  const gl::Texture& weights_texture() const { return weights_; }
+  // GPU time of `repeats` dispatches of ctx's frame after `warmup` more, in ms: the median.
+  double time_dispatch(const FrameContext& ctx, int warmup, int repeats);
+  // GPU time of the last dispatch in ms.
+  double last_gpu_ms() const { return last_ms_; }
+  const gl::Program& program() const { return program_; }
+
+ private:
+  void upload(const FrameContext& ctx);
+  void run();
+
+  GlVariant v_;
+  gl::Program program_;
+  gl::Texture table_f_, table_s_, fits_;
+  kf::PathTableInfo tinfo_{};
+  kf::KernelFitInfo finfo_{};
+  gl::TextureBuffer waves_;
+  gl::Texture weights_;
+  gl::GpuTimer timer_;
+  int width_ = 0, height_ = 0;
+  double last_ms_ = 0;
+  std::unique_ptr<KernelInputsF> inputs_;
+};
+
+}  // namespace sg::gl_engine

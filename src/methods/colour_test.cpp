@@ -1,0 +1,94 @@
+// Colour is linear: every method of the catalogue renders a colour scene, channel by
+// channel, equal to grey renders of the same scene with each channel's radiances (the
+// scene spec's format /2 defines each channel by the rules of a grey scene). Methods
+// return weights of the four radiances (method.h), so this holds to float rounding; a
+// method that mixed channels, post-processed only channel 0 (TAA's resolve) or let its
+// weights depend on a radiance's value would fail it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/render.h"
+#include "methods/method.h"
+#include "testing/testing.h"
+
+namespace sg {
+namespace {
+
+// A colour scene with every radiance distinct per channel: a visible sun in the frame, a
+// gradient sky, Fresnel, a sea, displaced waves.
+Scene colour_scene() {
+  Scene s = testing::small_scene(testing::project_scene("simple").surface.waves, 40, 24);
+  s.surface.geometry = Geometry::displaced;
+  s.surface.fresnel = FresnelMode::schlick;
+  s.light.visible = true;
+  s.light.angular_radius_deg = 2.0;  // a few pixels at this size
+  s.light.radiance = Rgb(30, 14, 5);
+  s.sky = SkyDesc{Rgb(0.05, 0.12, 0.4), Rgb(0.6, 0.35, 0.2), 0.7, true};
+  s.surface.sea_radiance = Rgb(0.004, 0.02, 0.03);
+  return s;
+}
+
+// The grey scene of channel c.
+Scene channel_scene(const Scene& colour, int c) {
+  Scene s = colour;
+  s.light.radiance = Rgb(colour.light.radiance[c]);
+  s.sky.zenith = Rgb(colour.sky.zenith[c]);
+  s.sky.horizon = Rgb(colour.sky.horizon[c]);
+  s.surface.sea_radiance = Rgb(colour.surface.sea_radiance[c]);
+  return s;
+}
+
+std::vector<Image> render(const Scene& s, const std::string& method, int first, int last) {
+  MethodOptions o;
+  o.samples = SampleCounts{2, 2, 2};
+  const SceneModel model(s);
+  auto m = make_method(method, o);
+  std::vector<Image> frames;
+  render_frames(model, *m, first, last, RenderSettings{},
+                [&](int, const Image& img) { frames.push_back(img); });
+  return frames;
+}
+
+TEST(Colour, EveryMethodRendersEachChannelAsTheGreySceneOfThatChannel) {
+  const Scene colour = colour_scene();
+  ASSERT_FALSE(colour.grey());
+  for (const MethodInfo& info : method_catalog()) {
+    SCOPED_TRACE(info.name);
+    const std::vector<Image> rgb = render(colour, info.name, 3, 4);
+    ASSERT_EQ(rgb.size(), 2u);
+    ASSERT_EQ(rgb[0].channels, 3);
+    double largest = 0;
+    for (int c = 0; c < 3; ++c) {
+      const Scene g = channel_scene(colour, c);
+      ASSERT_TRUE(g.grey());
+      const std::vector<Image> grey = render(g, info.name, 3, 4);
+      for (size_t f = 0; f < rgb.size(); ++f) {
+        ASSERT_EQ(grey[f].channels, 1);
+        int bad = 0;
+        for (int j = 0; j < colour.height; ++j) {
+          for (int i = 0; i < colour.width; ++i) {
+            const double x = rgb[f].at(i, j, c), y = grey[f].at(i, j);
+            largest = std::max(largest, y);
+            if (std::fabs(x - y) > 1e-6 * std::fabs(y) + 1e-9 && bad++ < 3) {
+              ADD_FAILURE() << "frame " << f << " pixel " << i << "," << j << " channel " << c
+                            << ": colour " << x << ", grey " << y;
+            }
+          }
+        }
+      }
+    }
+    EXPECT_GT(largest, 1.0);  // the sun or its glints are in the picture
+  }
+}
+
+// A grey scene renders one channel, whatever its format: its files stay as they were.
+TEST(Colour, GreySceneRendersOneChannel) {
+  Scene s = channel_scene(colour_scene(), 1);
+  EXPECT_EQ(render(s, "point", 0, 0)[0].channels, 1);
+  s.light.radiance = Rgb(1, 1, 0.5);
+  EXPECT_EQ(render(s, "point", 0, 0)[0].channels, 3);
+}
+
+}  // namespace
+}  // namespace sg

@@ -1,0 +1,61 @@
+// Pixels where a method's model does not apply. Every method returns a finite value on
+// every valid scene; where the assumption of its model fails (a camera below the crests,
+// a ray that grazes the water, a degenerate pixel footprint, a lobe whose shading is not
+// finite), it falls back to a defined value (each method's header says which) and counts
+// the pixel here, so that `sunglint render` can report how many pixels of a frame did.
+//
+// The fallback value is the spec's radiance along the ray through the pixel centre at the
+// frame time (what `point` returns): defined wherever the scene is valid, also with the
+// camera under the surface (the spec's convention: the ray hits at the camera).
+//
+// A method opts in by deriving from FallbackCounter: it calls reset_fallbacks() in
+// begin_frame and fallback() (any thread) where its model fails, or finite_or_fallback()
+// on its weights. fallback_pixels(method) reads the count of the last frame, or -1 for a
+// method that does not count.
+#pragma once
+
+#include <atomic>
+#include <cmath>
+
+#include "methods/method.h"
+
+namespace sg {
+
+// The radiance weights along the ray through the centre of pixel (i, j) at the frame time.
+RadianceWeights centre_ray_weights(const FrameContext& ctx, int i, int j);
+
+// Whether all four weights are finite.
+inline bool finite_weights(const RadianceWeights& w) {
+  return std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z) && std::isfinite(w.w);
+}
+
+class FallbackCounter {
+ public:
+  virtual ~FallbackCounter() = default;
+  long fallbacks() const { return fallbacks_.load(std::memory_order_relaxed); }
+
+ protected:
+  void reset_fallbacks() { fallbacks_.store(0, std::memory_order_relaxed); }
+  void count_fallback() const { fallbacks_.fetch_add(1, std::memory_order_relaxed); }
+  // Counts pixel (i, j) and returns its fallback weights.
+  RadianceWeights fallback(const FrameContext& ctx, int i, int j) const {
+    count_fallback();
+    return centre_ray_weights(ctx, i, j);
+  }
+  // `w` when all its weights are finite, else the fallback.
+  RadianceWeights finite_or_fallback(const RadianceWeights& w, const FrameContext& ctx, int i,
+                                     int j) const {
+    return finite_weights(w) ? w : fallback(ctx, i, j);
+  }
+
+ private:
+  mutable std::atomic<long> fallbacks_{0};
+};
+
+// The fallback pixels of the method's last frame; -1 when the method does not count them.
+inline long fallback_pixels(const Method& m) {
+  const auto* c = dynamic_cast<const FallbackCounter*>(&m);
+  return c ? c->fallbacks() : -1;
+}
+
+}  // namespace sg

@@ -1,0 +1,130 @@
+// Random valid scenes for property tests: anything the scene loader accepts, drawn so that
+// both ordinary seas and the edges of every range (scene/scene_limits.h) come up: waves of
+// 1 mm to 100 km at up to the breaking steepness, any dispersion and phase; cameras from
+// 1 mm to 100 km high, looking anywhere (also up, and below the crests of displaced water);
+// lights of any elevation, 0.001 to 89 degrees wide, radiances up to 1e10; times up to
+// 1e7 s. Each scene is returned through scene_to_json and parse_scene, so it is valid by
+// the loader's own rules (drawings it rejects are drawn again).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "base/error.h"
+#include "math/rng.h"
+#include "scene/scene.h"
+#include "scene/scene_limits.h"
+
+namespace sg::testing {
+
+class RandomScenes {
+ public:
+  explicit RandomScenes(uint64_t seed) : rng_(seed, 11) {}
+
+  // The next valid scene, `width` x `height`, and in `frame` a frame of its animation.
+  Scene next(int width, int height, int& frame) {
+    for (;;) {
+      Scene s = draw(width, height);
+      try {
+        Scene valid = parse_scene(scene_to_json(s), "random.json");
+        frame = static_cast<int>(u() * valid.animation.frames);
+        frame = std::min(frame, valid.animation.frames - 1);
+        return valid;
+      } catch (const Error&) {
+        ++rejected_;
+      }
+    }
+  }
+  int rejected() const { return rejected_; }
+
+ private:
+  double u() { return rng_.uniform(); }
+  bool chance(double p) { return u() < p; }
+  // Log-uniform in [lo, hi].
+  double logu(double lo, double hi) { return lo * std::pow(hi / lo, u()); }
+  double sign() { return chance(0.5) ? 1.0 : -1.0; }
+  vec3 direction(double min_elev_deg, double max_elev_deg) {
+    const double e = radians(min_elev_deg + (max_elev_deg - min_elev_deg) * u());
+    const double az = kTwoPi * u();
+    return vec3(std::cos(e) * std::sin(az), std::sin(e), -std::cos(e) * std::cos(az));
+  }
+
+  Scene draw(int width, int height) {
+    namespace L = limits;
+    Scene s;
+    s.name = "random";
+    s.width = width;
+    s.height = height;
+    // Waves: mostly a sea (5 cm to 500 m), sometimes anything the ranges allow.
+    const int n = chance(0.05) ? 0 : 1 + static_cast<int>(u() * 12);
+    const bool wild = chance(0.3);
+    for (int k = 0; k < n; ++k) {
+      Wave w;
+      const double lambda = wild ? logu(L::kMinWavelength, L::kMaxWavelength) : logu(0.05, 500.0);
+      const double kk = kTwoPi / lambda;
+      const double steep = chance(0.2) ? L::kMaxSteepness * u() : 0.1 * u() * u();
+      w.amplitude = steep / kk;
+      const double dir = kTwoPi * u();
+      w.wave_vector = vec2(kk * std::cos(dir), kk * std::sin(dir));
+      w.angular_frequency =
+          chance(0.7) ? std::sqrt(9.81 * kk) : sign() * logu(1e-6, L::kMaxAngularFrequency) * u();
+      w.phase = chance(0.1) ? sign() * L::kMaxPhase * u() : kTwoPi * u();
+      s.surface.waves.push_back(w);
+    }
+    s.surface.geometry = chance(0.5) ? Geometry::flat : Geometry::displaced;
+    s.surface.fresnel = chance(0.5) ? FresnelMode::none : FresnelMode::schlick;
+    // Radiances: grey or (format /2) colour; a constant or a gradient sky.
+    auto radiance = [&](double zero_chance) {
+      if (chance(zero_chance)) return Rgb(0.0);
+      if (chance(0.5)) return Rgb(logu(1e-6, L::kMaxRadiance));
+      return Rgb(logu(1e-6, L::kMaxRadiance), logu(1e-6, L::kMaxRadiance),
+                 logu(1e-6, L::kMaxRadiance));
+    };
+    s.surface.sea_radiance = radiance(0.5);
+    if (chance(0.5)) {
+      s.sky = SkyDesc::constant(radiance(0.5));
+    } else {
+      s.sky.gradient = true;
+      s.sky.zenith = radiance(0.3);
+      s.sky.horizon = radiance(0.3);
+      s.sky.exponent = logu(1e-3, 1e2);
+    }
+    // Camera: usually a few metres up looking at the water, sometimes anywhere.
+    double amp = 0;
+    for (const Wave& w : s.surface.waves)
+      amp += w.amplitude;
+    double h;
+    if (chance(0.15) && amp > 0) {
+      h = std::max(L::kMinCameraHeight, amp * u());  // below the crests
+    } else if (chance(0.3)) {
+      h = logu(L::kMinCameraHeight, 0.9 * L::kMaxCameraDistance);
+    } else {
+      h = logu(0.5, 50.0);
+    }
+    const double r = chance(0.2) ? std::sqrt(std::max(0.0, 0.8e10 - h * h)) * u() : 100 * u();
+    const double raz = kTwoPi * u();
+    s.camera.position = vec3(r * std::cos(raz), h, r * std::sin(raz));
+    const vec3 view = chance(0.8) ? direction(-60, 5) : direction(-90, 90);
+    s.camera.look_at = s.camera.position + logu(1e-3, 1e6) * view;
+    s.camera.up = chance(0.8) ? vec3(0, 1, 0) : direction(-90, 90) * logu(1e-3, 1e3);
+    s.camera.vfov_deg = chance(0.3) ? logu(L::kMinVfov, L::kMaxVfov) : 10 + 80 * u();
+    // Light.
+    s.light.direction = (chance(0.8) ? direction(-5, 60) : direction(-90, 90)) * logu(1e-3, 1e3);
+    s.light.angular_radius_deg =
+        chance(0.25) ? logu(L::kMinLightRadius, L::kMaxLightRadius) : 0.1 + 1.9 * u();
+    s.light.radiance = chance(0.3) ? radiance(0.0) : Rgb(1.0);
+    s.light.visible = chance(0.5);
+    // Animation.
+    s.animation.fps = chance(0.2) ? logu(L::kMinFps, L::kMaxFps) : 30.0;
+    s.animation.shutter = chance(0.2) ? 0.0 : u();
+    s.animation.frames = 1 + static_cast<int>(u() * 60);
+    s.animation.t0 = chance(0.5) ? 0.0 : sign() * logu(1e-3, 0.99 * L::kMaxTime);
+    return s;
+  }
+
+  Pcg32 rng_;
+  int rejected_ = 0;
+};
+
+}  // namespace sg::testing
