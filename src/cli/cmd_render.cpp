@@ -128,11 +128,13 @@ void run_render(RenderArgs& a) {
     }
   };
   if (!a.out.empty()) {
-    for (int f = range.first; f <= range.last; ++f) check_file(out_path(f), "--out");
+    for (int f = range.first; f <= range.last; ++f)
+      check_file(out_path(f), "--out");
   }
   if (!a.video.empty()) check_file(a.video, "--video");
   if (!a.variance_out.empty()) {
-    for (int f = range.first; f <= range.last; ++f) check_file(variance_path(f), "--variance-out");
+    for (int f = range.first; f <= range.last; ++f)
+      check_file(variance_path(f), "--variance-out");
   }
   // 4. The method on its engine (the GL engine refuses what it lacks, or says why no
   // OpenGL 4.5 context can be made).

@@ -46,8 +46,9 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     v.segments = o.staa.segments;
   } else if (method == "staa") {
     if (o.staa.footprint == FootprintMode::exact) {
-      throw Error("--footprint exact: not on the GL engine (the swept parallelogram is "
-                  "integrated on the host: use --engine cpu, or --footprint gaussian|none)");
+      throw Error(
+          "--footprint exact: not on the GL engine (the swept parallelogram is "
+          "integrated on the host: use --engine cpu, or --footprint gaussian|none)");
     }
     v.entry = KernelEntry::staa;
     v.segments = o.staa.segments;
@@ -107,7 +108,8 @@ void GlEngine::upload(const FrameContext& ctx) {
   // The wave buffer: at least one texel (a scene may have no waves).
   std::vector<float> texels(std::max<size_t>(4, inputs_->texels.size() * 4), 0.0f);
   for (size_t i = 0; i < inputs_->texels.size(); ++i) {
-    for (int c = 0; c < 4; ++c) texels[4 * i + c] = inputs_->texels[i][c];
+    for (int c = 0; c < 4; ++c)
+      texels[4 * i + c] = inputs_->texels[i][c];
   }
   if (waves_.texels() * 4 != texels.size()) {
     waves_ = gl::TextureBuffer(texels, GL_RGBA32F);
@@ -153,7 +155,8 @@ std::vector<float> GlEngine::read_weights() const {
 
 double GlEngine::time_dispatch(const FrameContext& ctx, int warmup, int repeats) {
   upload(ctx);
-  for (int k = 0; k < warmup; ++k) run();
+  for (int k = 0; k < warmup; ++k)
+    run();
   gl::barrier();
   std::vector<double> ms;
   for (int k = 0; k < std::max(1, repeats); ++k) {

@@ -46,7 +46,8 @@ RadianceWeights GlMethod::weights(const FrameContext&, int i, int j) const {
 void GlMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                           Image& out) const {
   for (int j = y0; j < y1; ++j) {
-    for (int i = x0; i < x1; ++i) store_pixel(ctx, out, i, j, weights(ctx, i, j));
+    for (int i = x0; i < x1; ++i)
+      store_pixel(ctx, out, i, j, weights(ctx, i, j));
   }
 }
 

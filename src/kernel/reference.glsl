@@ -159,13 +159,13 @@ SG_FN real poly6_derivative(IN(Poly6) p, real s) {
 
 // C(k, j) / C(6, j) for j <= k: power-basis to Bernstein coefficients of degree 6.
 const real kPowerToBernstein6[49] = {
-    1.0, 0.0,       0.0,       0.0,       0.0,       0.0,       0.0,  //
-    1.0, 1.0 / 6.0, 0.0,       0.0,       0.0,       0.0,       0.0,  //
-    1.0, 2.0 / 6.0, 1.0 / 15.0, 0.0,      0.0,       0.0,       0.0,  //
-    1.0, 3.0 / 6.0, 3.0 / 15.0, 1.0 / 20.0, 0.0,     0.0,       0.0,  //
-    1.0, 4.0 / 6.0, 6.0 / 15.0, 4.0 / 20.0, 1.0 / 15.0, 0.0,    0.0,  //
+    1.0, 0.0,       0.0,         0.0,         0.0,        0.0,       0.0,  //
+    1.0, 1.0 / 6.0, 0.0,         0.0,         0.0,        0.0,       0.0,  //
+    1.0, 2.0 / 6.0, 1.0 / 15.0,  0.0,         0.0,        0.0,       0.0,  //
+    1.0, 3.0 / 6.0, 3.0 / 15.0,  1.0 / 20.0,  0.0,        0.0,       0.0,  //
+    1.0, 4.0 / 6.0, 6.0 / 15.0,  4.0 / 20.0,  1.0 / 15.0, 0.0,       0.0,  //
     1.0, 5.0 / 6.0, 10.0 / 15.0, 10.0 / 20.0, 5.0 / 15.0, 1.0 / 6.0, 0.0,  //
-    1.0, 1.0,       1.0,       1.0,       1.0,       1.0,       1.0,
+    1.0, 1.0,       1.0,         1.0,         1.0,        1.0,       1.0,
 };
 
 // The Bernstein coefficients of p restricted to [a, b] (p(a + (b - a) s), s in [0, 1]):
@@ -368,15 +368,20 @@ SG_FN vec4 piece_weights(IN(Frame) f, vec3 v, IN(HermitePath) H, real a, real b,
   real len = b - a;
   bool smooth_terms = f.fresnel != 0 || f.sky_gradient;
   if (state == kStateBelow) return len * sea_weights();
-  if (!smooth_terms) return state == kStateLight ? len * light_weights() : len * vec4(0.0, 0.0, 1.0, 0.0);
+  if (!smooth_terms)
+    return state == kStateLight ? len * light_weights() : len * vec4(0.0, 0.0, 1.0, 0.0);
   // 4-point Gauss-Legendre.
   real mid = 0.5 * (a + b);
   real half_len = 0.5 * len;
   vec4 sum = vec4(0.0);
-  sum += 0.3478548451374538 * state_weights(f, v, hermite_at(H, mid - 0.8611363115940526 * half_len), state);
-  sum += 0.6521451548625461 * state_weights(f, v, hermite_at(H, mid - 0.3399810435848563 * half_len), state);
-  sum += 0.6521451548625461 * state_weights(f, v, hermite_at(H, mid + 0.3399810435848563 * half_len), state);
-  sum += 0.3478548451374538 * state_weights(f, v, hermite_at(H, mid + 0.8611363115940526 * half_len), state);
+  sum += 0.3478548451374538 *
+         state_weights(f, v, hermite_at(H, mid - 0.8611363115940526 * half_len), state);
+  sum += 0.6521451548625461 *
+         state_weights(f, v, hermite_at(H, mid - 0.3399810435848563 * half_len), state);
+  sum += 0.6521451548625461 *
+         state_weights(f, v, hermite_at(H, mid + 0.3399810435848563 * half_len), state);
+  sum += 0.3478548451374538 *
+         state_weights(f, v, hermite_at(H, mid + 0.8611363115940526 * half_len), state);
   return half_len * sum;
 }
 

@@ -95,7 +95,8 @@ ReferencePixel ReferenceMethod::pixel(const FrameContext& ctx, int i, int j) con
     n.adaptive = settings_.adaptive;
     n.quiet_sx = n.quiet_sy = settings_.quiet;
     n.margin = float(settings_.margin);
-    const kf::ReferenceResult r = kf::float_reference_pixel(wave_buffer(in.f()), in.f().frame, n, i, j);
+    const kf::ReferenceResult r =
+        kf::float_reference_pixel(wave_buffer(in.f()), in.f().frame, n, i, j);
     p.weights = to_weights(r.weights);
     p.busy = r.busy;
     for (int b = 0; b < n.batches; ++b)

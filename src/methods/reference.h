@@ -97,7 +97,8 @@ class ReferenceMethod final : public Method {
 // The standard error of an image, sqrt(mean of the values' variances) over all channels of
 // the pixels whose mask entry (one per pixel) is nonzero (all without a mask): the expected
 // RMSE of the estimate against the exact image.
-double image_standard_error(const Image& variance, const std::vector<unsigned char>* mask = nullptr);
+double image_standard_error(const Image& variance,
+                            const std::vector<unsigned char>* mask = nullptr);
 // The same over a sequence of frames (the RMSE's set: all frames' values).
 double sequence_standard_error(const std::vector<Image>& variance,
                                const std::vector<unsigned char>* mask = nullptr);

@@ -66,7 +66,7 @@ TEST(ReferenceNoise, StandardErrorMatchesTheSpreadOfSixteenSeedsOnDisplacedWater
   s.width = 48;
   s.height = 27;
   ReferenceSettings st;
-  st.samples = {1, 1, 2};
+  st.samples = {1, 1, 1};
   st.batches = 4;
   const NoiseFigures f = noise_over_seeds(s, st, 16);
   std::printf("displaced: reported standard error %.4g, spread of 16 seeds %.4g (ratio %.3f)\n",

@@ -148,7 +148,8 @@ RadianceWeights exact_average(const PathCase& c, bool vectorised = false) {
 
 // The reflection at c.point at time offset dt.
 vec3 reflection_at(const PathCase& c, double dt) {
-  const vec2 g = kd::wave_sum_gradient(wave_buffer(c.in, false), c.in.frame, c.point.x, c.point.z, dt);
+  const vec2 g =
+      kd::wave_sum_gradient(wave_buffer(c.in, false), c.in.frame, c.point.x, c.point.z, dt);
   const vec3 m = kd::normal_direction(g);
   return 2 * dot(m, c.view) / dot(m, m) * m - c.view;
 }
@@ -170,9 +171,10 @@ Scene one_wave() {
   return testing::small_scene({Wave{0.05, {0.3, -1.2}, 3.4, 0.4}}, 160, 90);
 }
 Scene few_waves() {
-  return testing::small_scene({Wave{0.05, {0.3, -1.2}, 3.4, 0.4}, Wave{0.02, {-1.5, -0.8}, 4.1, 2.0},
-                               Wave{0.01, {2.5, -2.5}, 6.0, 5.0}},
-                              160, 90);
+  return testing::small_scene(
+      {Wave{0.05, {0.3, -1.2}, 3.4, 0.4}, Wave{0.02, {-1.5, -0.8}, 4.1, 2.0},
+       Wave{0.01, {2.5, -2.5}, 6.0, 5.0}},
+      160, 90);
 }
 Scene many_waves() {
   Scene s = testing::project_scene("smooth");  // 64 waves
@@ -206,7 +208,8 @@ TEST(ExactTime, HermitePathIsWithinItsBound) {
     const double D = frame_time(s, 5).duration();
     for (int K : {1, 2, 4, reference_segments(m, D)}) {
       PathCase c = path_case(s, 5, K, 80.3, 40.7);
-      const kd::PathDerivatives p = kd::path_derivatives(wave_buffer(c.in, false), c.in.frame, c.point);
+      const kd::PathDerivatives p =
+          kd::path_derivatives(wave_buffer(c.in, false), c.in.frame, c.point);
       const double bound = reference_path_error_bound(m, D, K);
       double worst = 0;
       const double h = D / K;
@@ -215,8 +218,8 @@ TEST(ExactTime, HermitePathIsWithinItsBound) {
         for (int q = 0; q <= 200; ++q) {
           const double sv = q / 200.0;
           const double dt = -D + (k + sv) * h;
-          const vec2 g = kd::wave_sum_gradient(wave_buffer(c.in, false), c.in.frame, c.point.x,
-                                               c.point.z, dt);
+          const vec2 g =
+              kd::wave_sum_gradient(wave_buffer(c.in, false), c.in.frame, c.point.x, c.point.z, dt);
           worst = std::max(worst, length(kd::hermite_at(H, sv) - g));
         }
       }
@@ -248,8 +251,9 @@ TEST(ExactTime, MatchesDenseSamplingThroughTheDisk) {
     Scene s;
     double px, py;
   };
-  for (const auto& [s, px, py] : {Case{one_wave(), 80.5, 60.5}, Case{few_waves(), 30.2, 50.1},
-                                  Case{many_waves(), 100.7, 70.3}, Case{many_waves(), 20.1, 48.9}}) {
+  for (const auto& [s, px, py] :
+       {Case{one_wave(), 80.5, 60.5}, Case{few_waves(), 30.2, 50.1},
+        Case{many_waves(), 100.7, 70.3}, Case{many_waves(), 20.1, 48.9}}) {
     const SceneModel m(s);
     for (int K : {1, 3, reference_segments(m, frame_time(s, 2).duration())}) {
       PathCase c = path_case(s, 2, K, px, py);
@@ -444,9 +448,10 @@ TEST(ReferenceEstimator, AgreesWithStratifiedSamplingOnTheSharedScenes) {
         }
       }
     }
-    std::printf("%s: window %d,%d, %d lit pixels: blocks' chi2 %.1f over %d, total difference "
-                "%.3g (standard error %.3g)\n",
-                name, best_i, best_j, lit, chi2, blocks, total, std::sqrt(total_var));
+    std::printf(
+        "%s: window %d,%d, %d lit pixels: blocks' chi2 %.1f over %d, total difference "
+        "%.3g (standard error %.3g)\n",
+        name, best_i, best_j, lit, chi2, blocks, total, std::sqrt(total_var));
     EXPECT_GE(lit, 8) << name;
     EXPECT_LT(chi2, 3.0 * blocks) << name;
     EXPECT_LT(std::abs(total), 4 * std::sqrt(total_var)) << name;
@@ -494,7 +499,8 @@ TEST(ReferenceEstimator, DisplacedWaterAgreesWithStratifiedSampling) {
       const ReferencePixel p = ref.pixel(ctx, i, j);
       sum_ref += grey_value(m, p.weights);
       var += p.variance(m.radiances, 0);
-      sum_strat += grey_value(m, stratified_pixel(ctx, i, j, StratifiedSettings{{16, 16, 8}, false}));
+      sum_strat +=
+          grey_value(m, stratified_pixel(ctx, i, j, StratifiedSettings{{16, 16, 8}, false}));
     }
   }
   EXPECT_GT(sum_ref, 1.0);

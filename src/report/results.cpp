@@ -396,12 +396,13 @@ std::string reference_noise_text(const SceneResult& sc, const std::string& q) {
   if (!(a.reference_se >= 0)) {
     return "The reference does not measure its noise: the RMSEs are against it as it is.";
   }
-  std::string t = "The reference's standard error (its expected RMSE against the exact "
-                  "image): " +
-                  fmt("%.3g", a.reference_se) + " (near " + fmt("%.3g", n.reference_se) +
-                  ", far " + fmt("%.3g", f.reference_se) +
-                  "). RMSEs are against the reference, the noise-corrected RMSE "
-                  "sqrt(max(0, RMSE^2 - se^2)) in brackets.";
+  std::string t =
+      "The reference's standard error (its expected RMSE against the exact "
+      "image): " +
+      fmt("%.3g", a.reference_se) + " (near " + fmt("%.3g", n.reference_se) + ", far " +
+      fmt("%.3g", f.reference_se) +
+      "). RMSEs are against the reference, the noise-corrected RMSE "
+      "sqrt(max(0, RMSE^2 - se^2)) in brackets.";
   // Methods whose RMSEs differ by less than the reference's noise.
   std::string close;
   for (size_t x = 0; x < sc.methods.size(); ++x) {
@@ -481,9 +482,8 @@ std::string results_to_markdown(const StudyResults& r, const std::string& prefix
       const RegionMetrics &a = v.at(Region::image), &n = v.at(Region::near), &f = v.at(Region::far);
       o << "| " << md_code(v.label) << " | " << rmse_cell(a) << " | " << fmt("%.2f", a.psnr)
         << " | " << fmt("%.3g", a.temporal_error) << " | " << fmt("%.3g", a.flicker) << " | "
-        << rmse_cell(n) << " | " << rmse_cell(f) << " | "
-        << fmt("%.3g", n.temporal_error) << " | " << fmt("%.3g", f.temporal_error) << " | "
-        << fmt("%.3g", v.ms_per_frame) << " |\n";
+        << rmse_cell(n) << " | " << rmse_cell(f) << " | " << fmt("%.3g", n.temporal_error) << " | "
+        << fmt("%.3g", f.temporal_error) << " | " << fmt("%.3g", v.ms_per_frame) << " |\n";
     }
     if (sc.channels == 3) {
       o << "\nPer channel (whole image):\n\n| variant | RMSE R | RMSE G | RMSE B | temporal R | "

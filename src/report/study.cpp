@@ -12,8 +12,8 @@
 #include "base/error.h"
 #include "engine/render.h"
 #include "image/display.h"
-#include "metrics/metrics.h"
 #include "methods/reference.h"
+#include "metrics/metrics.h"
 #include "report/cache.h"
 #include "report/figures.h"
 #include "report/html.h"
@@ -176,7 +176,7 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   auto keep = [&](int f, const Image& img, double t) {
     const int q = f - a;
     if (q < 0 || q >= n) return;  // frames before the range (warm-up) are not kept
-    if (noise) {  // before the frame, whose sidecar vouches for both
+    if (noise) {                  // before the frame, whose sidecar vouches for both
       s.variance[q] = *method->pixel_variance();
       cache_->store(label, variance_key(k[q]), s.variance[q], t);
     }

@@ -40,8 +40,8 @@ void main() {
   w = staa_temporal_pixel(waves, frame, p.x, p.y);
 #elif defined(SG_METHOD_STAA)
   StaaPath path;
-  StaaResult r = staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, frame, params, p.x, p.y,
-                            path);
+  StaaResult r =
+      staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, frame, params, p.x, p.y, path);
   w = r.weights;
 #endif
   imageStore(weights_out, p, w);
