@@ -15,6 +15,7 @@
 #include "cli/commands.h"
 #include "cli/method_flags.h"
 #include "cli/progress.h"
+#include "gl_engine/engines.h"
 #include "methods/method.h"
 #include "report/cache.h"
 #include "report/study.h"
@@ -26,14 +27,26 @@ struct CompareArgs {
   std::vector<std::string> scenes, methods, paper_rows;
   std::string out, cache, frames = "0-9", reference = "24x24x1";
   std::string budgets = "1x1x1,2x2x1,2x2x2,3x3x2,4x4x2,4x4x4,6x6x4,8x8x4";
-  std::string target = "auto";
+  std::string target = "auto", engine = "cpu";
   int width = 0, height = 0, threads = 0;
   double exposure = 3.0;
   bool no_video = false, no_glare = false, quiet = false, list_methods = false;
 };
 
-StudyVariant to_study(const MethodVariant& v) {
-  return StudyVariant{canonical_label(v.label), v.name, v.options, {}};
+// A variant on its engine. One whose text names no --engine runs on the study's (`engine`):
+// with gl it gets " --engine gl" in its label, so that its tables, files and cache keys
+// tell it from the CPU's.
+StudyVariant to_study(MethodVariant v, Engine engine, const std::string& flag) {
+  if (v.label.find("--engine") == std::string::npos && engine != Engine::cpu) {
+    v.engine = engine;
+    v.label += std::string(" --engine ") + engine_name(engine);
+    check_engine_runs(v.engine, v.name, v.options, flag + ": '" + v.label + "': ");
+  }
+  StudyVariant s{canonical_label(v.label), v.name, v.options, {}};
+  if (v.engine != Engine::cpu) {
+    s.make = [e = v.engine, n = v.name, o = v.options] { return make_method_on(e, n, o); };
+  }
+  return s;
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -65,6 +78,7 @@ std::string command_line(const CompareArgs& a) {
   for (const auto& m : a.methods)
     c += " -m " + quote(canonical_label(m));
   c += " --frames " + a.frames + " --reference " + a.reference;
+  if (a.engine != "cpu") c += " --engine " + a.engine;
   if (a.width > 0) c += " --width " + std::to_string(a.width);
   if (a.height > 0) c += " --height " + std::to_string(a.height);
   c += " --budgets " + quote(a.budgets) + " --equal-cost-target " + quote(a.target);
@@ -93,18 +107,20 @@ void run_compare(const CompareArgs& a) {
     if (a.methods.empty()) throw Error("--method: give at least one method variant");
     if (a.out.empty()) throw Error("--out: give the study's folder");
     range = parse_frame_range(a.frames, "--frames");
+    const Engine engine = parse_engine(a.engine);
     c.first_frame = range.first;
     c.last_frame = range.last;
     for (const auto& m : a.methods)
-      c.methods.push_back(to_study(parse_method_variant(m, "--method")));
+      c.methods.push_back(to_study(parse_method_variant(m, "--method"), engine, "--method"));
     parse_sample_counts(a.reference, "--reference");
     c.reference =
-        to_study(parse_method_variant("reference --samples " + a.reference, "--reference"));
+        to_study(parse_method_variant("reference --samples " + a.reference, "--reference"), engine,
+                 "--reference");
     if (a.budgets != "none") {
       for (const auto& b : split(a.budgets, ',')) {
         parse_sample_counts(b, "--budgets");
-        c.budgets.push_back(
-            to_study(parse_method_variant("supersample --samples " + b, "--budgets")));
+        c.budgets.push_back(to_study(
+            parse_method_variant("supersample --samples " + b, "--budgets"), engine, "--budgets"));
       }
     }
     if (a.target == "auto") {
@@ -194,6 +210,10 @@ void add_compare_command(CLI::App& app) {
   c->add_option("--frames", a->frames, "Frame range A-B")->capture_default_str();
   c->add_option("--reference", a->reference,
                 "Reference samples SxSxT per batch (docs/reference-renderer.md)")
+      ->capture_default_str();
+  c->add_option("--engine", a->engine,
+                "The engine of every variant that names none: cpu, or gl (the GL engine; "
+                "its variants are labelled '... --engine gl')")
       ->capture_default_str();
   c->add_option("--width", a->width, "Override the image width (height follows the aspect ratio)")
       ->check(integer_in(1, 16384));

@@ -35,7 +35,7 @@ namespace sg {
 namespace {
 
 struct RenderArgs {
-  std::string scene_path, method = "", out, frames, video, engine = "cpu", variance_out;
+  std::string scene_path, method = "", out, frames, video, variance_out;
   int frame = 0, width = 0, height = 0, threads = 0;
   double exposure = 0;
   bool quiet = false, mkdir = false, display = false, no_glare = false;
@@ -88,17 +88,15 @@ void run_render(RenderArgs& a) {
   // A pattern names each frame; a single frame may use one too.
   const bool pattern = sequence || is_frame_pattern(a.out);
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
-  auto variance_path = [&](int f) {
-    return pattern ? format_frame_path(a.variance_out, f, "--variance-out") : a.variance_out;
-  };
-  Engine engine = Engine::cpu;
+  std::string scene_path, method = "", out, frames, video, variance_out;
   check_usage([&] {
     if (sequence) range = parse_frame_range(a.frames, "--frames");
     check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
-    engine = parse_engine(a.engine);
     a.flags.finish();
     make_method(a.method, a.flags.options);  // the name and options, before any GL
+    check_engine_runs(a.flags.engine, a.method, a.flags.options);
   });
+  const Engine engine = a.flags.engine;
   if (!a.video.empty()) {
     try {
       check_ffmpeg();
@@ -246,10 +244,6 @@ void add_render_command(CLI::App& app) {
   c->add_option("--variance-out", a->variance_out,
                 "reference: also write each pixel's variance (of its estimate) to this file "
                 "(.exr or .pfm; a pattern with --frames)");
-  c->add_option("--engine", a->engine,
-                "cpu (every method) or gl (OpenGL 4.5 compute: point, supersample, reference, "
-                "staa-temporal, staa)")
-      ->capture_default_str();
   add_method_flags(*c, a->flags);
   c->add_option("--exposure", a->exposure, "Exposure in stops for .png output and --video")
       ->capture_default_str()

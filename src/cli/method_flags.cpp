@@ -7,6 +7,7 @@
 
 #include "base/error.h"
 #include "cli/args.h"
+#include "gl_engine/gl_engine.h"
 #include "methods/method.h"
 
 namespace sg {
@@ -15,6 +16,7 @@ void MethodFlags::finish(const std::string& context) {
   options.samples_given = !samples.empty();
   options.samples =
       samples.empty() ? SampleCounts{} : parse_sample_counts(samples, context + "--samples");
+  engine = parse_engine(engine_name, context + "--engine");
   const AliasRange r = alias_range(options.staa);
   if (!(r.start >= 0 && r.end > r.start)) {
     throw Error(context + "--alias-start, --alias-end: need 0 <= start < end (got " +
@@ -44,8 +46,22 @@ void choice(CLI::App& app, const std::string& flag, T& field, const std::map<std
 
 static void add_baseline_flags(CLI::App& app, MethodOptions& o);
 
+void check_engine_runs(Engine engine, const std::string& name, const MethodOptions& options,
+                       const std::string& context) {
+  if (engine != Engine::gl) return;
+  try {
+    gl_engine::gl_variant(name, options);
+  } catch (const Error& e) {
+    throw Error(context + e.what());
+  }
+}
+
 void add_method_flags(CLI::App& app, MethodFlags& f) {
   MethodOptions& o = f.options;
+  app.add_option("--engine", f.engine_name,
+                 std::string("cpu (every method) or gl (OpenGL 4.5 compute shaders: ") +
+                     gl_engine::gl_methods() + ")")
+      ->capture_default_str();
   app.add_option("--samples", f.samples,
                  "Samples SxSxT. supersample: S x S positions times T times (default 8x8x8). "
                  "reference: per batch S x S strata of T samples each, time integrated exactly "
@@ -225,7 +241,9 @@ MethodVariant parse_method_variant(const std::string& text, const std::string& f
   }
   flags.finish(flag + ": '" + text + "': ");
   v.options = flags.options;
+  v.engine = flags.engine;
   make_method(v.name, v.options);  // validates the name and the options
+  check_engine_runs(v.engine, v.name, v.options, flag + ": '" + text + "': ");
   return v;
 }
 

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "gl_engine/engines.h"
 #include "methods/options.h"
 
 namespace sg {
@@ -13,6 +14,8 @@ namespace sg {
 // Storage for the flags' values; `finish` checks them and converts the few that need it.
 struct MethodFlags {
   std::string samples;  // empty: the method's default
+  std::string engine_name = "cpu";  // --engine
+  Engine engine = Engine::cpu;      // set by finish()
   MethodOptions options;
   // `context` prefixes error messages (e.g. the method variant being parsed).
   void finish(const std::string& context = "");
@@ -27,7 +30,13 @@ struct MethodVariant {
   std::string label;  // the text as given, used in tables and file names
   std::string name;
   MethodOptions options;
+  Engine engine = Engine::cpu;  // its --engine
 };
+
+// Checks that `engine` runs `name` with `options` (the GL engine runs the kernel methods
+// only), without starting it; throws sg::Error naming the method or flag, after `context`.
+void check_engine_runs(Engine engine, const std::string& name, const MethodOptions& options,
+                       const std::string& context = "");
 MethodVariant parse_method_variant(const std::string& text, const std::string& flag = "--methods");
 
 }  // namespace sg

@@ -41,7 +41,9 @@ SG_FN Footprint pixel_footprint(IN(WaveBuffer) waves, IN(Frame) f, real px, real
   fp.point = hit.point;
   vec3 to_camera = o - hit.point;
   fp.distance = length(to_camera);
-  fp.view = to_camera / fp.distance;
+  // With the camera under the displaced surface the ray hits at the camera itself (the
+  // spec's convention): the view is the ray's reverse.
+  fp.view = fp.distance > 0.0 ? to_camera / fp.distance : -(d / len);
   fp.dp_dpx = transfer_differential(d, s, camera_ddir_dpx(f.camera), m);
   fp.dp_dpy = transfer_differential(d, s, camera_ddir_dpy(f.camera), m);
   return fp;

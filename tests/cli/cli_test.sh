@@ -243,7 +243,7 @@ expect_fail "video without frames" "--video: needs --frames A-B" \
   timeout 20 "$bin" render "$colour" "${slow[@]}" --video "$work/x.mp4"
 expect_fail "video not mp4" "--video: must be an .mp4 file (got '$work/x.avi')" \
   timeout 20 "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/x.avi"
-expect_fail "video folder" "--video: folder '$work/nope' does not exist" \
+expect_fail "video folder" "--video: $work/nope/x.mp4: cannot write: folder '$work/nope' does not exist" \
   timeout 20 "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/nope/x.mp4"
 expect_fail "display exr" "--display: applies to .png output" \
   timeout 20 "$bin" render "$colour" "${slow[@]}" --display --out "$work/x.exr"
@@ -259,6 +259,45 @@ for f in x.mp4 x.avi x.exr x.png; do expect_no_file "bad video/display flags" "$
 expect_fail "format /1 with colour" "light.radiance: an [r, g, b] radiance needs" \
   "$bin" render "$src/tests/scenes/bad/v1_rgb_light.json" -m point --out "$work/x.exr"
 expect_ok "info colour" "$bin" info "$colour"
+
+# The engines: --engine on render, bench and compare (per variant or for the whole study).
+expect_rc "engine unknown" 2 "--engine: unknown engine 'vulkan' (choose cpu or gl)" \
+  "$bin" render "$scene" -m point --engine vulkan -o "$work/x.exr"
+expect_rc "engine gl lacks lean" 2 "--method lean: not on the GL engine" \
+  "$bin" render "$scene" -m lean --engine gl -o "$work/x.exr"
+expect_rc "bench variant on gl lacks footprint exact" 2 "--footprint exact: not on the GL engine" \
+  "$bin" bench "$scene" --methods "point,staa --footprint exact --engine gl" --width 16 --height 9
+expect_rc "compare engine gl lacks taa" 2 "--method: 'taa --engine gl': --method taa: not on the GL engine" \
+  "$bin" compare "$scene" -m taa --engine gl --frames 0-0 --no-video -q --out "$work/gls"
+expect_no_file "engine usage errors" "$work/x.exr"
+if "$bin" render "$scene" -m point --engine gl --width 8 -q -o "$work/glprobe.pfm" >/dev/null 2>&1; then
+  expect_ok "render gl" "$bin" render "$scene" -m staa --engine gl --width 32 -q -o "$work/gl.pfm"
+  expect_ok "render cpu float" "$bin" render "$scene" -m staa --precision float --width 32 -q -o "$work/cf.pfm"
+  out=$("$bin" diff "$work/gl.pfm" "$work/cf.pfm" --json 2>&1)
+  if python3 -c 'import json,sys; sys.exit(0 if json.loads(sys.argv[1])["rmse"] < 1e-5 else 1)' "$out"; then
+    passes=$((passes + 1))
+  else
+    echo "FAIL gl vs cpu float: $out"
+    fails=$((fails + 1))
+  fi
+  out=$("$bin" bench "$scene" --methods "point,staa" --engine gl --width 32 --height 18 2>&1)
+  if [ "$(grep -c '| gl (GPU timer; frame' <<<"$out")" = 2 ] && grep -q '| staa | gl .* | [0-9.]* | [0-9.]* |' <<<"$out"; then
+    passes=$((passes + 1))
+  else
+    echo "FAIL bench --engine gl: $out"
+    fails=$((fails + 1))
+  fi
+  expect_rc "compare cpu and gl" 0 "point --engine gl" \
+    "$bin" compare "$scene" -m point -m "point --engine gl" --frames 0-1 --width 16 --reference 1x1x1 \
+    --budgets none --no-video -q --out "$work/glstudy"
+  grep -q '"point --engine gl"' "$work/glstudy/results.json" && passes=$((passes + 1)) ||
+    { echo "FAIL compare: no 'point --engine gl' in results.json"; fails=$((fails + 1)); }
+elif [ -n "${SUNGLINT_REQUIRE_GL:-}" ]; then
+  echo "FAIL no OpenGL 4.5 context (SUNGLINT_REQUIRE_GL is set): $("$bin" render "$scene" -m point --engine gl --width 8 -q -o "$work/glprobe.pfm" 2>&1)"
+  fails=$((fails + 1))
+else
+  echo "skipped the GL engine's CLI checks: no OpenGL 4.5 context"
+fi
 
 # ---------------------------------------------------------------------------------------
 # Bad and extreme input (docs/scene-format-notes.md; README "Exit codes").
