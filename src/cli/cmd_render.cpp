@@ -88,7 +88,9 @@ void run_render(RenderArgs& a) {
   // A pattern names each frame; a single frame may use one too.
   const bool pattern = sequence || is_frame_pattern(a.out);
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
-  std::string scene_path, method = "", out, frames, video, variance_out;
+  auto variance_path = [&](int f) {
+    return pattern ? format_frame_path(a.variance_out, f, "--variance-out") : a.variance_out;
+  };
   check_usage([&] {
     if (sequence) range = parse_frame_range(a.frames, "--frames");
     check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
