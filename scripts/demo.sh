@@ -5,9 +5,9 @@
 #
 #   scripts/demo.sh [--full] [--docs] [path/to/sunglint]
 #
-# Default: 240x135, frames 0-9, reference 12x12x8, in out/demo (docs/report.md has the
+# Default: 240x135, frames 0-9, reference 12x12x1, in out/demo (docs/report.md has the
 # measured time; later runs take the frames from the cache). --full: the paper-sized
-# study, 640x360, frames 0-29, reference 12x12x8, in out/demo-full (21 times the
+# study, 640x360, frames 0-29, reference 24x24x1, in out/demo-full (21 times the
 # default's pixels x frames).
 # --docs: then regenerate docs/results.md, docs/img/ and the README's demo section from
 # the study's results.json (sunglint report).
@@ -31,9 +31,9 @@ done
 [ -x "$bin" ] || { echo "demo: $bin not found; build first (make build)" >&2; exit 1; }
 
 if [ $full -eq 1 ]; then
-  out=out/demo-full size=(--width 640 --height 360) frames=0-29
+  out=out/demo-full size=(--width 640 --height 360) frames=0-29 reference=24x24x1
 else
-  out=out/demo size=(--width 240 --height 135) frames=0-9
+  out=out/demo size=(--width 240 --height 135) frames=0-9 reference=12x12x1
 fi
 methods=()
 while read -r m; do
@@ -51,7 +51,7 @@ done < <("$bin" compare --list-methods)
 
 start=$(date +%s)
 (cd "$root" && "$bin" compare scenes/simple.json scenes/smooth.json scenes/medium.json scenes/high.json \
-  "${methods[@]}" "${size[@]}" --frames $frames --reference 12x12x8 --cache out/cache --out "$out")
+  "${methods[@]}" "${size[@]}" --frames $frames --reference "$reference" --cache out/cache --out "$out")
 echo "demo: $(($(date +%s) - start)) s"
 if [ $docs -eq 1 ]; then
   (cd "$root" && "$bin" report "$out/results.json" --markdown docs/results.md \

@@ -118,7 +118,7 @@ void run_bench(BenchArgs& a) {
       }
       if (n == "point" && point_ms[0] == 0) point_ms[0] = best;
       std::string sps = "", wps = "";
-      if (n == "reference" || n == "supersample") {
+      if (n == "supersample") {
         StratifiedSettings st{vo.samples, n == "supersample" && vo.samples.st == 1};
         FrameContext ctx{model, frame_time(s, a.frame), 0};
         long evals = 0;

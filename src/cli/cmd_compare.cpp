@@ -25,7 +25,7 @@ namespace {
 
 struct CompareArgs {
   std::vector<std::string> scenes, methods, paper_rows;
-  std::string out, cache, frames = "0-9", reference = "12x12x8";
+  std::string out, cache, frames = "0-9", reference = "24x24x1";
   std::string budgets = "1x1x1,2x2x1,2x2x2,3x3x2,4x4x2,4x4x4,6x6x4,8x8x4";
   std::string target = "auto", engine = "cpu";
   int width = 0, height = 0, threads = 0;
@@ -208,7 +208,9 @@ void add_compare_command(CLI::App& app) {
       ->take_all();
   c->add_option("--out,-o", a->out, "The study's folder (created; reused to resume)");
   c->add_option("--frames", a->frames, "Frame range A-B")->capture_default_str();
-  c->add_option("--reference", a->reference, "Reference samples SxSxT")->capture_default_str();
+  c->add_option("--reference", a->reference,
+                "Reference samples SxSxT per batch (docs/reference-renderer.md)")
+      ->capture_default_str();
   c->add_option("--engine", a->engine,
                 "The engine of every variant that names none: cpu, or gl (the GL engine; "
                 "its variants are labelled '... --engine gl')")

@@ -28,13 +28,14 @@
 #include "image/tonemap.h"
 #include "methods/fallback.h"
 #include "methods/method.h"
+#include "methods/reference.h"
 #include "report/video.h"
 
 namespace sg {
 namespace {
 
 struct RenderArgs {
-  std::string scene_path, method = "", out, frames, video;
+  std::string scene_path, method = "", out, frames, video, variance_out;
   int frame = 0, width = 0, height = 0, threads = 0;
   double exposure = 0;
   bool quiet = false, mkdir = false, display = false, no_glare = false;
@@ -66,6 +67,14 @@ void check_outputs(const RenderArgs& a, bool sequence, const std::string& first_
                   "'; .exr and .pfm keep the linear values)");
     }
   }
+  if (!a.variance_out.empty()) {
+    const std::string first = is_frame_pattern(a.variance_out) || sequence
+                                  ? format_frame_path(a.variance_out, 0, "--variance-out")
+                                  : a.variance_out;
+    if (image_format_of(first) == ImageFormat::png) {
+      throw Error("--variance-out: must be .exr or .pfm (got '" + a.variance_out + "')");
+    }
+  }
   if (a.no_glare && !a.display && a.video.empty()) {
     throw Error("--no-glare: needs --display or --video");
   }
@@ -79,6 +88,9 @@ void run_render(RenderArgs& a) {
   // A pattern names each frame; a single frame may use one too.
   const bool pattern = sequence || is_frame_pattern(a.out);
   auto out_path = [&](int f) { return pattern ? format_frame_path(a.out, f, "--out") : a.out; };
+  auto variance_path = [&](int f) {
+    return pattern ? format_frame_path(a.variance_out, f, "--variance-out") : a.variance_out;
+  };
   check_usage([&] {
     if (sequence) range = parse_frame_range(a.frames, "--frames");
     check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
@@ -120,9 +132,17 @@ void run_render(RenderArgs& a) {
       check_file(out_path(f), "--out");
   }
   if (!a.video.empty()) check_file(a.video, "--video");
+  if (!a.variance_out.empty()) {
+    for (int f = range.first; f <= range.last; ++f)
+      check_file(variance_path(f), "--variance-out");
+  }
   // 4. The method on its engine (the GL engine refuses what it lacks, or says why no
   // OpenGL 4.5 context can be made).
   check_usage([&] { method = make_method_on(engine, a.method, a.flags.options); });
+  if (!a.variance_out.empty() && method->pixel_variance() == nullptr) {
+    throw UsageError("--variance-out: method " + a.method + " on the " + engine_name(engine) +
+                     " engine does not measure its noise (the CPU reference does)");
+  }
 
   const MethodOptions& opt = a.flags.options;
   SceneModel model(scene);
@@ -148,6 +168,9 @@ void run_render(RenderArgs& a) {
   std::vector<std::vector<uint8_t>> video_frames;
   long fallbacks = 0;
   bool counted = false;
+  // A method that measures its own noise (reference): the mean variance over the frames.
+  double variance_sum = 0;
+  int variance_frames = 0;
   auto t0 = std::chrono::steady_clock::now();
   render_frames(model, *method, range.first, range.last, rs, [&](int f, const Image& img) {
     if (!a.out.empty()) write_image(out_path(f), img, wo);
@@ -157,6 +180,15 @@ void run_render(RenderArgs& a) {
       counted = true;
       fallbacks += n;
       what += ", " + std::to_string(n) + " fallback pixels";
+    }
+    if (const Image* v = method->pixel_variance()) {
+      const double se = image_standard_error(*v);
+      variance_sum += sqr(se);
+      ++variance_frames;
+      char buf[64];
+      std::snprintf(buf, sizeof buf, ", standard error %.3g", se);
+      what += buf;
+      if (!a.variance_out.empty()) write_image(variance_path(f), *v, WriteOptions{});
     }
     bar.step(what, frames_done * tiles, frames * tiles);
   });
@@ -178,6 +210,11 @@ void run_render(RenderArgs& a) {
               scene.height, range.first, range.last,
               warmup > 0 ? (" after " + std::to_string(warmup) + " warm-up frames").c_str() : "",
               secs, 1000 * secs / frames, fb.c_str(), written.c_str());
+  if (variance_frames > 0) {
+    std::printf("%s: standard error %.3g (RMSE units, RMS over %d frame%s)\n",
+                method->name().c_str(), std::sqrt(variance_sum / variance_frames), variance_frames,
+                variance_frames > 1 ? "s" : "");
+  }
 }
 
 }  // namespace
@@ -206,6 +243,9 @@ void add_render_command(CLI::App& app) {
   c->add_option("--height", a->height, "Override the image height")->check(integer_in(1, 16384));
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")
       ->check(integer_in(0, 1024));
+  c->add_option("--variance-out", a->variance_out,
+                "reference: also write each pixel's variance (of its estimate) to this file "
+                "(.exr or .pfm; a pattern with --frames)");
   add_method_flags(*c, a->flags);
   c->add_option("--exposure", a->exposure, "Exposure in stops for .png output and --video")
       ->capture_default_str()

@@ -13,7 +13,9 @@
 namespace sg {
 
 void MethodFlags::finish(const std::string& context) {
-  options.samples = parse_sample_counts(samples, context + "--samples");
+  options.samples_given = !samples.empty();
+  options.samples =
+      samples.empty() ? SampleCounts{} : parse_sample_counts(samples, context + "--samples");
   engine = parse_engine(engine_name, context + "--engine");
   const AliasRange r = alias_range(options.staa);
   if (!(r.start >= 0 && r.end > r.start)) {
@@ -60,8 +62,21 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
                  std::string("cpu (every method) or gl (OpenGL 4.5 compute shaders: ") +
                      gl_engine::gl_methods() + ")")
       ->capture_default_str();
-  app.add_option("--samples", f.samples, "Samples SxSxT for reference and supersample")
-      ->capture_default_str();
+  app.add_option("--samples", f.samples,
+                 "Samples SxSxT. supersample: S x S positions times T times (default 8x8x8). "
+                 "reference: per batch S x S strata of T samples each, time integrated exactly "
+                 "on flat water (default 8x8x1)");
+  app.add_option("--batches", o.batches,
+                 "reference: independent batches per pixel, whose spread measures its noise")
+      ->capture_default_str()
+      ->check(integer_in(2, 8));
+  choice(app, "--adaptive", o.adaptive, {{"on", true}, {"off", false}},
+         "reference: a pilot at each pixel's centre and corners gives pixels far from the "
+         "light and the horizon --quiet-samples instead of --samples (on), or not (off)");
+  app.add_option("--quiet-samples", o.quiet_samples,
+                 "reference: N x N strata per batch in the pixels the pilot finds quiet")
+      ->capture_default_str()
+      ->check(integer_in(1, 64));
   app.add_option("--seed", o.seed, "Seed of the sampling streams")
       ->capture_default_str()
       ->check(integer_in(0, std::numeric_limits<long long>::max()));

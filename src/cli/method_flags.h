@@ -13,7 +13,7 @@ namespace sg {
 
 // Storage for the flags' values; `finish` checks them and converts the few that need it.
 struct MethodFlags {
-  std::string samples = "8x8x8";
+  std::string samples;              // empty: the method's default
   std::string engine_name = "cpu";  // --engine
   Engine engine = Engine::cpu;      // set by finish()
   MethodOptions options;

@@ -8,6 +8,7 @@
 #include "gl/check.h"
 #include "gl/dispatch.h"
 #include "gl_engine/uniforms.h"
+#include "methods/reference.h"
 #include "methods/supersample.h"
 #include "shading/kernel_frame.h"
 #include "shading/kernel_table.h"
@@ -25,7 +26,20 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   v.intersect_tolerance = o.intersect_tolerance;
   if (method == "point") {
     v.entry = KernelEntry::point;
-  } else if (method == "supersample" || method == "reference") {
+  } else if (method == "reference") {
+    const ReferenceSettings rs = reference_settings(o);
+    v.entry = KernelEntry::reference;
+    v.segments = kf::kMaxSegments;
+    v.reference.sx = rs.samples.sx;
+    v.reference.sy = rs.samples.sy;
+    v.reference.nt = rs.samples.st;
+    v.reference.batches = rs.batches;
+    v.reference.adaptive = rs.adaptive;
+    v.reference.quiet_sx = v.reference.quiet_sy = rs.quiet;
+    v.reference.margin = static_cast<float>(rs.margin);
+    v.intersect_tolerance =  // per sample cell, as on the CPU (methods/reference.h)
+        o.intersect_tolerance / std::max({rs.samples.sx, rs.samples.sy, 1});
+  } else if (method == "supersample") {
     v.entry = KernelEntry::stratified;
     v.counts.sx = o.samples.sx;
     v.counts.sy = o.samples.sy;
@@ -87,7 +101,10 @@ GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
 GlEngine::~GlEngine() = default;
 
 void GlEngine::upload(const FrameContext& ctx) {
-  build_kernel_inputs(ctx.model, ctx.time, v_.segments, ctx.seed, *inputs_, v_.intersect_tolerance);
+  const int segments = v_.entry == KernelEntry::reference
+                           ? reference_segments(ctx.model, ctx.time.duration())
+                           : v_.segments;
+  build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance);
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(w, h, GL_RGBA32F);
@@ -109,6 +126,7 @@ void GlEngine::upload(const FrameContext& ctx) {
   u.set("image_size", kf::ivec2(w, h));
   set_uniforms(u, "frame", inputs_->frame);
   if (v_.entry == KernelEntry::stratified) set_uniforms(u, "counts", v_.counts);
+  if (v_.entry == KernelEntry::reference) set_uniforms(u, "ref_params", v_.reference);
   if (v_.entry == KernelEntry::staa) {
     set_uniforms(u, "params", v_.params);
     set_uniforms(u, "tinfo", tinfo_);

@@ -2,7 +2,9 @@
 // pixel, in float (docs/gpu.md). It runs `point`, `supersample`, `reference`,
 // `staa-temporal` and `staa` (both NDFs, `--footprint none|gaussian`, every kernel count
 // and fallback) with the CPU engine's estimators and seeds; anything else is refused with a
-// message naming the method or flag, never rendered elsewhere.
+// message naming the method or flag, never rendered elsewhere. Its `reference` is the CPU
+// engine's estimator (kernel/reference.glsl, its K per frame from the waves and the
+// shutter) but does not report its noise: the batches' spread stays on the GPU.
 //
 // Per frame, on the host: the kernel's inputs in float (shading/kernel_frame.h: the phases
 // reduced in double at the frame's time, camera-relative, the waves sorted), uploaded as
@@ -33,6 +35,7 @@ struct GlVariant {
   KernelEntry entry = KernelEntry::point;
   int segments = 1;
   kf::SampleCounts counts{};
+  kf::ReferenceParams reference{};  // `reference`: segments is the cap, each frame picks K
   kf::StaaParams params{};
   double intersect_tolerance = 0;  // --intersect-tolerance (shading/kernel_frame.h)
 };

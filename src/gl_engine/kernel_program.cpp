@@ -21,6 +21,7 @@ std::vector<gl::ShaderSource> sources() {
 std::string header(KernelEntry entry, int segments) {
   const char* method = entry == KernelEntry::point           ? "SG_METHOD_POINT"
                        : entry == KernelEntry::stratified    ? "SG_METHOD_STRATIFIED"
+                       : entry == KernelEntry::reference     ? "SG_METHOD_REFERENCE"
                        : entry == KernelEntry::staa_temporal ? "SG_METHOD_STAA_TEMPORAL"
                                                              : "SG_METHOD_STAA";
   return std::string("#define ") + method + "\n#define SG_MAX_SEGMENTS " +
@@ -35,6 +36,8 @@ const char* entry_name(KernelEntry e) {
       return "point";
     case KernelEntry::stratified:
       return "stratified";
+    case KernelEntry::reference:
+      return "reference";
     case KernelEntry::staa_temporal:
       return "staa-temporal";
     case KernelEntry::staa:

@@ -11,7 +11,7 @@
 
 namespace sg::gl_engine {
 
-enum class KernelEntry { point, stratified, staa_temporal, staa };
+enum class KernelEntry { point, stratified, reference, staa_temporal, staa };
 
 const char* entry_name(KernelEntry e);
 

@@ -88,6 +88,17 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::SampleCounts
   u.set(n + ".time_at_frame", c.time_at_frame);
 }
 
+void set_uniforms(UniformWriter& u, const std::string& n, const kf::ReferenceParams& p) {
+  u.set(n + ".sx", p.sx);
+  u.set(n + ".sy", p.sy);
+  u.set(n + ".nt", p.nt);
+  u.set(n + ".batches", p.batches);
+  u.set(n + ".adaptive", p.adaptive);
+  u.set(n + ".quiet_sx", p.quiet_sx);
+  u.set(n + ".quiet_sy", p.quiet_sy);
+  u.set(n + ".margin", p.margin);
+}
+
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::PathTableInfo& t) {
   u.set(n + ".n_distance", t.n_distance);
   u.set(n + ".n_u", t.n_u);

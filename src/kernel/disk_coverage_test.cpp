@@ -102,9 +102,10 @@ TEST(DiskCoverage, MatchesBruteForceAcrossTheRim) {
       }
     }
     EXPECT_LT(worst_f, 1e-4) << v.what;
-    std::printf("%-28s disk %.1f px: max |exact - 200x200 grid| %.2g over %d rim pixels, "
-                "float - double %.2g\n",
-                v.what, r_px, worst, partial, worst_f);
+    std::printf(
+        "%-28s disk %.1f px: max |exact - 200x200 grid| %.2g over %d rim pixels, "
+        "float - double %.2g\n",
+        v.what, r_px, worst, partial, worst_f);
   }
 }
 
@@ -114,9 +115,9 @@ TEST(DiskCoverage, InvisibleLightCoversNothing) {
   const SceneModel m(s);
   double pcx = 0, pcy = 0;
   ASSERT_TRUE(m.camera.project(m.light.L, pcx, pcy));
-  EXPECT_EQ(kd::light_pixel_coverage(kernel_camera(m.camera), kernel_light(m.light), int(pcx),
-                                     int(pcy)),
-            0.0);
+  EXPECT_EQ(
+      kd::light_pixel_coverage(kernel_camera(m.camera), kernel_light(m.light), int(pcx), int(pcy)),
+      0.0);
 }
 
 }  // namespace

@@ -18,6 +18,8 @@
 const int kMaxSegments = SG_MAX_SEGMENTS;
 const int kMaxKernels = 9;
 const int kMaxTimeSamples = 64;
+// `reference`: independent batches per pixel (reference.glsl).
+const int kMaxBatches = 8;
 
 // The pinhole camera (scene/camera.h): the ray through image-plane point (px, py) is
 // forward + (2 px / width - 1) half_w right + (1 - 2 py / height) half_h up.
@@ -112,6 +114,28 @@ struct SampleCounts {
   int sy;
   int nt;              // times, at most kMaxTimeSamples
   bool time_at_frame;  // one sample time, the display time
+};
+
+// `reference` (reference.glsl): per batch S_x x S_y spatial strata of T samples each
+// (on displaced water T time strata), `batches` independent batches. With `adaptive`, a
+// pixel whose pilot finds it far from the light and the horizon (reference_pixel_busy)
+// takes quiet_sx x quiet_sy strata instead.
+struct ReferenceParams {
+  int sx;
+  int sy;
+  int nt;
+  int batches;  // 2 to kMaxBatches
+  bool adaptive;
+  int quiet_sx;
+  int quiet_sy;
+  real margin;  // the pilot's margin, in units of the reflection's spread and step
+};
+
+// A reference pixel: the mean weights and each batch's (for the variance of the mean).
+struct ReferenceResult {
+  vec4 weights;
+  vec4 batch[kMaxBatches];
+  bool busy;  // the pilot's verdict (true without `adaptive`)
 };
 
 // The RDF's centres on the light plane at the path's instants.

@@ -26,4 +26,5 @@
 #include "kernel/reflection_footprint.glsl"
 #include "kernel/staa.glsl"
 #include "kernel/sampling.glsl"
+#include "kernel/reference.glsl"
 // clang-format on

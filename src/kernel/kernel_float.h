@@ -12,6 +12,8 @@ namespace sg::kf {
 vec4 float_point_pixel(const WaveBuffer& waves, const Frame& f, int i, int j);
 vec4 float_stratified_pixel(const WaveBuffer& waves, const Frame& f, const SampleCounts& n, int i,
                             int j);
+ReferenceResult float_reference_pixel(const WaveBuffer& waves, const Frame& f,
+                                      const ReferenceParams& n, int i, int j);
 vec4 float_staa_temporal_pixel(const WaveBuffer& waves, const Frame& f, int i, int j);
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
@@ -23,5 +25,7 @@ real float_erfc(real x);
 real float_light_pixel_coverage(const Camera& c, const Light& l, int i, int j);
 real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
 vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
+// The reference's path (kernel/reference.glsl): g[0..K] and dg[0..K].
+void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, vec2* g, vec2* dg);
 
 }  // namespace sg::kf

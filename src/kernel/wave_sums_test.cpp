@@ -1,5 +1,6 @@
 // The CPU engine's vectorised sums over the waves (kernel/cpu/wave_sums.h) against the
-// kernel's loops, the definitions (kernel/waves.glsl, reflection_path.glsl, staa.glsl), in
+// kernel's loops, the definitions (kernel/waves.glsl, reflection_path.glsl, staa.glsl,
+// reference.glsl), in
 // double and float, and the kernel methods with and without them.
 #include <gtest/gtest.h>
 
@@ -48,10 +49,11 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
     build_kernel_inputs(m, frame_time(s, 3), 3, 0, in);
     const kd::WaveBuffer simd = wave_buffer(in, true), loop = wave_buffer(in, false);
     const kd::Frame& f = in.frame;
-    double hscale = 0, gscale = 0, kscale = 0;
+    double hscale = 0, gscale = 0, kscale = 0, cscale = 0;
     for (const Wave& w : s.surface.waves) {
       hscale += w.amplitude;
       gscale += w.amplitude * length(w.wave_vector);
+      cscale += w.amplitude * length(w.wave_vector) * w.angular_frequency;
       kscale = std::max(kscale, length(w.wave_vector));
     }
     Pcg32 rng(n, 5);
@@ -72,6 +74,16 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
       for (int k = 0; k <= f.segments; ++k) {
         EXPECT_NEAR(p.g[k].x, r.g[k].x, tol * gscale) << k;
         EXPECT_NEAR(p.g[k].y, r.g[k].y, tol * gscale) << k;
+      }
+      // The reference's path with time derivatives (kernel/reference.glsl).
+      const kd::PathDerivatives pd = kd::path_derivatives(simd, f, vec3(x, 0, z)),
+                                rd = kd::path_derivatives(loop, f, vec3(x, 0, z));
+      for (int k = 0; k <= f.segments; ++k) {
+        EXPECT_NEAR(pd.g[k].x, rd.g[k].x, tol * gscale) << k;
+        EXPECT_NEAR(pd.g[k].y, rd.g[k].y, tol * gscale) << k;
+        EXPECT_NEAR(pd.dg[k].x, rd.dg[k].x, tol * cscale) << k;
+        EXPECT_NEAR(pd.dg[k].y, rd.dg[k].y, tol * cscale) << k;
+        EXPECT_NEAR(pd.g[k].x, p.g[k].x, tol * gscale) << k;  // the same instants as the path's
       }
     }
     // The staa pass at pixel footprints, with each NDF and with the curvature limit.
@@ -116,12 +128,13 @@ TEST(KernelWaveSums, VectorisedFloatSumsEqualTheFloatKernelLoops) {
   const Scene s = random_waves_scene(64, 3);
   const SceneModel m(s);
   KernelInputsF in;
-  build_kernel_inputs(m, frame_time(s, 3), 1, 0, in);
+  build_kernel_inputs(m, frame_time(s, 3), 3, 0, in);
   const kf::WaveBuffer simd = wave_buffer(in, true), loop = wave_buffer(in, false);
-  double hscale = 0, gscale = 0;
+  double hscale = 0, gscale = 0, cscale = 0;
   for (const Wave& w : s.surface.waves) {
     hscale += w.amplitude;
     gscale += w.amplitude * length(w.wave_vector);
+    cscale += w.amplitude * length(w.wave_vector) * w.angular_frequency;
   }
   Pcg32 rng(9, 5);
   for (int q = 0; q < 200; ++q) {
@@ -134,6 +147,16 @@ TEST(KernelWaveSums, VectorisedFloatSumsEqualTheFloatKernelLoops) {
                    h = kf::float_water_gradient(loop, in.frame, x, z, dt);
     EXPECT_NEAR(g.x, h.x, tol * gscale);
     EXPECT_NEAR(g.y, h.y, tol * gscale);
+    kf::vec2 pg[kf::kMaxSegments + 1], pd[kf::kMaxSegments + 1], rg[kf::kMaxSegments + 1],
+        rd[kf::kMaxSegments + 1];
+    kf::float_path_derivatives(simd, in.frame, kf::vec3(x, 0, z), pg, pd);
+    kf::float_path_derivatives(loop, in.frame, kf::vec3(x, 0, z), rg, rd);
+    for (int k = 0; k <= in.frame.segments; ++k) {
+      EXPECT_NEAR(pg[k].x, rg[k].x, tol * gscale) << k;
+      EXPECT_NEAR(pg[k].y, rg[k].y, tol * gscale) << k;
+      EXPECT_NEAR(pd[k].x, rd[k].x, tol * cscale) << k;
+      EXPECT_NEAR(pd[k].y, rd[k].y, tol * cscale) << k;
+    }
   }
 }
 

@@ -5,6 +5,7 @@
 #include "methods/method.h"
 #include "methods/microspec.h"
 #include "methods/point.h"
+#include "methods/reference.h"
 #include "methods/specaa.h"
 #include "methods/staa.h"
 #include "methods/staa_temporal.h"
@@ -27,7 +28,9 @@ void Method::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
 
 const std::vector<MethodInfo>& method_catalog() {
   static const std::vector<MethodInfo> catalog = {
-      {"reference", "ground truth: stratified samples over pixel and shutter (--samples, 8x8x8)"},
+      {"reference",
+       "ground truth: time integrated exactly per spatial sample on flat water, noise measured "
+       "(--samples, 8x8x1; --batches, 2)"},
       {"supersample", "stratified supersampling at a chosen budget (--samples; T=1 samples t_f)"},
       {"point", "one sample at the pixel centre at t_f (no anti-aliasing)"},
       {"staa-temporal",
@@ -51,8 +54,8 @@ static_assert(MethodOptions{}.intersect_tolerance == kDefaultIntersectTolerance,
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
   validate(o);
   if (name == "reference") {
-    return std::make_unique<StratifiedMethod>(name, StratifiedSettings{o.samples, false},
-                                              o.precision, stratified_intersect_tolerance(o));
+    return std::make_unique<ReferenceMethod>(reference_settings(o), o.precision,
+                                             o.intersect_tolerance);
   }
   if (name == "supersample") {
     return std::make_unique<StratifiedMethod>(name,

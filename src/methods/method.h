@@ -47,6 +47,9 @@ class Method {
   virtual void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                           Image& out) const;
   virtual void end_frame(const FrameContext&, Image&) {}
+  // A method that estimates its own noise (`reference`): the variance of each pixel's
+  // estimate in the last frame rendered (same size as the image); nullptr otherwise.
+  virtual const Image* pixel_variance() const { return nullptr; }
   // True when frame f depends on frames before it (history); sequences then render in
   // order and a single frame is rendered after its predecessors (see engine/render.h).
   virtual bool stateful() const { return false; }

@@ -42,6 +42,8 @@ void validate(const MethodOptions& o) {
     if (!ok) throw Error(flag + ": " + rule);
   };
   require(o.samples.st <= 64, "--samples", "at most 64 time samples (T) per pixel");
+  require(o.batches >= 2 && o.batches <= 8, "--batches", "must be in [2, 8]");
+  require(o.quiet_samples >= 1 && o.quiet_samples <= 64, "--quiet-samples", "must be in [1, 64]");
   require(o.staa.segments >= 1 && o.staa.segments <= 32, "--segments", "must be in [1, 32]");
   require(std::isfinite(o.intersect_tolerance) && o.intersect_tolerance >= 0 &&
               o.intersect_tolerance <= 16,

@@ -134,6 +134,10 @@ struct BrunetonOptions {
 
 struct MethodOptions {
   SampleCounts samples{8, 8, 8};             // --samples, for reference and supersample
+  bool samples_given = false;                // false: each method's default (reference: its own)
+  int batches = 2;                           // --batches, for reference
+  bool adaptive = true;                      // --adaptive on|off, for reference
+  int quiet_samples = 1;                     // --quiet-samples N, for reference
   uint64_t seed = 0;                         // --seed: the sampling streams (rng.h)
   Precision precision = Precision::float64;  // --precision, for the kernel methods
   // --intersect-tolerance X: displaced water, the kernel methods' intersection leaves out

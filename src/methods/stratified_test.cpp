@@ -25,7 +25,7 @@
 namespace sg {
 namespace {
 
-TEST(Reference, CalmWaterEqualsAnalyticCoverageOfTheMirroredDisk) {
+TEST(Stratified, CalmWaterEqualsAnalyticCoverageOfTheMirroredDisk) {
   Scene s = testing::small_scene({Wave{0.0, {0.3, -1.2}, 3.4, 0.0}}, 640, 360);
   s.light.angular_radius_deg = 0.6;  // a disk about 5 pixels across
   SceneModel m(s);
@@ -83,7 +83,7 @@ double direct_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetti
   return sum / (double(s.samples.st) * s.samples.sx * s.samples.sy);
 }
 
-TEST(Reference, FlatFastPathEqualsDirectShading) {
+TEST(Stratified, FlatFastPathEqualsDirectShading) {
   Scene s = testing::project_scene("simple");  // window (300..340, 270..300) holds glints
   s.light.radiance = Rgb(50);
   s.sky = SkyDesc::constant(Rgb(0.1));
@@ -108,7 +108,7 @@ TEST(Reference, FlatFastPathEqualsDirectShading) {
   EXPECT_GT(lit, 0);
 }
 
-TEST(Reference, SampleTimesAreStratifiedAndUniform) {
+TEST(Stratified, SampleTimesAreStratifiedAndUniform) {
   // The kernel's sample times (kernel/sampling.glsl), offsets from the display time.
   kd::Frame f{};
   f.duration = 1.0 / 30;
@@ -135,7 +135,7 @@ TEST(Reference, SampleTimesAreStratifiedAndUniform) {
   EXPECT_EQ(one.dt[0], 0.0);
 }
 
-TEST(Reference, ErrorFallsAsSamplesGrow) {
+TEST(Stratified, ErrorFallsAsSamplesGrow) {
   // A 12x8 window of the simple scene where glints are, against a 32x32x32 render.
   Scene s = testing::project_scene("simple");
   SceneModel m(s);
@@ -173,7 +173,7 @@ TEST(Reference, ErrorFallsAsSamplesGrow) {
   EXPECT_GT(err[1] / err[2], 2.2) << err[1] << " " << err[2];
 }
 
-TEST(Reference, DeterministicAcrossThreadsAndSeeds) {
+TEST(Stratified, DeterministicAcrossThreadsAndSeeds) {
   Scene s = testing::project_scene("high");
   s.width = 80;
   s.height = 45;

@@ -61,6 +61,10 @@ uint64_t fnv1a64(std::string_view bytes) {
   return h;
 }
 
+std::string variance_key(const std::string& frame_key) {
+  return frame_key + "\nvariance of the estimate";
+}
+
 FrameCache::FrameCache(std::string dir) : dir_(std::move(dir)) {
   std::error_code ec;
   fs::create_directories(dir_, ec);

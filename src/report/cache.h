@@ -39,6 +39,10 @@ std::string file_slug(const std::string& label);
 std::string frame_key(const Scene& scene, const std::string& label, int frame,
                       int history_from = -1);
 
+// The key of a frame's companion image: the per-pixel variance of a reference's estimate
+// (methods/reference.h), stored beside the frame as a frame of its own.
+std::string variance_key(const std::string& frame_key);
+
 // 64-bit FNV-1a (Fowler, Noll, Vo) of `bytes`.
 uint64_t fnv1a64(std::string_view bytes);
 

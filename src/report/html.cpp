@@ -48,6 +48,11 @@ std::string fmt(const char* f, double v) {
 std::string code(const std::string& s) {
   return "<code>" + html_escape(s) + "</code>";
 }
+// An RMSE with the noise-corrected one below it, small.
+std::string rmse_cell(const RegionMetrics& m) {
+  if (!(m.reference_se > 0)) return fmt("%.3g", m.rmse);
+  return fmt("%.3g", m.rmse) + " <small>(" + fmt("%.3g", m.rmse_corrected) + ")</small>";
+}
 
 // Equal-width labels above a picture or video whose columns are equal.
 std::string column_labels(const SceneResult& sc) {
@@ -103,17 +108,17 @@ std::string scene_table(const SceneResult& sc) {
       o << "<td>&ndash;</td><td>&ndash;</td><td>&ndash;</td><td>" << fmt("%.3g", a.flicker)
         << "</td><td>&ndash;</td><td>&ndash;</td><td>&ndash;</td><td>&ndash;</td>";
     } else {
-      o << "<td>" << fmt("%.3g", a.rmse) << "</td><td>" << fmt("%.2f", a.psnr) << "</td><td>"
+      o << "<td>" << rmse_cell(a) << "</td><td>" << fmt("%.2f", a.psnr) << "</td><td>"
         << fmt("%.3g", a.temporal_error) << "</td><td>" << fmt("%.3g", a.flicker) << "</td><td>"
-        << fmt("%.3g", n.rmse) << "</td><td>" << fmt("%.3g", n.temporal_error) << "</td><td>"
-        << fmt("%.3g", f.rmse) << "</td><td>" << fmt("%.3g", f.temporal_error) << "</td>";
+        << rmse_cell(n) << "</td><td>" << fmt("%.3g", n.temporal_error) << "</td><td>"
+        << rmse_cell(f) << "</td><td>" << fmt("%.3g", f.temporal_error) << "</td>";
     }
     o << "<td>" << fmt("%.3g", v.ms_per_frame) << "</td></tr>\n";
   };
   row(sc.reference, true);
   for (const auto& v : sc.methods)
     row(v, false);
-  o << "</tbody></table>\n";
+  o << "</tbody></table>\n<p>" << html_escape(reference_noise_text(sc, "'")) << "</p>\n";
   return o.str();
 }
 

@@ -35,7 +35,9 @@ json to_json(const RegionMetrics& m) {
             {"temporal_error", number(m.temporal_error)},
             {"flicker", number(m.flicker)},
             {"flicker_reference", number(m.flicker_reference)},
-            {"pixels", m.pixels}};
+            {"pixels", m.pixels},
+            {"reference_se", number(m.reference_se)},
+            {"rmse_corrected", number(m.rmse_corrected)}};
   if (!m.channels.empty()) {  // colour: {"R": {...}, "G": {...}, "B": {...}}
     j["channels"] = json::object();
     for (size_t c = 0; c < m.channels.size() && c < kChannelNames.size(); ++c) {
@@ -54,6 +56,10 @@ RegionMetrics region_from_json(const json& j) {
   m.flicker = number(j.at("flicker"));
   m.flicker_reference = number(j.at("flicker_reference"));
   m.pixels = j.at("pixels").get<long>();
+  // Files from before the reference measured its noise: unknown noise, the RMSE as it is.
+  m.reference_se = j.contains("reference_se") ? number(j.at("reference_se"))
+                                              : std::numeric_limits<double>::quiet_NaN();
+  m.rmse_corrected = j.contains("rmse_corrected") ? number(j.at("rmse_corrected")) : m.rmse;
   if (j.contains("channels")) {
     for (const char* c : kChannelNames) {
       const json& x = j.at("channels").at(c);
@@ -375,8 +381,42 @@ std::string fmt(const char* f, double v) {
 std::string md_code(const std::string& s) {
   return "`" + s + "`";
 }
+// An RMSE with the noise-corrected one in brackets (the raw one alone when the
+// reference's noise is unknown).
+std::string rmse_cell(const RegionMetrics& m) {
+  if (!(m.reference_se > 0)) return fmt("%.3g", m.rmse);
+  return fmt("%.3g", m.rmse) + " (" + fmt("%.3g", m.rmse_corrected) + ")";
+}
 
 }  // namespace
+
+std::string reference_noise_text(const SceneResult& sc, const std::string& q) {
+  const RegionMetrics &a = sc.reference.at(Region::image), &n = sc.reference.at(Region::near),
+                      &f = sc.reference.at(Region::far);
+  if (!(a.reference_se >= 0)) {
+    return "The reference does not measure its noise: the RMSEs are against it as it is.";
+  }
+  std::string t =
+      "The reference's standard error (its expected RMSE against the exact "
+      "image): " +
+      fmt("%.3g", a.reference_se) + " (near " + fmt("%.3g", n.reference_se) + ", far " +
+      fmt("%.3g", f.reference_se) +
+      "). RMSEs are against the reference, the noise-corrected RMSE "
+      "sqrt(max(0, RMSE^2 - se^2)) in brackets.";
+  // Methods whose RMSEs differ by less than the reference's noise.
+  std::string close;
+  for (size_t x = 0; x < sc.methods.size(); ++x) {
+    for (size_t y = x + 1; y < sc.methods.size(); ++y) {
+      const double d = sc.methods[x].at(Region::image).rmse - sc.methods[y].at(Region::image).rmse;
+      if (std::abs(d) < a.reference_se) {
+        close += (close.empty() ? "" : ", ") + q + sc.methods[x].label + q + " and " + q +
+                 sc.methods[y].label + q;
+      }
+    }
+  }
+  if (!close.empty()) t += " Differences smaller than the reference's noise: " + close + ".";
+  return t;
+}
 
 std::string results_to_markdown(const StudyResults& r, const std::string& prefix) {
   const StudySettings& s = r.settings;
@@ -434,16 +474,16 @@ std::string results_to_markdown(const StudyResults& r, const std::string& prefix
       << fmt("%.4g", sc.reference.at(Region::near).flicker) << ", far "
       << fmt("%.4g", sc.reference.at(Region::far).flicker) << "), "
       << fmt("%.4g", sc.reference.ms_per_frame) << " ms per frame.\n\n";
-    o << "| variant | RMSE | PSNR (dB) | temporal error | flicker | near RMSE | far RMSE | near "
-         "temporal | far temporal | ms/frame |\n";
+    o << reference_noise_text(sc, "`") << "\n\n";
+    o << "| variant | RMSE (corrected) | PSNR (dB) | temporal error | flicker | near RMSE "
+         "(corrected) | far RMSE (corrected) | near temporal | far temporal | ms/frame |\n";
     o << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& v : sc.methods) {
       const RegionMetrics &a = v.at(Region::image), &n = v.at(Region::near), &f = v.at(Region::far);
-      o << "| " << md_code(v.label) << " | " << fmt("%.3g", a.rmse) << " | " << fmt("%.2f", a.psnr)
+      o << "| " << md_code(v.label) << " | " << rmse_cell(a) << " | " << fmt("%.2f", a.psnr)
         << " | " << fmt("%.3g", a.temporal_error) << " | " << fmt("%.3g", a.flicker) << " | "
-        << fmt("%.3g", n.rmse) << " | " << fmt("%.3g", f.rmse) << " | "
-        << fmt("%.3g", n.temporal_error) << " | " << fmt("%.3g", f.temporal_error) << " | "
-        << fmt("%.3g", v.ms_per_frame) << " |\n";
+        << rmse_cell(n) << " | " << rmse_cell(f) << " | " << fmt("%.3g", n.temporal_error) << " | "
+        << fmt("%.3g", f.temporal_error) << " | " << fmt("%.3g", v.ms_per_frame) << " |\n";
     }
     if (sc.channels == 3) {
       o << "\nPer channel (whole image):\n\n| variant | RMSE R | RMSE G | RMSE B | temporal R | "
@@ -489,12 +529,13 @@ std::string results_to_markdown(const StudyResults& r, const std::string& prefix
       }
     }
     if (!sc.budgets.empty()) {
-      o << "\nThe supersampling curve:\n\n| budget | samples per pixel | RMSE | near RMSE | far "
-           "RMSE | temporal error | ms/frame |\n|---|---:|---:|---:|---:|---:|---:|\n";
+      o << "\nThe supersampling curve (RMSE, the noise-corrected RMSE in brackets):\n\n| budget "
+           "| samples per pixel | RMSE | near RMSE | far RMSE | temporal error | ms/frame "
+           "|\n|---|---:|---:|---:|---:|---:|---:|\n";
       for (const auto& b : sc.budgets) {
         o << "| " << md_code(b.label) << " | " << fmt("%g", b.spp) << " | "
-          << fmt("%.3g", b.at(Region::image).rmse) << " | " << fmt("%.3g", b.at(Region::near).rmse)
-          << " | " << fmt("%.3g", b.at(Region::far).rmse) << " | "
+          << rmse_cell(b.at(Region::image)) << " | " << rmse_cell(b.at(Region::near)) << " | "
+          << rmse_cell(b.at(Region::far)) << " | "
           << fmt("%.3g", b.at(Region::image).temporal_error) << " | " << fmt("%.3g", b.ms_per_frame)
           << " |\n";
       }
@@ -519,7 +560,9 @@ std::string results_summary_markdown(const StudyResults& r, const std::string& p
          "its difference.*\n\n";
   }
   o << "RMSE (temporal error) on linear values, " << s.width << "x" << s.height << ", frames "
-    << s.first_frame << "-" << s.last_frame << ", reference " << md_code(s.reference) << ":\n\n";
+    << s.first_frame << "-" << s.last_frame << ", reference " << md_code(s.reference)
+    << "; where the reference measures its noise, the noise-corrected RMSE follows the RMSE "
+       "after a slash:\n\n";
   o << "| variant |";
   for (const auto& sc : r.scenes)
     o << " " << sc.name << " |";
@@ -535,8 +578,10 @@ std::string results_summary_markdown(const StudyResults& r, const std::string& p
         if (m.label == label) v = &m;
       }
       if (v) {
-        o << " " << fmt("%.3g", v->at(Region::image).rmse) << " ("
-          << fmt("%.3g", v->at(Region::image).temporal_error) << ") |";
+        const RegionMetrics& m = v->at(Region::image);
+        o << " " << fmt("%.3g", m.rmse);
+        if (m.reference_se > 0) o << " / " << fmt("%.3g", m.rmse_corrected);
+        o << " (" << fmt("%.3g", m.temporal_error) << ") |";
       } else {
         o << " - |";
       }

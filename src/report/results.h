@@ -33,6 +33,10 @@ struct RegionMetrics {
   double flicker = 0;            // mean |I_f - I_{f-1}| of the variant
   double flicker_reference = 0;  // the same of the reference
   long pixels = 0;               // per frame
+  // The reference's standard error over the same values (NaN when the reference does not
+  // measure its noise) and the RMSE with it taken out, sqrt(max(0, rmse^2 - se^2)).
+  double reference_se = 0;
+  double rmse_corrected = 0;
   std::vector<ChannelFigures> channels;  // R, G, B of a colour scene; empty for a grey one
 };
 
@@ -162,5 +166,10 @@ std::string results_summary_markdown(const StudyResults& r, const std::string& p
 std::string replace_marked_section(const std::string& text, const std::string& begin,
                                    const std::string& end, const std::string& content,
                                    const std::string& name_for_errors);
+
+// The sentence on a scene's reference noise: its standard error (whole image, near, far),
+// which figures are corrected for it, and the methods whose RMSEs differ by less than it
+// (labels quoted with `quote`).
+std::string reference_noise_text(const SceneResult& sc, const std::string& quote);
 
 }  // namespace sg

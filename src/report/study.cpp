@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -11,6 +12,7 @@
 #include "base/error.h"
 #include "engine/render.h"
 #include "image/display.h"
+#include "methods/reference.h"
 #include "metrics/metrics.h"
 #include "report/cache.h"
 #include "report/figures.h"
@@ -65,6 +67,9 @@ double cost_weight(const StudyVariant& v) {
 
 struct Sequence {
   std::vector<Image> frames;
+  // A method that measures its own noise (reference): each frame's per-pixel variance of
+  // its estimate, cached beside the frame (variance_key); empty for other methods.
+  std::vector<Image> variance;
   double ms_per_frame = 0;
   int rendered = 0, cached = 0;
   bool stateful = false;
@@ -124,7 +129,7 @@ class Study {
     if (progress_) progress_(std::clamp(fraction, 0.0, 1.0), what);
   }
   Sequence obtain(const SceneModel& model, const StudyVariant& v, const std::string& what);
-  VariantResult measure(const StudyVariant& v, const Sequence& s, const std::vector<Image>& ref,
+  VariantResult measure(const StudyVariant& v, const Sequence& s, const Sequence& ref,
                         const WaterRegions& w) const;
   SceneResult run_scene(const StudyScene& sc, const std::string& scene_slug);
 
@@ -139,9 +144,11 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   std::unique_ptr<Method> method = build(v);
   Sequence s;
   s.stateful = method->stateful();
+  const bool noise = method->pixel_variance() != nullptr;
   const int a = c_.first_frame, n = c_.last_frame - c_.first_frame + 1;
   const std::vector<std::string> k = keys(model.scene, label, s.stateful);
   s.frames.resize(n);
+  if (noise) s.variance.resize(n);
   std::vector<double> ms(n, 0.0);
   std::vector<bool> have(n, false);
   for (int q = 0; q < n; ++q) {
@@ -151,6 +158,11 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
       s.frames[q] = std::move(f->image);
       ms[q] = f->ms;
       have[q] = true;
+    }
+    if (have[q] && noise) {  // a frame without its variance is rendered again
+      auto v = cache_->load(label, variance_key(k[q]));
+      have[q] = v && v->image.same_shape(s.frames[q]);
+      if (have[q]) s.variance[q] = std::move(v->image);
     }
   }
   const int missing = static_cast<int>(std::count(have.begin(), have.end(), false));
@@ -164,6 +176,10 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   auto keep = [&](int f, const Image& img, double t) {
     const int q = f - a;
     if (q < 0 || q >= n) return;  // frames before the range (warm-up) are not kept
+    if (noise) {                  // before the frame, whose sidecar vouches for both
+      s.variance[q] = *method->pixel_variance();
+      cache_->store(label, variance_key(k[q]), s.variance[q], t);
+    }
     cache_->store(label, k[q], img, t);
     s.frames[q] = img;
     ms[q] = t;
@@ -193,8 +209,9 @@ Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std
   return s;
 }
 
-VariantResult Study::measure(const StudyVariant& v, const Sequence& s,
-                             const std::vector<Image>& ref, const WaterRegions& w) const {
+VariantResult Study::measure(const StudyVariant& v, const Sequence& s, const Sequence& reference,
+                             const WaterRegions& w) const {
+  const std::vector<Image>& ref = reference.frames;
   VariantResult r;
   r.label = canonical_label(v.label);
   r.name = v.name;
@@ -213,6 +230,13 @@ VariantResult Study::measure(const StudyVariant& v, const Sequence& s,
     o.flicker = m.flicker_a;
     o.flicker_reference = m.flicker_b;
     o.pixels = m.frames.front().pixels;
+    if (!reference.variance.empty()) {
+      o.reference_se = sequence_standard_error(reference.variance, masks[k]);
+      o.rmse_corrected = noise_corrected_rmse(o.rmse, o.reference_se);
+    } else {
+      o.reference_se = std::numeric_limits<double>::quiet_NaN();
+      o.rmse_corrected = o.rmse;
+    }
     if (m.channels.size() == 3) {
       for (const SequenceChannelMetrics& c : m.channels)
         o.channels.push_back({c.rmse, c.temporal_error, c.flicker_a});
@@ -277,17 +301,17 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
 
   const std::string tag = scene.name + ": ";
   const Sequence ref = obtain(model, c_.reference, tag + canonical_label(c_.reference.label));
-  r.reference = measure(c_.reference, ref, ref.frames, w);
+  r.reference = measure(c_.reference, ref, ref, w);
 
   // Methods: metrics, and the display frames of every variant for pictures and videos.
   std::vector<Sequence> seqs;
   for (const auto& m : c_.methods) {
     seqs.push_back(obtain(model, m, tag + canonical_label(m.label)));
-    r.methods.push_back(measure(m, seqs.back(), ref.frames, w));
+    r.methods.push_back(measure(m, seqs.back(), ref, w));
   }
   for (const auto& b : c_.budgets) {
     const Sequence s = obtain(model, b, tag + canonical_label(b.label));
-    r.budgets.push_back(measure(b, s, ref.frames, w));
+    r.budgets.push_back(measure(b, s, ref, w));
   }
   std::stable_sort(r.budgets.begin(), r.budgets.end(),
                    [](const VariantResult& x, const VariantResult& y) { return x.spp < y.spp; });

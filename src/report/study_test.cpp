@@ -48,6 +48,7 @@ StudyVariant variant(const std::string& label, const std::string& name, SampleCo
   v.label = label;
   v.name = name;
   v.options.samples = samples;
+  v.options.samples_given = true;
   return v;
 }
 
@@ -192,6 +193,26 @@ TEST_F(StudyTest, ResultsHoldEveryMethodRegionAndTheEqualCostComparison) {
   EXPECT_EQ(s.equal_cost->target_rmse, s.methods[0].at(Region::image).rmse);
   EXPECT_TRUE(fs::exists(fs::path(dir_) / "results.json"));
   EXPECT_FALSE(fs::exists(fs::path(dir_) / "index.html"));
+  // The reference's noise: measured per region, beside every variant's RMSE, which is
+  // corrected by it; a cached frame without its variance is rendered again.
+  for (int k = 0; k < 4; ++k) {
+    const double se = s.reference.regions[k].reference_se;
+    EXPECT_GT(se, 0) << kRegionNames[k];
+    for (const auto& m : s.methods) {
+      const RegionMetrics& g = m.regions[k];
+      EXPECT_EQ(g.reference_se, se) << m.label;
+      EXPECT_NEAR(g.rmse_corrected, std::sqrt(std::max(0.0, g.rmse * g.rmse - se * se)), 1e-15);
+      EXPECT_LT(g.rmse_corrected, g.rmse) << m.label;
+    }
+  }
+  const FrameCache cache(dir_ + "/cache");
+  const std::string key = frame_key(c_.scenes[0].scene, c_.reference.label, 2);
+  ASSERT_TRUE(cache.has(c_.reference.label, variance_key(key)));
+  fs::remove(cache.path(c_.reference.label, variance_key(key)));
+  const StudyResults again = run_study(c_);
+  EXPECT_EQ(again.scenes[0].reference.frames_rendered, 1);
+  EXPECT_EQ(again.scenes[0].reference.at(Region::image).reference_se,
+            s.reference.at(Region::image).reference_se);
 }
 
 // A colour scene: frames cached as RGB, figures over all channels and per channel, the

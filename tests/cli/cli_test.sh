@@ -247,6 +247,15 @@ expect_fail "video folder" "--video: $work/nope/x.mp4: cannot write: folder '$wo
   timeout 20 "$bin" render "$colour" "${slow[@]}" --frames 0-1 --video "$work/nope/x.mp4"
 expect_fail "display exr" "--display: applies to .png output" \
   timeout 20 "$bin" render "$colour" "${slow[@]}" --display --out "$work/x.exr"
+expect_rc "variance not png" 2 "--variance-out: must be .exr or .pfm" \
+  timeout 20 "$bin" render "$colour" "${slow[@]}" --variance-out "$work/v.png" --out "$work/x.exr"
+expect_rc "variance of a method without noise" 2 "--variance-out: method point" \
+  timeout 20 "$bin" render "$scene" -m point --variance-out "$work/v.pfm" --out "$work/x.exr"
+# The reference measures its noise: printed, and each pixel's variance written.
+expect_rc "reference standard error" 0 "reference: standard error" \
+  "$bin" render "$colour" -m reference --samples 2x2x1 --width 48 -q --variance-out \
+  "$work/var.pfm" --out "$work/rv.pfm"
+[ -s "$work/var.pfm" ] && passes=$((passes + 1)) || { echo "FAIL --variance-out wrote nothing"; fails=$((fails + 1)); }
 expect_fail "no glare alone" "--no-glare: needs --display or --video" \
   timeout 20 "$bin" render "$colour" "${slow[@]}" --no-glare --out "$work/x.png"
 expect_fail "no output" "--out: required (or --video FILE.mp4 with --frames A-B)" \

@@ -92,6 +92,7 @@ uniform sampler2D fits;
 uniform Frame frame;
 uniform StaaParams params;
 uniform SampleCounts counts;
+uniform ReferenceParams ref_params;
 uniform PathTableInfo tinfo;
 uniform KernelFitInfo finfo;
 void main() {
@@ -99,6 +100,7 @@ void main() {
   vec4 w = point_pixel(waves, frame, p.x, p.y);
   w += stratified_pixel(waves, frame, counts, p.x, p.y);
   w += staa_temporal_pixel(waves, frame, p.x, p.y);
+  w += reference_pixel(waves, frame, ref_params, p.x, p.y).weights;
   StaaPath path;
   StaaResult r = staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, frame, params, p.x,
                             p.y, path);

@@ -17,6 +17,9 @@ uniform Frame frame;
 #if defined(SG_METHOD_STRATIFIED)
 uniform SampleCounts counts;
 #endif
+#if defined(SG_METHOD_REFERENCE)
+uniform ReferenceParams ref_params;
+#endif
 #if defined(SG_METHOD_STAA)
 uniform StaaParams params;
 uniform PathTableInfo tinfo;
@@ -31,6 +34,8 @@ void main() {
   w = point_pixel(waves, frame, p.x, p.y);
 #elif defined(SG_METHOD_STRATIFIED)
   w = stratified_pixel(waves, frame, counts, p.x, p.y);
+#elif defined(SG_METHOD_REFERENCE)
+  w = reference_pixel(waves, frame, ref_params, p.x, p.y).weights;
 #elif defined(SG_METHOD_STAA_TEMPORAL)
   w = staa_temporal_pixel(waves, frame, p.x, p.y);
 #elif defined(SG_METHOD_STAA)

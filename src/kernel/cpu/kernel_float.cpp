@@ -19,6 +19,10 @@ vec4 float_stratified_pixel(const WaveBuffer& waves, const Frame& f, const Sampl
                             int j) {
   return stratified_pixel(waves, f, n, i, j);
 }
+ReferenceResult float_reference_pixel(const WaveBuffer& waves, const Frame& f,
+                                      const ReferenceParams& n, int i, int j) {
+  return reference_pixel(waves, f, n, i, j);
+}
 vec4 float_staa_temporal_pixel(const WaveBuffer& waves, const Frame& f, int i, int j) {
   return staa_temporal_pixel(waves, f, i, j);
 }
@@ -39,6 +43,15 @@ real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z,
 }
 vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt) {
   return water_gradient(waves, f, x, z, dt);
+}
+
+void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, vec2* g,
+                            vec2* dg) {
+  const PathDerivatives p = path_derivatives(waves, f, point);
+  for (int k = 0; k <= f.segments; ++k) {
+    g[k] = p.g[k];
+    dg[k] = p.dg[k];
+  }
 }
 
 }  // namespace sg::kf

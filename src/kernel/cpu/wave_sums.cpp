@@ -107,6 +107,49 @@ void PathT(const Arrays<T>& w, T x0, T z0, int K, T* gx_out, T* gz_out) {
   }
 }
 
+// kernel/reference.glsl, wave_sum_path_derivatives: the gradients and their time
+// derivatives at the path's instants, theta_k = theta - c (end - t_k) by angle subtraction.
+template <class T>
+void PathDerivativesT(const Arrays<T>& w, T x0, T z0, int K, T* gx_out, T* gz_out, T* dgx_out,
+                      T* dgz_out) {
+  const hn::ScalableTag<T> d;
+  using V = decltype(hn::Zero(d));
+  const size_t N = hn::Lanes(d);
+  const auto x = hn::Set(d, x0), z = hn::Set(d, z0), zero = hn::Zero(d);
+  V gx[kMaxInstants], gz[kMaxInstants], dgx[kMaxInstants], dgz[kMaxInstants];
+  for (int k = 0; k <= K; ++k)
+    gx[k] = gz[k] = dgx[k] = dgz[k] = zero;
+  const size_t n = size_t(w.count);
+  for (size_t i = 0; i < n; i += N) {
+    const V a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i);
+    const V th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), zero, x, z, zero);
+    const V A = hn::LoadU(d, w.A + i);
+    const V Ac = hn::Mul(A, hn::LoadU(d, w.c + i));
+    const V s = hn::Sin(d, th), c = hn::Cos(d, th);
+    const V gk = hn::Mul(A, c), dk = hn::Mul(Ac, s);
+    gx[K] = hn::MulAdd(gk, a, gx[K]);
+    gz[K] = hn::MulAdd(gk, b, gz[K]);
+    dgx[K] = hn::NegMulAdd(dk, a, dgx[K]);
+    dgz[K] = hn::NegMulAdd(dk, b, dgz[K]);
+    for (int k = 0; k < K; ++k) {
+      const V rc = hn::LoadU(d, w.rot_c + k * n + i), rs = hn::LoadU(d, w.rot_s + k * n + i);
+      const V ck = hn::MulAdd(c, rc, hn::Mul(s, rs));
+      const V sk = hn::MulSub(s, rc, hn::Mul(c, rs));
+      const V g = hn::Mul(A, ck), dg = hn::Mul(Ac, sk);
+      gx[k] = hn::MulAdd(g, a, gx[k]);
+      gz[k] = hn::MulAdd(g, b, gz[k]);
+      dgx[k] = hn::NegMulAdd(dg, a, dgx[k]);
+      dgz[k] = hn::NegMulAdd(dg, b, dgz[k]);
+    }
+  }
+  for (int k = 0; k <= K; ++k) {
+    gx_out[k] = hn::GetLane(hn::SumOfLanes(d, gx[k]));
+    gz_out[k] = hn::GetLane(hn::SumOfLanes(d, gz[k]));
+    dgx_out[k] = hn::GetLane(hn::SumOfLanes(d, dgx[k]));
+    dgz_out[k] = hn::GetLane(hn::SumOfLanes(d, dgz[k]));
+  }
+}
+
 // kernel/staa.glsl, wave_sum_staa: Eq. 20's split, the resolved waves' path and Hessian
 // and the aliasing waves' NDF (kernel/ndf.glsl), in one pass over the waves [0, count)
 // (the remainder's sums are the caller's: kernel/cpu/wave_sums_hooks.inc). A vector that
@@ -237,6 +280,14 @@ void PathD(const Arrays<double>& w, double x, double z, int K, double* gx, doubl
 void PathF(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz) {
   PathT(w, x, z, K, gx, gz);
 }
+void PathDerivativesD(const Arrays<double>& w, double x, double z, int K, double* gx, double* gz,
+                      double* dgx, double* dgz) {
+  PathDerivativesT(w, x, z, K, gx, gz, dgx, dgz);
+}
+void PathDerivativesF(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz,
+                      float* dgx, float* dgz) {
+  PathDerivativesT(w, x, z, K, gx, gz, dgx, dgz);
+}
 void StaaD(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out) {
   StaaT(w, in, out);
 }
@@ -256,6 +307,8 @@ HWY_EXPORT(GradientD);
 HWY_EXPORT(GradientF);
 HWY_EXPORT(PathD);
 HWY_EXPORT(PathF);
+HWY_EXPORT(PathDerivativesD);
+HWY_EXPORT(PathDerivativesF);
 HWY_EXPORT(StaaD);
 HWY_EXPORT(StaaF);
 
@@ -276,6 +329,14 @@ void path(const Arrays<double>& w, double x, double z, int K, double* gx, double
 }
 void path(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz) {
   HWY_DYNAMIC_DISPATCH(PathF)(w, x, z, K, gx, gz);
+}
+void path_derivatives(const Arrays<double>& w, double x, double z, int K, double* gx, double* gz,
+                      double* dgx, double* dgz) {
+  HWY_DYNAMIC_DISPATCH(PathDerivativesD)(w, x, z, K, gx, gz, dgx, dgz);
+}
+void path_derivatives(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz,
+                      float* dgx, float* dgz) {
+  HWY_DYNAMIC_DISPATCH(PathDerivativesF)(w, x, z, K, gx, gz, dgx, dgz);
 }
 void staa_pass(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out) {
   HWY_DYNAMIC_DISPATCH(StaaD)(w, in, out);

@@ -1,6 +1,7 @@
 // The CPU engine's vectorised sums over the waves: the same arithmetic as the kernel's
 // loops (kernel/waves.glsl, wave_sum_height_first and wave_sum_gradient;
-// kernel/reflection_path.glsl, wave_sum_path; kernel/staa.glsl, wave_sum_staa), run across
+// kernel/reflection_path.glsl, wave_sum_path; kernel/staa.glsl, wave_sum_staa;
+// kernel/reference.glsl, wave_sum_path_derivatives), run across
 // the waves in SIMD lanes with Highway (sine and cosine: Highway's contrib math, 3 ULP)
 // and dispatched at run time to the host's widest instruction set. The kernel's loops are
 // the definition; kernel_wave_sums_test holds these equal to them (they differ only in
@@ -53,6 +54,12 @@ void gradient(const Arrays<float>& w, float x, float z, float dt, float& gx, flo
 // The gradients at the K + 1 instants of a path (every wave at full amplitude).
 void path(const Arrays<double>& w, double x, double z, int segments, double* gx, double* gz);
 void path(const Arrays<float>& w, float x, float z, int segments, float* gx, float* gz);
+// The gradients and their time derivatives at the K + 1 instants of a path
+// (kernel/reference.glsl, wave_sum_path_derivatives).
+void path_derivatives(const Arrays<double>& w, double x, double z, int segments, double* gx,
+                      double* gz, double* dgx, double* dgz);
+void path_derivatives(const Arrays<float>& w, float x, float z, int segments, float* gx, float* gz,
+                      float* dgx, float* dgz);
 void staa_pass(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out);
 void staa_pass(const Arrays<float>& w, const StaaPassIn<float>& in, StaaPassOut<float>& out);
 

@@ -1,0 +1,560 @@
+// The reference estimator (`--method reference`): the pixel's box-filtered mean over the
+// pixel square and the shutter interval (the scene spec's value), with the time integral
+// done exactly on flat water, so that only the spatial sampling leaves noise.
+//
+// Flat water. A spatial sample's hit point does not move, so its radiance over the shutter
+// depends only on the path of the gradient g(t) = grad h(x, z, t) there:
+//   1. The path: g and dg/dt at the instants t_k = end - duration (K - k) / K, k = 0..K
+//      (one sine and cosine per wave, the other instants by angle addition with the
+//      rotations of the wave buffer: path_derivatives). Between two instants g is the
+//      cubic Hermite interpolant H(s), s in [0, 1], of those values; its error is at most
+//      h^4 / 384 max |g''''| <= h^4 / 384 sum A |k| c^4 (h = duration / K), and the host
+//      picks K so that this bound is at most 1e-4 of the light's radius (below:
+//      reference_segments in methods/reference.h).
+//   2. The light in gradient space. With m = (-g_x, 1, -g_z) the reflection
+//      r = 2 (m.v) m / (m.m) - v lies in the disk (r.L >= cos rho) exactly when
+//          Q(g) = 2 (m.v)(m.L) - (v.L + cos rho)(m.m) >= 0,
+//      a quadratic in g: the light is a conic of the gradient plane (an ellipse about the
+//      gradient g* whose normal is the half vector of v and L). Written about g*, where
+//      Q = (1 - cos rho)(1 + |g*|^2) and grad Q = 2 (1 - cos rho) g* exactly, every term is
+//      of the size of the disk, so the test keeps its digits in float. The horizon
+//      likewise: r.y > 0 exactly when R(g) = v.y (1 - g.g) - 2 v_xz . g > 0.
+//   3. On each sub-interval Q(H(s)) and R(H(s)) are polynomials of degree 6 in s. A cheap
+//      bound (|H(s) - H(0)| <= |c1| + |c2| + |c3| with the gradients of Q and R at H(0))
+//      proves most sub-intervals free of crossings; the others have the roots of the
+//      polynomials isolated in [0, 1] by Bernstein subdivision (the coefficients' sign
+//      changes bound the roots: none, exactly one, or split, at most 24 halvings) and
+//      refined by safeguarded Newton steps to 1e-12 of the sub-interval (2e-6 in float).
+//   4. Between consecutive crossings the state (light, sky, below the horizon) is
+//      constant: without Fresnel and sky gradient the weights are the pieces' lengths,
+//      exactly; otherwise the smooth factors (Fresnel, the sky's zenith share) are
+//      integrated over each piece by 4-point Gauss-Legendre on H.
+//   Sub-intervals with a root pair closer than 2^-24 of their length (a path tangent to
+//   the rim within that) are taken as not crossing: the error is at most that length.
+//
+// Displaced water: the hit point moves with the waves, so each sample is traced at its own
+// time: every spatial stratum takes T samples, each with its own jittered position and
+// its own time stratum (positions not shared between times).
+//
+// Sampling. B independent batches (B >= 2), each S_x x S_y jittered positions, one per
+// cell of the pixel, each cell with T samples; the pixel's value is the batches' mean and
+// its spread the estimate of its variance (returned per batch: the host applies the
+// radiances and forms the variance per channel). Random numbers from the stream of
+// (seed, frame, pixel) (rng.glsl) in a fixed order: per batch, per cell in row-major order,
+// per sample: x, y (and t on displaced water). Same inputs, same bytes.
+
+// The gradient and its time derivative at the path's instants t_0 .. t_K.
+struct PathDerivatives {
+  vec2 g[kMaxSegments + 1];
+  vec2 dg[kMaxSegments + 1];
+};
+
+// The definition (the CPU engine's vectorised equivalent under SG_CPU_WAVE_SUMS): with
+// theta_k = theta - c (end - t_k), g = sum A cos(theta_k) (a, b) and
+// dg/dt = -sum A c sin(theta_k) (a, b).
+SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
+  PathDerivatives p;
+  for (int k = 0; k <= f.segments; ++k) {
+    p.g[k] = vec2(0.0);
+    p.dg[k] = vec2(0.0);
+  }
+  for (int i = 0; i < f.wave_count; ++i) {
+    Wave w = wave_at(waves, f, i);
+    real theta = wave_phase(w, point.x, point.z, 0.0);
+    real s = sin(theta);
+    real c = cos(theta);
+    vec2 k = vec2(w.a, w.b);
+    p.g[f.segments] += (w.A * c) * k;
+    p.dg[f.segments] -= (w.A * w.c * s) * k;
+    for (int q = 0; q < f.segments; ++q) {
+      vec2 rot = wave_rotation(waves, f, i, q);
+      real ck = c * rot.x + s * rot.y;
+      real sk = s * rot.x - c * rot.y;
+      p.g[q] += (w.A * ck) * k;
+      p.dg[q] -= (w.A * w.c * sk) * k;
+    }
+  }
+  return p;
+}
+
+#ifdef SG_CPU_WAVE_SUMS
+PathDerivatives path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point);
+#else
+SG_FN PathDerivatives path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
+  return wave_sum_path_derivatives(waves, f, point);
+}
+#endif
+
+// The light disk and the horizon in the gradient plane for unit view direction v
+// (towards the camera): Q(centre + u) = q0 + lin . u + u^T A u, A = (a11, a12, a22).
+struct LightConic {
+  bool possible;  // some of the disk is above the horizon
+  vec2 centre;
+  real q0;
+  vec2 lin;
+  vec3 quad;
+  real lambda_max;  // the larger eigenvalue of A
+  vec3 v;
+};
+
+SG_FN LightConic light_conic(IN(Light) l, vec3 v) {
+  LightConic c;
+  c.v = v;
+  c.possible = l.L.y > -l.sin_radius;
+  real one_minus_cos = 0.5 * l.chord2;
+  real kappa = dot(v, l.L) + l.cos_radius;
+  c.quad = vec3(2.0 * v.x * l.L.x - kappa, v.x * l.L.z + v.z * l.L.x, 2.0 * v.z * l.L.z - kappa);
+  real tr = 0.5 * (c.quad.x + c.quad.z);
+  real df = 0.5 * (c.quad.x - c.quad.z);
+  c.lambda_max = tr + sqrt(df * df + c.quad.y * c.quad.y);
+  vec3 h = v + l.L;
+  if (h.y > 1e-3 * length(h)) {
+    // About g*, the gradient of the normal along h: the exact values there.
+    c.centre = vec2(-h.x / h.y, -h.z / h.y);
+    c.q0 = one_minus_cos * (1.0 + dot(c.centre, c.centre));
+    c.lin = (2.0 * one_minus_cos) * c.centre;
+  } else {
+    // No upward normal mirrors v onto L (a light at the horizon, a grazing view): Q about
+    // g = 0, as written.
+    c.centre = vec2(0.0);
+    c.q0 = 2.0 * v.y * l.L.y - kappa;
+    c.lin = -2.0 * (v.y * vec2(l.L.x, l.L.z) + l.L.y * vec2(v.x, v.z));
+  }
+  return c;
+}
+
+// u^T A y for A = (a11, a12, a22).
+SG_FN real conic_form(vec3 A, vec2 u, vec2 y) {
+  return u.x * (A.x * y.x + A.y * y.y) + u.y * (A.y * y.x + A.z * y.y);
+}
+
+SG_FN real conic_q(IN(LightConic) c, vec2 g) {
+  vec2 u = g - c.centre;
+  return c.q0 + dot(c.lin, u) + conic_form(c.quad, u, u);
+}
+
+// |m|^2 r.y for the gradient g: positive above the horizon.
+SG_FN real horizon_r(vec3 v, vec2 g) {
+  return v.y * (1.0 - dot(g, g)) - 2.0 * (v.x * g.x + v.z * g.y);
+}
+
+// A polynomial of degree 6 in s, power basis: c[0] + c[1] s + ... + c[6] s^6.
+struct Poly6 {
+  real c[7];
+};
+
+SG_FN real poly6_eval(IN(Poly6) p, real s) {
+  real r = p.c[6];
+  for (int k = 5; k >= 0; --k)
+    r = r * s + p.c[k];
+  return r;
+}
+
+SG_FN real poly6_derivative(IN(Poly6) p, real s) {
+  real r = 6.0 * p.c[6];
+  for (int k = 5; k >= 1; --k)
+    r = r * s + real(k) * p.c[k];
+  return r;
+}
+
+// C(k, j) / C(6, j) for j <= k: power-basis to Bernstein coefficients of degree 6.
+const real kPowerToBernstein6[49] = {
+    1.0, 0.0,       0.0,         0.0,         0.0,        0.0,       0.0,  //
+    1.0, 1.0 / 6.0, 0.0,         0.0,         0.0,        0.0,       0.0,  //
+    1.0, 2.0 / 6.0, 1.0 / 15.0,  0.0,         0.0,        0.0,       0.0,  //
+    1.0, 3.0 / 6.0, 3.0 / 15.0,  1.0 / 20.0,  0.0,        0.0,       0.0,  //
+    1.0, 4.0 / 6.0, 6.0 / 15.0,  4.0 / 20.0,  1.0 / 15.0, 0.0,       0.0,  //
+    1.0, 5.0 / 6.0, 10.0 / 15.0, 10.0 / 20.0, 5.0 / 15.0, 1.0 / 6.0, 0.0,  //
+    1.0, 1.0,       1.0,         1.0,         1.0,        1.0,       1.0,
+};
+
+// The Bernstein coefficients of p restricted to [a, b] (p(a + (b - a) s), s in [0, 1]):
+// a Taylor shift by a (repeated synthetic division), a scaling by b - a, then the basis
+// change.
+SG_FN Poly6 poly6_bernstein(IN(Poly6) p, real a, real b) {
+  Poly6 q = p;
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 5; j >= i; --j)
+      q.c[j] += a * q.c[j + 1];
+  }
+  real w = b - a;
+  real scale = 1.0;
+  for (int j = 0; j <= 6; ++j) {
+    q.c[j] *= scale;
+    scale *= w;
+  }
+  Poly6 r;
+  for (int k = 0; k <= 6; ++k) {
+    real sum = 0.0;
+    for (int j = 0; j <= k; ++j)
+      sum += kPowerToBernstein6[k * 7 + j] * q.c[j];
+    r.c[k] = sum;
+  }
+  return r;
+}
+
+// Sign changes of the coefficients (zero counted as positive).
+SG_FN int sign_changes(IN(Poly6) b) {
+  int n = 0;
+  for (int k = 0; k < 6; ++k)
+    n += (b.c[k] >= 0.0) != (b.c[k + 1] >= 0.0) ? 1 : 0;
+  return n;
+}
+
+SG_FN real root_tolerance_s() {
+  return kDoublePrecision ? 1e-12 : 2e-6;
+}
+
+// The root of p in [a, b], where p(a) and p(b) have opposite signs (fa = p(a)): Newton
+// steps kept inside the shrinking bracket, bisection where a step leaves it.
+SG_FN real poly6_refine(IN(Poly6) p, real a, real b, real fa) {
+  real lo = a;
+  real hi = b;
+  bool lo_positive = fa >= 0.0;
+  real x = 0.5 * (a + b);
+  for (int it = 0; it < 64; ++it) {
+    real fx = poly6_eval(p, x);
+    if ((fx >= 0.0) == lo_positive) {
+      lo = x;
+    } else {
+      hi = x;
+    }
+    real dfx = poly6_derivative(p, x);
+    real next = dfx != 0.0 ? x - fx / dfx : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    real step = abs(next - x);
+    x = next;
+    if (step <= root_tolerance_s() || hi - lo <= root_tolerance_s()) break;
+  }
+  return x;
+}
+
+// The roots of p in (0, 1), increasing: Bernstein subdivision over the binary tree of
+// dyadic intervals, depth first without a stack (interval index i at depth d is
+// [i 2^-d, (i + 1) 2^-d]).
+const int kMaxSubdivisionDepth = 24;
+const int kMaxSubdivisionSteps = 512;
+
+struct Roots6 {
+  real s[6];
+  int count;
+};
+
+SG_FN Roots6 poly6_roots(IN(Poly6) p) {
+  Roots6 r;
+  r.count = 0;
+  for (int k = 0; k < 6; ++k)
+    r.s[k] = 0.0;
+  int d = 0;
+  int i = 0;
+  for (int step = 0; step < kMaxSubdivisionSteps; ++step) {
+    real inv = 1.0 / real(1 << d);
+    real a = real(i) * inv;
+    real b = real(i + 1) * inv;
+    Poly6 bz = poly6_bernstein(p, a, b);
+    // The end coefficients are p(a) and p(b): evaluated as such, so that neighbouring
+    // intervals agree on the sign at their shared end (a root there is counted once).
+    bz.c[0] = poly6_eval(p, a);
+    bz.c[6] = poly6_eval(p, b);
+    int changes = sign_changes(bz);
+    bool split = false;
+    if (changes == 1 || (changes > 1 && d == kMaxSubdivisionDepth)) {
+      // Exactly one root (one sign change); at the depth limit an odd number of sign
+      // changes between the ends counts as one, an even number as none (a tangency).
+      bool ends_differ = (bz.c[0] >= 0.0) != (bz.c[6] >= 0.0);
+      if (ends_differ && r.count < 6) {
+        r.s[r.count] = changes == 1 ? poly6_refine(p, a, b, bz.c[0])
+                                    : a - bz.c[0] * (b - a) / (bz.c[6] - bz.c[0]);
+        r.count += 1;
+      }
+    } else if (changes > 1) {
+      split = true;
+    }
+    if (split) {
+      d += 1;
+      i *= 2;
+      continue;
+    }
+    while (d > 0 && (i % 2) == 1) {
+      i /= 2;
+      d -= 1;
+    }
+    if (d == 0) break;
+    i += 1;
+  }
+  return r;
+}
+
+// Q(H(s)) for the Hermite coefficients c0..c3 (H = c0 + c1 s + c2 s^2 + c3 s^3).
+SG_FN Poly6 conic_poly(IN(LightConic) lc, vec2 c0, vec2 c1, vec2 c2, vec2 c3) {
+  vec2 u[4];
+  u[0] = c0 - lc.centre;
+  u[1] = c1;
+  u[2] = c2;
+  u[3] = c3;
+  Poly6 p;
+  for (int n = 0; n <= 6; ++n)
+    p.c[n] = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    p.c[a] += dot(lc.lin, u[a]);
+    for (int b = 0; b < 4; ++b)
+      p.c[a + b] += conic_form(lc.quad, u[a], u[b]);
+  }
+  p.c[0] += lc.q0;
+  return p;
+}
+
+// R(H(s)) likewise.
+SG_FN Poly6 horizon_poly(vec3 v, vec2 c0, vec2 c1, vec2 c2, vec2 c3) {
+  vec2 h[4];
+  h[0] = c0;
+  h[1] = c1;
+  h[2] = c2;
+  h[3] = c3;
+  vec2 vh = vec2(v.x, v.z);
+  Poly6 p;
+  for (int n = 0; n <= 6; ++n)
+    p.c[n] = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    p.c[a] -= 2.0 * dot(vh, h[a]);
+    for (int b = 0; b < 4; ++b)
+      p.c[a + b] -= v.y * dot(h[a], h[b]);
+  }
+  p.c[0] += v.y;
+  return p;
+}
+
+// The cubic Hermite interpolant of one sub-interval.
+struct HermitePath {
+  vec2 c0;
+  vec2 c1;
+  vec2 c2;
+  vec2 c3;
+};
+
+SG_FN HermitePath hermite_path(vec2 g0, vec2 d0, vec2 g1, vec2 d1, real h) {
+  HermitePath H;
+  H.c0 = g0;
+  H.c1 = h * d0;
+  H.c2 = 3.0 * (g1 - g0) - (2.0 * h) * d0 - h * d1;
+  H.c3 = 2.0 * (g0 - g1) + h * d0 + h * d1;
+  return H;
+}
+
+SG_FN vec2 hermite_at(IN(HermitePath) H, real s) {
+  return H.c0 + s * (H.c1 + s * (H.c2 + s * H.c3));
+}
+
+// States between crossings.
+const int kStateSky = 0;
+const int kStateLight = 1;
+const int kStateBelow = 2;
+
+// The weights at gradient g in a piece of state `state` (the integrand of the smooth
+// terms): water_weights with the state's light/sky/below decided.
+SG_FN vec4 state_weights(IN(Frame) f, vec3 v, vec2 g, int state) {
+  if (state == kStateBelow) return sea_weights();
+  vec3 m = normal_direction(g);
+  real mm = dot(m, m);
+  real mv = dot(m, v);
+  real F = fresnel_factor(f.fresnel, mv * inversesqrt(mm));
+  vec4 above = light_weights();
+  if (state == kStateSky) above = sky_weights(f, horizon_r(v, g) / mm);
+  return F * above + (1.0 - F) * sea_weights();
+}
+
+// The integral over [a, b] (in units of s) of a piece in state `state`.
+SG_FN vec4 piece_weights(IN(Frame) f, vec3 v, IN(HermitePath) H, real a, real b, int state) {
+  real len = b - a;
+  bool smooth_terms = f.fresnel != 0 || f.sky_gradient;
+  if (state == kStateBelow) return len * sea_weights();
+  if (!smooth_terms)
+    return state == kStateLight ? len * light_weights() : len * vec4(0.0, 0.0, 1.0, 0.0);
+  // 4-point Gauss-Legendre.
+  real mid = 0.5 * (a + b);
+  real half_len = 0.5 * len;
+  vec4 sum = vec4(0.0);
+  sum += 0.3478548451374538 *
+         state_weights(f, v, hermite_at(H, mid - 0.8611363115940526 * half_len), state);
+  sum += 0.6521451548625461 *
+         state_weights(f, v, hermite_at(H, mid - 0.3399810435848563 * half_len), state);
+  sum += 0.6521451548625461 *
+         state_weights(f, v, hermite_at(H, mid + 0.3399810435848563 * half_len), state);
+  sum += 0.3478548451374538 *
+         state_weights(f, v, hermite_at(H, mid + 0.8611363115940526 * half_len), state);
+  return half_len * sum;
+}
+
+// The weights of one sub-interval of length h between instants with gradients g0, g1 and
+// time derivatives d0, d1, as a fraction of the sub-interval.
+SG_FN vec4 subinterval_weights(IN(Frame) f, IN(LightConic) lc, vec2 g0, vec2 d0, vec2 g1, vec2 d1,
+                               real h) {
+  vec3 v = lc.v;
+  HermitePath H = hermite_path(g0, d0, g1, d1, h);
+  real reach = length(H.c1) + length(H.c2) + length(H.c3);  // |H(s) - g0| on [0, 1]
+  // Q(g0 + e) <= Q(g0) + |grad Q(g0)| |e| + max(lambda_max, 0) |e|^2.
+  bool light = lc.possible;
+  if (light) {
+    vec2 u0 = g0 - lc.centre;
+    real q = conic_q(lc, g0);
+    vec2 grad = lc.lin + 2.0 * vec2(lc.quad.x * u0.x + lc.quad.y * u0.y,
+                                    lc.quad.y * u0.x + lc.quad.z * u0.y);
+    light = q + length(grad) * reach + max(lc.lambda_max, 0.0) * reach * reach >= 0.0;
+  }
+  // R(g0 + e) >= R(g0) - |grad R(g0)| |e| - v.y |e|^2.
+  real r0 = horizon_r(v, g0);
+  vec2 grad_r = -2.0 * vec2(v.x, v.z) - (2.0 * v.y) * g0;
+  bool horizon = r0 - length(grad_r) * reach - v.y * reach * reach <= 0.0;
+
+  // The crossings, merged in increasing order, between the sub-interval's ends.
+  real cuts[14];
+  int n = 0;
+  cuts[0] = 0.0;
+  n = 1;
+  Roots6 rq;
+  rq.count = 0;
+  Roots6 rr;
+  rr.count = 0;
+  if (light) rq = poly6_roots(conic_poly(lc, H.c0, H.c1, H.c2, H.c3));
+  if (horizon) rr = poly6_roots(horizon_poly(v, H.c0, H.c1, H.c2, H.c3));
+  for (int k = 0; k < 6; ++k) {
+    rq.s[k] = k < rq.count ? rq.s[k] : 2.0;
+    rr.s[k] = k < rr.count ? rr.s[k] : 2.0;
+  }
+  int iq = 0;
+  int ir = 0;
+  for (int k = 0; k < 12; ++k) {
+    if (iq >= rq.count && ir >= rr.count) break;
+    bool take_q = ir >= rr.count || (iq < rq.count && rq.s[iq] <= rr.s[ir]);
+    real s = 0.0;
+    if (take_q) {
+      s = rq.s[iq];
+      iq += 1;
+    } else {
+      s = rr.s[ir];
+      ir += 1;
+    }
+    cuts[n] = clamp(s, cuts[n - 1], 1.0);
+    n += 1;
+  }
+  cuts[n] = 1.0;
+  n += 1;
+
+  vec4 sum = vec4(0.0);
+  for (int k = 0; k + 1 < n; ++k) {
+    real a = cuts[k];
+    real b = cuts[k + 1];
+    if (!(b > a)) continue;
+    vec2 g = hermite_at(H, 0.5 * (a + b));
+    int state = kStateSky;
+    if (horizon && horizon_r(v, g) <= 0.0) {
+      state = kStateBelow;
+    } else if (light && conic_q(lc, g) >= 0.0) {
+      state = kStateLight;
+    }
+    sum += piece_weights(f, v, H, a, b, state);
+  }
+  return sum;
+}
+
+// The weights of a water point seen from unit direction v, averaged exactly over the
+// shutter along its path p.
+SG_FN vec4 path_time_weights(IN(Frame) f, vec3 v, IN(PathDerivatives) p) {
+  LightConic lc = light_conic(f.light, v);
+  real h = f.duration / real(f.segments);
+  vec4 sum = vec4(0.0);
+  for (int k = 0; k < f.segments; ++k)
+    sum += subinterval_weights(f, lc, p.g[k], p.dg[k], p.g[k + 1], p.dg[k + 1], h);
+  return sum / real(f.segments);
+}
+
+// One spatial sample on flat water, integrated over the shutter.
+SG_FN vec4 exact_time_sample(IN(WaveBuffer) waves, IN(Frame) f, real px, real py) {
+  vec3 d = normalize(camera_direction(f.camera, px, py));
+  RayHit hit = intersect_flat(f.camera.position, d);
+  if (!hit.hit) return miss_weights(f, d);
+  PathDerivatives p = path_derivatives(waves, f, hit.point);
+  return path_time_weights(f, -d, p);
+}
+
+// The pilot of the adaptive design: the reflections at the path's instants (K + 1) at the
+// pixel's centre and four corners, at fixed positions (no random numbers, so the choice
+// it makes does not depend on the estimate's samples, which stays unbiased). The pixel is
+// busy when some reflection comes within margin (spread + step) of the disk's rim or of
+// the horizon, where spread is the largest distance between the corners' and the centre's
+// reflections at one instant and step the largest move of one between instants; or when
+// some pilot ray misses the water and another meets it (the horizon's line). A quiet pixel
+// is still estimated without bias, from fewer samples; its variance is measured as any.
+SG_FN bool reference_pixel_busy(IN(WaveBuffer) waves, IN(Frame) f, real margin, int i, int j) {
+  vec3 centre[kMaxSegments + 1];
+  for (int k = 0; k <= kMaxSegments; ++k)
+    centre[k] = vec3(0.0);
+  real chord = sqrt(f.light.chord2);
+  real dmin = kRealMax;
+  real ymin = kRealMax;
+  real spread = 0.0;
+  real step = 0.0;
+  int hits = 0;
+  for (int q = 0; q < 5; ++q) {
+    real px = real(i) + (q == 0 ? 0.5 : real(q % 2));
+    real py = real(j) + (q == 0 ? 0.5 : real((q - 1) / 2));
+    vec3 d = normalize(camera_direction(f.camera, px, py));
+    vec3 o = f.camera.position;
+    RayHit hit = f.displaced ? intersect_displaced(waves, f, o, d, 0.0) : intersect_flat(o, d);
+    if (!hit.hit) continue;
+    hits += 1;
+    PathGradients p = path_gradients(waves, f, hit.point);
+    vec3 previous = vec3(0.0);
+    for (int k = 0; k <= f.segments; ++k) {
+      vec3 m = normal_direction(p.g[k]);
+      vec3 r = (2.0 * dot(m, -d) / dot(m, m)) * m + d;
+      dmin = min(dmin, length(r - f.light.L));
+      ymin = min(ymin, r.y);
+      if (k > 0) step = max(step, length(r - previous));
+      previous = r;
+      if (q == 0) {
+        centre[k] = r;
+      } else {
+        spread = max(spread, length(r - centre[k]));
+      }
+    }
+  }
+  if (hits == 0) return false;
+  if (hits < 5) return true;
+  real reach = margin * (spread + step);
+  return dmin < chord + reach || ymin < reach;
+}
+
+SG_FN ReferenceResult reference_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferenceParams) n,
+                                      int i, int j) {
+  Pcg32 rng = pixel_rng(f.seed, f.frame, i, j);
+  ReferenceResult r;
+  r.weights = vec4(0.0);
+  for (int b = 0; b < kMaxBatches; ++b)
+    r.batch[b] = vec4(0.0);
+  r.busy = !n.adaptive || reference_pixel_busy(waves, f, n.margin, i, j);
+  int sx = r.busy ? n.sx : n.quiet_sx;
+  int sy = r.busy ? n.sy : n.quiet_sy;
+  real per_batch = real(sx) * real(sy) * real(n.nt);
+  for (int b = 0; b < n.batches; ++b) {
+    vec4 sum = vec4(0.0);
+    for (int cy = 0; cy < sy; ++cy) {
+      for (int cx = 0; cx < sx; ++cx) {
+        for (int q = 0; q < n.nt; ++q) {
+          real px = real(i) + (real(cx) + pcg32_uniform(rng)) / real(sx);
+          real py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(sy);
+          if (f.displaced) {
+            real dt = (real(q) + pcg32_uniform(rng)) / real(n.nt) * f.duration - f.duration;
+            sum += sample_weights(waves, f, px, py, dt);
+          } else {
+            sum += exact_time_sample(waves, f, px, py);
+          }
+        }
+      }
+    }
+    r.batch[b] = sum / per_batch;
+    r.weights += r.batch[b];
+  }
+  r.weights = r.weights / real(n.batches);
+  return r;
+}

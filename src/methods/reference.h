@@ -1,0 +1,117 @@
+// `--method reference`: the ground truth of every comparison, the scene spec's pixel value
+// (the mean over the pixel square and the shutter interval) estimated by the kernel's
+// reference estimator (kernel/reference.glsl): on flat water every spatial sample's time
+// integral is computed exactly (the crossings of its gradient path with the light's conic
+// and the horizon), so only spatial noise remains; on displaced water every sample has its
+// own position and time stratum. The estimate comes in B independent batches, whose
+// spread gives each pixel's variance: the method measures its own noise
+// (pixel_variance(), image_standard_error()).
+//
+// `--samples SxSxT` (default 8x8x1): per batch S x S strata of the pixel, T samples in each;
+// `--batches B` (default 2). Flat water costs one path of K + 1 instants per sample, K
+// chosen per frame so that the path's interpolation error is at most 1e-4 of the light's
+// radius (reference_segments). The stratified estimator of before remains as
+// `supersample` (methods/stratified.h).
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "methods/kernel_inputs.h"
+#include "methods/method.h"
+
+namespace sg {
+
+// The reference's defaults (docs/reference-renderer.md: the measured noise and cost).
+inline constexpr SampleCounts kReferenceSamples{8, 8, 1};
+inline constexpr int kReferenceBatches = 2;
+
+// The pilot's margin (kernel/reference.glsl, reference_pixel_busy), in units of the
+// reflection's spread over the pixel and step between instants.
+inline constexpr double kReferencePilotMargin = 2.0;
+
+struct ReferenceSettings {
+  SampleCounts samples = kReferenceSamples;  // busy pixels (all without `adaptive`)
+  int batches = kReferenceBatches;
+  bool adaptive = true;
+  int quiet = 1;  // quiet pixels: quiet x quiet strata of T samples per batch
+  double margin = kReferencePilotMargin;
+};
+
+// The settings `--method reference` gets from its flags (--samples when given, --batches,
+// --adaptive, --quiet-samples), for either engine.
+ReferenceSettings reference_settings(const MethodOptions& o);
+
+// The sub-intervals K of flat water's paths for a scene and shutter: the smallest K
+// (1 to kMaxSegments) with the cubic Hermite interpolation's error bound
+// (duration / K)^4 / 384 * sum A |k| c^4 at most kReferencePathTolerance light radii.
+inline constexpr double kReferencePathTolerance = 5e-5;
+int reference_segments(const SceneModel& m, double duration);
+// That bound for K sub-intervals, in gradient units.
+double reference_path_error_bound(const SceneModel& m, double duration, int segments);
+
+// A pixel's estimate: the mean weights and each batch's.
+struct ReferencePixel {
+  RadianceWeights weights{0.0};
+  std::vector<RadianceWeights> batches;
+  bool busy = true;  // the pilot's verdict
+  // The variance of the mean of channel c's value (the radiances applied): the spread of
+  // the batches, sum (v_b - v)^2 / (B (B - 1)).
+  double variance(const Radiances& r, int c) const;
+};
+
+class ReferenceMethod final : public Method {
+ public:
+  // `intersect_tolerance`: the displaced intersection's bound in pixels (docs/ocean.md),
+  // applied per sample cell (divided by the larger of S_x, S_y).
+  explicit ReferenceMethod(ReferenceSettings settings, Precision precision = Precision::float64,
+                           double intersect_tolerance = kDefaultIntersectTolerance);
+  std::string name() const override { return "reference"; }
+  void begin_frame(const FrameContext& ctx) override;
+  RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
+  void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
+                  Image& out) const override;
+  // The variance of each pixel's estimate in the last frame rendered, per channel (as the
+  // image's).
+  const Image* pixel_variance() const override { return &variance_; }
+
+  // Pixel (i, j) of ctx's frame.
+  ReferencePixel pixel(const FrameContext& ctx, int i, int j) const;
+  const ReferenceSettings& settings() const { return settings_; }
+  // K of the current frame's inputs.
+  int segments() const { return segments_; }
+
+ private:
+  const KernelFrameInputs& inputs(const FrameContext& ctx) const;
+  void resize_variance(const FrameContext& ctx) const;
+
+  ReferenceSettings settings_;
+  Precision precision_;
+  double intersect_tolerance_;
+  int segments_ = 0;
+  uint64_t model_ = 0;
+  double duration_ = -1;
+  std::unique_ptr<KernelFrameInputs> inputs_;
+  mutable std::mutex lazy_;
+  mutable Image variance_;
+};
+
+// The standard error of an image, sqrt(mean of the values' variances) over all channels of
+// the pixels whose mask entry (one per pixel) is nonzero (all without a mask): the expected
+// RMSE of the estimate against the exact image.
+double image_standard_error(const Image& variance,
+                            const std::vector<unsigned char>* mask = nullptr);
+// The same over a sequence of frames (the RMSE's set: all frames' values).
+double sequence_standard_error(const std::vector<Image>& variance,
+                               const std::vector<unsigned char>* mask = nullptr);
+// A method's RMSE against the reference with the reference's own noise taken out:
+// E[RMSE^2] = error^2 + se^2 for a reference whose noise is independent of the method's
+// error, so sqrt(max(0, RMSE^2 - se^2)).
+inline double noise_corrected_rmse(double rmse, double se) {
+  const double d = rmse * rmse - se * se;
+  return d > 0 ? std::sqrt(d) : 0.0;
+}
+
+}  // namespace sg
