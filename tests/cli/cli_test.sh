@@ -284,7 +284,7 @@ if "$bin" render "$scene" -m point --engine gl --width 8 -q -o "$work/glprobe.pf
   expect_ok "render gl" "$bin" render "$colour" -m staa-temporal --engine gl --width 48 -q -o "$work/gl.pfm"
   expect_ok "render cpu float" "$bin" render "$colour" -m staa-temporal --precision float --width 48 -q -o "$work/cf.pfm"
   out=$("$bin" diff "$work/gl.pfm" "$work/cf.pfm" --json 2>&1)
-  if python3 -c 'import json,sys; sys.exit(0 if json.loads(sys.argv[1])["rmse"] < 1e-5 else 1)' "$out"; then
+  if python3 -c 'import json,sys; sys.exit(0 if json.loads(sys.argv[1])["rmse"] < 1e-4 else 1)' "$out"; then
     passes=$((passes + 1))
   else
     echo "FAIL gl vs cpu float: $out"
