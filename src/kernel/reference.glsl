@@ -483,9 +483,12 @@ SG_FN vec4 exact_time_sample(IN(WaveBuffer) waves, IN(Frame) f, real px, real py
 // busy when some reflection comes within margin (spread + step) of the disk's rim or of
 // the horizon, where spread is the largest distance between the corners' and the centre's
 // reflections at one instant and step the largest move of one between instants; or when
-// some pilot ray misses the water and another meets it (the horizon's line). A quiet pixel
+// some pilot ray misses the water and another meets it (the horizon's line); or when the
+// visible light's disk covers part of the pixel (kernel/disk_coverage.glsl). A quiet pixel
 // is still estimated without bias, from fewer samples; its variance is measured as any.
 SG_FN bool reference_pixel_busy(IN(WaveBuffer) waves, IN(Frame) f, real margin, int i, int j) {
+  // The visible disk over the pixel's square (the sky's part of the pixel sees it).
+  if (f.light.visible && light_pixel_coverage(f.camera, f.light, i, j) > 0.0) return true;
   vec3 centre[kMaxSegments + 1];
   for (int k = 0; k <= kMaxSegments; ++k)
     centre[k] = vec3(0.0);
