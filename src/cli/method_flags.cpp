@@ -147,6 +147,14 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
   choice(app, "--wave-remainder", s.wave_remainder, {{"sum", true}, {"each", false}},
          "staa: the waves that certainly alias fully in a pixel add their covariance from "
          "precomputed sums in O(1) (sum) or one by one (each)");
+  choice(app, "--smooth-terms", s.smooth_over_normals, {{"ndf", true}, {"mean", false}},
+         "staa: Fresnel times the sky, and the sea, integrated over the pixel's normals (ndf: "
+         "the NDF, the footprint, the path) or taken at the centre normal (mean, the paper)");
+  app.add_option("--smooth-cells", s.smooth_cells,
+                 "staa, --smooth-terms ndf: the pixel cut into N x N cells, each with its own "
+                 "Gaussian of normals")
+      ->capture_default_str()
+      ->check(integer_in(1, 3));
 
   // lean (methods/lean.h)
   app.add_option("--lean-size", o.lean.size,

@@ -9,6 +9,7 @@
 #include "gl/dispatch.h"
 #include "gl_engine/uniforms.h"
 #include "methods/reference.h"
+#include "methods/staa.h"
 #include "methods/supersample.h"
 #include "shading/kernel_frame.h"
 #include "shading/kernel_table.h"
@@ -57,21 +58,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     }
     v.entry = KernelEntry::staa;
     v.segments = o.staa.segments;
-    const StaaOptions& s = o.staa;
-    const AliasRange range = alias_range(s);
-    v.params.per_pixel_ndf = s.ndf == NdfMode::per_pixel;
-    v.params.ndf_mean_shift = s.ndf_mean_shift;
-    v.params.kernels = s.kernels;
-    v.params.elongation_threshold = static_cast<float>(s.elongation_threshold);
-    v.params.fallback_riemann = s.fallback == FallbackMode::riemann;
-    v.params.fallback_along_path = s.fallback_along_path;
-    v.params.riemann_cells = s.riemann_cells;
-    v.params.alias_start = static_cast<float>(range.start);
-    v.params.alias_end = static_cast<float>(range.end);
-    v.params.nyquist_max = s.nyquist_max_axis;
-    v.params.footprint = s.footprint == FootprintMode::none ? 0 : 1;
-    v.params.curvature_limit = static_cast<float>(s.curvature_limit);
-    v.params.wave_remainder = s.wave_remainder;
+    v.params = staa_kernel_params<kf::StaaParams>(o.staa);
   } else {
     throw Error("--method " + method + ": not on the GL engine (it runs " + gl_methods() +
                 "; use --engine cpu)");

@@ -79,6 +79,7 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::StaaParams& 
   u.set(n + ".footprint", p.footprint);
   u.set(n + ".curvature_limit", p.curvature_limit);
   u.set(n + ".wave_remainder", p.wave_remainder);
+  u.set(n + ".smooth_cells", p.smooth_cells);
 }
 
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::SampleCounts& c) {

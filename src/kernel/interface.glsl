@@ -106,6 +106,7 @@ struct StaaParams {
   int footprint;         // 0 none, 1 gaussian, 2 exact (CPU only: host finishes)
   real curvature_limit;  // 0: off
   bool wave_remainder;   // the fully aliasing waves' sum in O(1) (else one by one; staa.glsl)
+  int smooth_cells;      // Fresnel, sky and sea over the normals of n x n cells (0: at the mean)
 };
 
 // `reference` and `supersample`: samples per pixel (sampling.glsl).
@@ -145,6 +146,14 @@ struct StaaPath {
 };
 
 // The result of a pixel, with what tests and diagnostics look at.
+// `staa`'s smooth terms over the pixel's normals (smooth_terms.glsl): the expectations of
+// F 1{above}, F z 1{above} and 1{above}, with z the sky's zenith weight at r.y.
+struct SmoothTerms {
+  real f_above;
+  real f_zenith;
+  real above;
+};
+
 struct StaaResult {
   vec4 weights;
   bool hit;
@@ -159,4 +168,6 @@ struct StaaResult {
   real fresnel;
   real sky_y;  // the height of the centre reflection (the sky's zenith-horizon split)
   mat2 exact_D;
+  bool terms_valid;  // the smooth terms integrated over the normals (smooth_cells > 0)
+  SmoothTerms terms;
 };

@@ -22,6 +22,8 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
 // For the tests: the replacements of functions GLSL lacks, and the sums over the waves
 // (vectorised when the buffer carries arrays, else the kernel's loops).
 real float_erfc(real x);
+real float_normal_quantile(real p);
+SmoothTerms float_smooth_terms(const Frame& f, vec2 mu, mat2 cov, vec3 v);
 real float_light_pixel_coverage(const Camera& c, const Light& l, int i, int j);
 real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
 vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);

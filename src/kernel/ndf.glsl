@@ -66,6 +66,81 @@ SG_FN void ndf_add_per_pixel(INOUT(NdfMoments) m, real A, vec2 k, real cos_theta
   m.cov += v * vec3(k.x * k.x, k.x * k.y, k.y * k.y);
 }
 
+// A wave's moments over cells of the footprint parallelogram, exactly (for the smooth
+// terms, smooth_terms.glsl). The pixel square is cut into n x n cells (n <= 3); the
+// footprint maps cell (iu, iv) to X + J (c_u, c_v) + J [-1/(2n), 1/(2n)]^2 with centres
+// c = (2 i - (n - 1)) / (2n). With the half-phases h = (k . J_0, k . J_1) / 2 of the whole
+// pixel along its two edges, x = h / n is a cell's, and the wave's phase at a cell's
+// centre is theta + (2 iu - (n - 1)) x_0 + (2 iv - (n - 1)) x_1. The box mean over a cell of
+// cos(phase + k . (u J_0 + v J_1)) is cos(phase) sinc(x_0) sinc(x_1), and of cos^2 it is
+// (1 + cos(2 phase) sinc(2 x_0) sinc(2 x_1)) / 2, sinc(2x) = sinc(x) cos(x); so per cell
+//     K = A cos(phase) sinc(x_0) sinc(x_1),  J = A^2 / 2 (1 + cos(2 phase) sinc(2 x_0) sinc(2
+//     x_1)),
+// mean -K k and covariance (J - K^2) k k^T, Appendix A's moments over the cell's box rather
+// than along one line (Appendix A's line through the centre along k sees a phase
+// half-width D = |k|^2 / (2 |J^-1 k|_max), which for an elongated footprint, at grazing
+// view, and a wave oblique to it is far below the phase range the footprint spans). The
+// cells' Gaussians together follow a wave that spans a fraction of a cycle in the pixel,
+// whose slopes are far from Gaussian. The cells' phase offsets come from cos and sin of
+// x by rotations, with no further trigonometry.
+const int kMaxBoxSide = 3;
+const int kMaxBoxCells = 9;
+
+struct BoxCells {
+  NdfMoments m[kMaxBoxCells];
+};
+
+SG_FN BoxCells box_cells_zero() {
+  BoxCells b;
+  for (int c = 0; c < kMaxBoxCells; ++c)
+    b.m[c] = ndf_zero();
+  return b;
+}
+
+// cos and sin of the first offset -(n - 1) x and of the step 2 x, from cos x and sin x.
+SG_FN vec4 box_offset_rotations(int n, real cx, real sx) {
+  real c2 = 2.0 * cx * cx - 1.0;
+  real s2 = 2.0 * sx * cx;
+  vec2 first = n == 1 ? vec2(1.0, 0.0) : (n == 2 ? vec2(cx, -sx) : vec2(c2, -s2));
+  return vec4(first, c2, s2);
+}
+
+SG_FN real box_sinc(real x, real sx) {
+  return abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : sx / x;
+}
+
+SG_FN void box_cells_add(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, real cos_t, vec2 h) {
+  vec2 x = h / real(n);
+  real cx0 = cos(x.x);
+  real sx0 = sin(x.x);
+  real cx1 = cos(x.y);
+  real sx1 = sin(x.y);
+  real f0 = box_sinc(x.x, sx0);
+  real f1 = box_sinc(x.y, sx1);
+  real g = f0 * cx0 * f1 * cx1;  // sinc(2 x_0) sinc(2 x_1)
+  real Af = A * f0 * f1;
+  real J0 = 0.5 * A * A;
+  vec3 kk = vec3(k.x * k.x, k.x * k.y, k.y * k.y);
+  vec4 r0 = box_offset_rotations(n, cx0, sx0);
+  vec4 r1 = box_offset_rotations(n, cx1, sx1);
+  vec2 a = vec2(r0.x, r0.y);  // cos, sin of the u offset
+  for (int iu = 0; iu < n; ++iu) {
+    vec2 bv = vec2(r1.x, r1.y);
+    for (int iv = 0; iv < n; ++iv) {
+      real cab = a.x * bv.x - a.y * bv.y;
+      real sab = a.y * bv.x + a.x * bv.y;
+      real cp = cos_t * cab - sin_t * sab;  // cos of the phase at the cell's centre
+      real K = Af * cp;
+      real J = J0 * (1.0 + (2.0 * cp * cp - 1.0) * g);
+      int c = iu * n + iv;
+      b.m[c].mean -= K * k;
+      b.m[c].cov += (J - K * K) * kk;
+      bv = vec2(bv.x * r1.z - bv.y * r1.w, bv.y * r1.z + bv.x * r1.w);
+    }
+    a = vec2(a.x * r0.z - a.y * r0.w, a.y * r0.z + a.x * r0.w);
+  }
+}
+
 SG_FN mat2 sym2(vec3 c) {
   return mat2(vec2(c.x, c.y), vec2(c.y, c.z));
 }

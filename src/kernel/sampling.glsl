@@ -64,10 +64,14 @@ SG_FN vec4 stratified_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts) 
 // centre, its reflection path over the shutter (every wave resolved), and the fraction of
 // the time in the light disk, exact on the sphere for each of the K sub-arcs.
 SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) {
-  real px = real(i) + 0.5;
-  real py = real(j) + 0.5;
-  Footprint fp = pixel_footprint(waves, f, px, py, 0.0, f.displaced);
+  // A pixel that the horizon crosses: the water's part at its centroid, the sky over the
+  // rest (horizon_coverage.glsl).
+  PixelWater pw = pixel_water(f.camera, i, j);
+  if (pw.share <= 0.0) return miss_pixel_weights(f, i, j);
+  Footprint fp = pixel_footprint(waves, f, pw.centre.x, pw.centre.y, 0.0, f.displaced);
   if (!fp.hit) return miss_pixel_weights(f, i, j);
   PathGradients g = path_gradients(waves, f, fp.point);
-  return temporal_shares(f, g, fp.view).weights;
+  vec4 water = temporal_shares(f, g, fp.view).weights;
+  if (pw.share >= 1.0) return water;
+  return pw.share * water + sky_part_weights(f, i, j, 1.0 - pw.share);
 }

@@ -83,3 +83,47 @@ SG_FN real wrap_angle(real x) {
   real k = floor(x * kInvTwoPi + 0.5);
   return (x - k * 6.28125) - k * 0.0019353071795864769252867665590;
 }
+
+// The standard normal quantile Phi^-1(p), 0 < p < 1: P. J. Acklam's rational
+// approximations (2003, "An algorithm for computing the inverse normal cumulative
+// distribution function"), one for the centre |p - 1/2| <= 0.47575 and one in
+// q = sqrt(-2 log p) for each tail; relative error below 1.15e-9 (measured against
+// normal_cdf in kernel/special_test.cpp). The lower tail takes log(p) directly, so small p
+// keep their digits.
+SG_FN real normal_quantile(real p) {
+  real pc = clamp(p, 1e-37, 1.0);  // 1e-37: u = -12.9, a normal float
+  if (pc < 0.02425 || pc > 0.97575) {
+    real q = sqrt(-2.0 * log(pc < 0.5 ? pc : 1.0 - pc));
+    real num =
+        ((((-7.784894002430293e-03 * q - 3.223964580411365e-01) * q - 2.400758277161838e+00) * q -
+          2.549732539343734e+00) *
+             q +
+         4.374664141464968e+00) *
+            q +
+        2.938163982698783e+00;
+    real den =
+        (((7.784695709041462e-03 * q + 3.224671290700398e-01) * q + 2.445134137142996e+00) * q +
+         3.754408661907416e+00) *
+            q +
+        1.0;
+    return pc < 0.5 ? num / den : -num / den;
+  }
+  real q = pc - 0.5;
+  real r = q * q;
+  real num =
+      (((((-3.969683028665376e+01 * r + 2.209460984245205e+02) * r - 2.759285104469687e+02) * r +
+         1.383577518672690e+02) *
+            r -
+        3.066479806614716e+01) *
+           r +
+       2.506628277459239e+00) *
+      q;
+  real den =
+      ((((-5.447609879822406e+01 * r + 1.615858368580409e+02) * r - 1.556989798598866e+02) * r +
+        6.680131188771972e+01) *
+           r -
+       1.328068155288572e+01) *
+          r +
+      1.0;
+  return num / den;
+}

@@ -21,10 +21,14 @@
 //     with the path tables (Eqs. 18-19, path_table.glsl); past the elongation threshold
 //     the fallback, the RDF's mass in the disk by quadrature or the paper's Riemann sum
 //     (gaussian.glsl), at the display time or averaged along the path. J and Sigma are
-//     those of the display time. The share below the horizon is the Gaussian's mass
-//     beyond the horizon's line on the light plane.
-//  5. The weights from those fractions (radiance.glsl, combine_weights) with the Fresnel
-//     factor of the centre normal.
+//     those of the display time.
+//  5. The weights. The light's share takes the Fresnel factor of the centre normal. The
+//     smooth terms, Fresnel times the sky and the sea, and the share below the horizon
+//     are integrated over the normals' Gaussian in the NDF plane (smooth_terms.glsl):
+//     the NDF, the footprint's spread of the resolved normals and their path over the
+//     shutter (`--smooth-terms ndf`, the default). With `--smooth-terms mean` they are
+//     taken at the centre normal and the horizon's share is the RDF's mass beyond the
+//     horizon's line on the light plane (radiance.glsl, combine_weights).
 // As the aliasing shares fall to 0 so does the NDF's covariance, and the path integral
 // tends to the fraction of the path inside the disk: the transition to step 3 is
 // continuous (Fig. 11).
@@ -35,6 +39,11 @@ struct StaaSums {
   vec3 hess;           // the resolved waves' Hessian at the display time (xx, xz, zz)
   NdfMoments ndf;      // the aliasing waves' NDF
   bool any_alias;      // some wave with A > 0 has alpha > 0
+  // The smooth terms (--smooth-cells n > 0): every wave's moments at its full amplitude
+  // (not split by Eq. 20) over n x n cells of the pixel (ndf.glsl, box_cells_add), and the
+  // remainder's covariance, which every cell shares.
+  BoxCells cells;
+  vec3 remainder;
 };
 
 // Reflections further than this from the light (r . L / |r| below it) are not projected
@@ -48,6 +57,8 @@ SG_FN StaaSums staa_sums_zero(int K) {
   s.hess = vec3(0.0);
   s.ndf = ndf_zero();
   s.any_alias = false;
+  s.cells = box_cells_zero();
+  s.remainder = vec3(0.0);
   return s;
 }
 
@@ -109,7 +120,17 @@ SG_FN int staa_remainder_start(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams)
 SG_FN void staa_add_remainder(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f, int c) {
   vec4 m = wave_suffix_moments(waves, f, c);
   sums.ndf.cov += vec3(m.x, m.y, m.z);
+  sums.remainder = vec3(m.x, m.y, m.z);
   sums.any_alias = sums.any_alias || m.w > 0.0;
+}
+
+// The smooth terms' cells per side for this frame: none with --smooth-terms mean, and
+// none where F = 1 and the sky is constant (the water is then the sky or the sea, and
+// only the horizon's share is at stake: the RDF's mass beyond the horizon's line on the
+// light plane serves, at no cost); else the option's.
+SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
+  if (p.smooth_cells <= 0 || (f.fresnel == 0 && !f.sky_gradient)) return 0;
+  return p.smooth_cells;
 }
 
 // The one pass over the waves (step 2): the definition; the CPU engine's vectorised
@@ -123,6 +144,7 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
   bool curvature = p.footprint != 0 && p.curvature_limit > 0.0;
   real limit = p.curvature_limit * f.light.radius;
   int c = staa_remainder_start(waves, f, p, J);
+  int side = staa_smooth_side(f, p);
   for (int i = 0; i < c; ++i) {
     Wave w = wave_at(waves, f, i);
     vec2 k = vec2(w.a, w.b);
@@ -152,6 +174,9 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
         ndf_add_uniform(sums.ndf, aliasing, k);
       }
     }
+    if (side > 0) {
+      box_cells_add(sums.cells, side, w.A, k, s, c, 0.5 * vec2(dot(k, J[0]), dot(k, J[1])));
+    }
   }
   staa_add_remainder(sums, waves, f, c);
   return sums;
@@ -179,7 +204,77 @@ SG_FN StaaResult staa_result_miss() {
   r.fresnel = 1.0;
   r.sky_y = 1.0;
   r.exact_D = mat2(0.0);
+  r.terms_valid = false;
+  r.terms.f_above = 0.0;
+  r.terms.f_zenith = 0.0;
+  r.terms.above = 0.0;
   return r;
+}
+
+// The weights of a finished pixel: the light's share at the Fresnel factor of the centre
+// normal, and the sky and sea from the smooth terms over the normals when they were taken
+// (smooth_terms.glsl), else at the centre normal (combine_weights).
+SG_FN vec4 staa_weights(IN(Frame) f, IN(StaaResult) r) {
+  if (r.terms_valid) return smooth_weights(f, r.terms, r.fresnel, r.in_light);
+  return combine_weights(f, r.fresnel, r.in_light, r.below, r.sky_y);
+}
+
+// The smooth terms over the pixel and the shutter (smooth_terms.glsl): the mean over the
+// pixel's n x n cells of each cell's Gaussian of normals. A cell's Gaussian has every
+// wave's moments over the cell at the display time (ndf.glsl, box_cells_add: all the waves
+// at their full amplitude, so that a wave of the transition band is neither linearised
+// across the pixel nor split), plus the remainder's covariance, moved along the resolved
+// waves' path over the shutter: the time-mean of the path's offset from the display
+// time, and its spread, uniform in time along each sub-segment (the segments' midpoints'
+// spread plus d d^T / 12 within each).
+SG_FN SmoothTerms staa_smooth_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) sums, vec3 view) {
+  int K = f.segments;
+  real inv_k = 1.0 / real(K);
+  vec2 g_mean = vec2(0.0);
+  for (int k = 0; k < K; ++k)
+    g_mean += 0.5 * (sums.path.g[k] + sums.path.g[k + 1]) * inv_k;
+  mat2 shared_cov = sym2(sums.remainder);
+  for (int k = 0; k < K; ++k) {
+    vec2 mid = 0.5 * (sums.path.g[k] + sums.path.g[k + 1]) - g_mean;
+    vec2 d = sums.path.g[k + 1] - sums.path.g[k];
+    shared_cov += (outerProduct(mid, mid) + outerProduct(d, d) / 12.0) * inv_k;
+  }
+  // NDF-plane coordinates are minus the slope: the shutter's mean offset is -(g_mean - g_K).
+  vec2 shift = sums.path.g[K] - g_mean;
+  int n = staa_smooth_side(f, p);
+  real inv_cells = 1.0 / real(n * n);
+  // The cells' mixture as one Gaussian (its mean and covariance): where the cells' means
+  // spread by less than a tenth of their own covariance (by trace), or the whole spread is
+  // below 0.02 in slope, F and the sky are near enough to quadratic over it that the
+  // mixture and its moment-matched Gaussian give the same terms; one evaluation then.
+  vec2 m_bar = vec2(0.0);
+  mat2 w_bar = mat2(0.0);
+  for (int c = 0; c < n * n; ++c) {
+    m_bar += sums.cells.m[c].mean * inv_cells;
+    w_bar += sym2(sums.cells.m[c].cov) * inv_cells;
+  }
+  mat2 b_bar = mat2(0.0);
+  for (int c = 0; c < n * n; ++c) {
+    vec2 dm = sums.cells.m[c].mean - m_bar;
+    b_bar += outerProduct(dm, dm) * inv_cells;
+  }
+  real tw = w_bar[0][0] + w_bar[1][1] + shared_cov[0][0] + shared_cov[1][1];
+  real tb = b_bar[0][0] + b_bar[1][1];
+  if (n == 1 || tb <= 0.1 * tw || tb + tw < 0.02 * 0.02) {
+    return smooth_terms(f, m_bar + shift, w_bar + b_bar + shared_cov, view);
+  }
+  SmoothTerms res;
+  res.f_above = 0.0;
+  res.f_zenith = 0.0;
+  res.above = 0.0;
+  for (int c = 0; c < n * n; ++c) {
+    SmoothTerms t =
+        smooth_terms(f, sums.cells.m[c].mean + shift, sym2(sums.cells.m[c].cov) + shared_cov, view);
+    res.f_above += t.f_above * inv_cells;
+    res.f_zenith += t.f_zenith * inv_cells;
+    res.above += t.above * inv_cells;
+  }
+  return res;
 }
 
 // The least |p . axis| over the path's centres p(t): its valid sub-segments (p moves
@@ -233,10 +328,15 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
   vec3 n_now = normalize(vec3(nc_now.x, 1.0, nc_now.y));
   res.fresnel = fresnel_factor(f.fresnel, dot(n_now, view));
   res.sky_y = reflect_view(n_now, view).y;
+  if (staa_smooth_side(f, p) > 0 && view.y > 0.0) {
+    res.terms = staa_smooth_terms(f, p, sums, view);
+    res.terms_valid = true;
+    res.below = 1.0 - res.terms.above;
+  }
   if (!path.valid[K]) {
     // The reflection points away from the light: nothing of the RDF reaches it.
-    res.below = reflect_about_ndf_point(nc_now, view).y <= 0.0 ? 1.0 : 0.0;
-    res.weights = combine_weights(f, res.fresnel, res.in_light, res.below, res.sky_y);
+    if (!res.terms_valid) res.below = reflect_about_ndf_point(nc_now, view).y <= 0.0 ? 1.0 : 0.0;
+    res.weights = staa_weights(f, res);
     return res;
   }
   mat2 Jc = ndf_to_light_plane_jacobian(nc_now, view, f.light);
@@ -258,15 +358,18 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     }
   }
 
-  // The share below the horizon, averaged over the path's valid instants.
-  real below = 0.0;
-  int counted = 0;
-  for (int k = 0; k <= K; ++k) {
-    if (!path.valid[k]) continue;
-    below += horizon_share(f.light, path.centre[k], cov_r);
-    counted += 1;
+  // The share below the horizon, averaged over the path's valid instants (the smooth
+  // terms measured it in the normals' own plane).
+  if (!res.terms_valid) {
+    real below = 0.0;
+    int counted = 0;
+    for (int k = 0; k <= K; ++k) {
+      if (!path.valid[k]) continue;
+      below += horizon_share(f.light, path.centre[k], cov_r);
+      counted += 1;
+    }
+    res.below = below / real(counted);
   }
-  res.below = below / real(counted);
 
   PrincipalAxes ax = principal_axes(cov_r);
   // Exact cull: when every point of the centres' path is further from the disk than its
@@ -285,7 +388,7 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
   nearest = min(nearest, length(path.centre[K]));
   if (nearest > R + 12.0 * ax.s1) {
     res.in_light = 0.0;
-    res.weights = combine_weights(f, res.fresnel, res.in_light, res.below, res.sky_y);
+    res.weights = staa_weights(f, res);
     return res;
   }
   // The same in the RDF's principal frame: when the disk's extent along the minor (major)
@@ -367,7 +470,7 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     }
   }
   res.in_light = clamp(in_light, 0.0, 1.0 - res.below);
-  res.weights = combine_weights(f, res.fresnel, res.in_light, res.below, res.sky_y);
+  res.weights = staa_weights(f, res);
   return res;
 }
 
@@ -376,10 +479,12 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
                             IN(R32Texture3D) table_s, IN(PathTableInfo) tinfo,
                             IN(R32Texture2D) fits, IN(KernelFitInfo) finfo, IN(Frame) f,
                             IN(StaaParams) p, int i, int j, OUT(StaaPath) path) {
-  real px = real(i) + 0.5;
-  real py = real(j) + 0.5;
-  Footprint fp = pixel_footprint(waves, f, px, py, 0.0, f.displaced);
-  if (!fp.hit) {
+  // A pixel that the horizon crosses: the water's part at its centroid (with the Gaussian
+  // footprint term where `exact` would hand it to the host), the sky over the rest
+  // (horizon_coverage.glsl).
+  PixelWater pw = pixel_water(f.camera, i, j);
+  Footprint fp = pixel_footprint(waves, f, pw.centre.x, pw.centre.y, 0.0, f.displaced);
+  if (!(pw.share > 0.0) || !fp.hit) {
     StaaResult r = staa_result_miss();
     r.weights = miss_pixel_weights(f, i, j);
     for (int k = 0; k <= f.segments; ++k) {
@@ -388,6 +493,10 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
     }
     return r;
   }
-  StaaSums sums = staa_wave_pass(waves, f, p, fp);
-  return staa_finish(table_f, table_s, tinfo, fits, finfo, f, p, fp, sums, path);
+  StaaParams q = p;
+  if (pw.share < 1.0 && q.footprint == 2) q.footprint = 1;
+  StaaSums sums = staa_wave_pass(waves, f, q, fp);
+  StaaResult r = staa_finish(table_f, table_s, tinfo, fits, finfo, f, q, fp, sums, path);
+  if (pw.share < 1.0) r.weights = pw.share * r.weights + sky_part_weights(f, i, j, 1.0 - pw.share);
+  return r;
 }

@@ -86,9 +86,11 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
         EXPECT_NEAR(pd.g[k].x, p.g[k].x, tol * gscale) << k;  // the same instants as the path's
       }
     }
-    // The staa pass at pixel footprints, with each NDF and with the curvature limit.
+    // The staa pass at pixel footprints, with each NDF and with the curvature limit, and
+    // the smooth terms' cells (1 to 3 per side).
     for (int variant = 0; variant < 3; ++variant) {
       kd::StaaParams p{};
+      p.smooth_cells = variant + 1;
       p.per_pixel_ndf = variant != 1;
       p.alias_start = 0.3;
       p.alias_end = 0.8;
@@ -115,6 +117,12 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
           }
           EXPECT_NEAR(a.ndf.mean.x, b.ndf.mean.x, tol * gscale);
           EXPECT_NEAR(a.ndf.mean.y, b.ndf.mean.y, tol * gscale);
+          for (int q = 0; q < p.smooth_cells * p.smooth_cells; ++q) {
+            EXPECT_NEAR(a.cells.m[q].mean.x, b.cells.m[q].mean.x, tol * gscale) << q;
+            EXPECT_NEAR(a.cells.m[q].mean.y, b.cells.m[q].mean.y, tol * gscale) << q;
+            for (int c = 0; c < 3; ++c)
+              EXPECT_NEAR(a.cells.m[q].cov[c], b.cells.m[q].cov[c], tol * gscale * gscale) << q;
+          }
         }
       }
       if (n >= 16) {
@@ -182,6 +190,7 @@ TEST(KernelWaveSums, StaaPixelsWithAndWithoutVectorisedSumsAgree) {
     p.alias_end = footprint ? 0.8 : 0.5;
     p.nyquist_max = true;
     p.footprint = footprint;
+    p.smooth_cells = 3;
     double worst = 0;
     int lit = 0;
     for (int j = 0; j < s.height; ++j) {

@@ -63,6 +63,13 @@ struct StaaOptions {
   // --wave-remainder sum|each: the waves that certainly alias fully in a pixel add their
   // covariance from precomputed sums in O(1) (sum), or are visited one by one (each).
   bool wave_remainder = true;
+  // --smooth-terms ndf|mean: Fresnel times the sky, and the sea, integrated over the
+  // pixel's normals (the NDF, the footprint and the path; kernel/smooth_terms.glsl) or
+  // taken at the centre normal (the paper).
+  bool smooth_over_normals = true;
+  // --smooth-cells N: the pixel cut into N x N cells (1 to 3), each with its own Gaussian of
+  // normals, for the smooth terms (kernel/ndf.glsl, box_cells_add).
+  int smooth_cells = 3;
 };
 
 // The transition region of Eq. 20 that a `staa` variant uses. Defaults by measurement

@@ -9,10 +9,9 @@
 #include "shading/swept_footprint.h"
 
 namespace sg {
-namespace {
 
 template <class P>
-P make_params(const StaaOptions& o) {
+P staa_kernel_params(const StaaOptions& o) {
   using R = decltype(P{}.alias_start);
   const AliasRange range = alias_range(o);
   P p{};
@@ -31,8 +30,13 @@ P make_params(const StaaOptions& o) {
                                                          : 2;
   p.curvature_limit = R(o.curvature_limit);
   p.wave_remainder = o.wave_remainder;
+  p.smooth_cells = o.smooth_over_normals ? o.smooth_cells : 0;
   return p;
 }
+template kd::StaaParams staa_kernel_params<kd::StaaParams>(const StaaOptions&);
+template kf::StaaParams staa_kernel_params<kf::StaaParams>(const StaaOptions&);
+
+namespace {
 
 template <class Result>
 StaaMethod::Shares to_shares(const Result& r) {
@@ -50,10 +54,11 @@ StaaMethod::Shares to_shares(const Result& r) {
 }
 
 // `--footprint exact` on a pixel without aliasing waves: the swept parallelogram
-// (shading/swept_footprint.h) for the light, the moment-matched parallelogram for the
-// horizon, as the Gaussian term does.
-template <class Path>
-void finish_exact(const kd::Frame& f, int K, const Path& path, const mat2& D,
+// (shading/swept_footprint.h) for the light; the horizon's share and the smooth terms as
+// the Gaussian term has them (over the normals when the kernel took them, else the
+// moment-matched parallelogram on the light plane).
+template <class Result, class Path>
+void finish_exact(const kd::Frame& f, int K, const Result& r, const Path& path,
                   StaaMethod::Shares& s) {
   std::vector<vec2> centre(K + 1);
   std::vector<char> valid(K + 1);
@@ -61,8 +66,19 @@ void finish_exact(const kd::Frame& f, int K, const Path& path, const mat2& D,
     centre[k] = vec2(path.centre[k]);
     valid[k] = path.valid[k];
   }
+  const mat2 D(r.exact_D);
   const double R = f.light.tan_radius;
   s.in_light = swept_parallelogram_share(centre, valid, D, R);
+  if (r.terms_valid) {
+    kd::SmoothTerms smooth;
+    smooth.f_above = r.terms.f_above;
+    smooth.f_zenith = r.terms.f_zenith;
+    smooth.above = r.terms.above;
+    s.below = 1.0 - smooth.above;
+    s.in_light = std::clamp(s.in_light, 0.0, 1.0 - s.below);
+    s.weights = RadianceWeights(kd::smooth_weights(f, smooth, s.fresnel, s.in_light));
+    return;
+  }
   const mat2 cov_fp = D * glm::transpose(D) / 12.0;
   double below = 0;
   int counted = 0;
@@ -73,7 +89,7 @@ void finish_exact(const kd::Frame& f, int K, const Path& path, const mat2& D,
   }
   s.below = below / counted;
   s.in_light = std::clamp(s.in_light, 0.0, 1.0 - s.below);
-  s.weights = kd::combine_weights(f, s.fresnel, s.in_light, s.below, s.sky_y);
+  s.weights = RadianceWeights(kd::combine_weights(f, s.fresnel, s.in_light, s.below, s.sky_y));
 }
 
 }  // namespace
@@ -83,8 +99,8 @@ StaaMethod::StaaMethod(const StaaOptions& o, Precision precision, double interse
       precision_(precision),
       tables_(&PathTables::shared()),
       inputs_(o.segments, precision, intersect_tolerance),
-      params_(make_params<kd::StaaParams>(o)),
-      params_float_(make_params<kf::StaaParams>(o)) {}
+      params_(staa_kernel_params<kd::StaaParams>(o)),
+      params_float_(staa_kernel_params<kf::StaaParams>(o)) {}
 
 void StaaMethod::begin_frame(const FrameContext& ctx) {
   inputs_.build(ctx);
@@ -100,8 +116,7 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j) con
                              tables_->kernel_info_float(), fits.view(), fits.info_float,
                              inputs_.f().frame, params_float_, i, j, path);
     Shares s = to_shares(r);
-    if (r.exact_pending)
-      finish_exact(widen(inputs_.f().frame), o_.segments, path, mat2(r.exact_D), s);
+    if (r.exact_pending) finish_exact(widen(inputs_.f().frame), o_.segments, r, path, s);
     return s;
   }
   kd::StaaPath path;
@@ -109,7 +124,7 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j) con
                                           tables_->s_texture(), tables_->kernel_info(), fits.view(),
                                           fits.info, inputs_.d().frame, params_, i, j, path);
   Shares s = to_shares(r);
-  if (r.exact_pending) finish_exact(inputs_.d().frame, o_.segments, path, r.exact_D, s);
+  if (r.exact_pending) finish_exact(inputs_.d().frame, o_.segments, r, path, s);
   return s;
 }
 

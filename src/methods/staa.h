@@ -25,8 +25,10 @@
 //     J and Sigma are those of the display time (the paper assumes they change little
 //     within a frame). The share of the RDF below the horizon (seeing the sea) is the
 //     Gaussian's mass beyond the horizon's line on the light plane.
-//  5. The spec's radiance weights from those fractions (combine_weights), with the
-//     Fresnel factor of the centre normal.
+//  5. The spec's radiance weights: the light's share at the Fresnel factor of the centre
+//     normal; Fresnel times the sky, the sea and the share below the horizon integrated
+//     over the normals' Gaussian (kernel/smooth_terms.glsl), or with --smooth-terms mean
+//     at the centre normal with the horizon's share on the light plane (combine_weights).
 // All of it is the shading kernel's (kernel/staa.glsl), run here per pixel on the CPU in
 // the chosen precision; `--footprint exact` (the swept parallelogram of pixels without
 // aliasing waves) is integrated on the host (shading/swept_footprint.h) and is CPU-only.
@@ -41,6 +43,13 @@
 namespace sg {
 
 class PathTables;
+
+// The kernel's StaaParams (kd:: or kf::) for the options; `footprint` 2 is `exact`, which
+// the host finishes (the GL engine refuses it).
+template <class P>
+P staa_kernel_params(const StaaOptions& o);
+extern template kd::StaaParams staa_kernel_params<kd::StaaParams>(const StaaOptions&);
+extern template kf::StaaParams staa_kernel_params<kf::StaaParams>(const StaaOptions&);
 
 class StaaMethod final : public Method {
  public:

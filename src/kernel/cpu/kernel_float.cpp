@@ -35,6 +35,12 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
 real float_erfc(real x) {
   return erfc(x);
 }
+real float_normal_quantile(real p) {
+  return normal_quantile(p);
+}
+SmoothTerms float_smooth_terms(const Frame& f, vec2 mu, mat2 cov, vec3 v) {
+  return smooth_terms(f, mu, cov, v);
+}
 real float_light_pixel_coverage(const Camera& c, const Light& l, int i, int j) {
   return light_pixel_coverage(c, l, i, j);
 }

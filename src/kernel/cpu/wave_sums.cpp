@@ -176,6 +176,12 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
     gx[k] = gz[k] = zero;
   V hxx = zero, hxz = zero, hzz = zero, mx = zero, mz = zero, cxx = zero, cxz = zero, czz = zero,
     any = zero;
+  // kernel/ndf.glsl, box_cells_add: the smooth terms' cells.
+  const int side = in.box_side;
+  V bmx[kMaxBoxCells], bmz[kMaxBoxCells], bxx[kMaxBoxCells], bxz[kMaxBoxCells], bzz[kMaxBoxCells];
+  for (int q = 0; q < kMaxBoxCells; ++q)
+    bmx[q] = bmz[q] = bxx[q] = bxz[q] = bzz[q] = zero;
+  const V inv_side = hn::Set(d, side > 0 ? T(1) / T(side) : T(0));
   const size_t n = size_t(w.count);  // the arrays' stride
   const size_t visit = size_t(in.count), alias_from = size_t(std::max(in.alias_from, 0));
   for (size_t i = 0; i < visit; i += N) {
@@ -183,6 +189,7 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
     const V A = AmplitudesBelow(d, w.A, i, visit);
     const V th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), zero, x, z, zero);
     const V c = hn::Cos(d, th);
+    const V s = (i < alias_from || side > 0) ? hn::Sin(d, th) : zero;
     // kernel/aliasing.glsl: the projected frequency and Eq. 20.
     const V fx = hn::Abs(hn::MulAdd(a, j00, hn::Mul(b, j01)));
     const V fy = hn::Abs(hn::MulAdd(a, j10, hn::Mul(b, j11)));
@@ -201,7 +208,6 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
       alpha = hn::Max(alpha, hn::Min(one, hn::Max(zero, hn::Sub(hn::Div(dev, limit), one))));
     }
     if (i < alias_from) {
-      const V s = hn::Sin(d, th);
       const V resolved = hn::Mul(hn::Sub(one, alpha), A);
       const V rc = hn::Mul(resolved, c);
       gx[K] = hn::MulAdd(rc, a, gx[K]);
@@ -217,6 +223,57 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
       hxx = hn::NegMulAdd(rs, hn::Mul(a, a), hxx);
       hxz = hn::NegMulAdd(rs, hn::Mul(a, b), hxz);
       hzz = hn::NegMulAdd(rs, hn::Mul(b, b), hzz);
+    }
+    if (side > 0) {
+      // Half-phases along the pixel's edges, per cell: x = (k . J_0, k . J_1) / (2 n).
+      const V x0 = hn::Mul(hn::Mul(half, hn::MulAdd(a, j00, hn::Mul(b, j01))), inv_side);
+      const V x1 = hn::Mul(hn::Mul(half, hn::MulAdd(a, j10, hn::Mul(b, j11))), inv_side);
+      const V cx0 = hn::Cos(d, x0), sx0 = hn::Sin(d, x0), cx1 = hn::Cos(d, x1),
+              sx1 = hn::Sin(d, x1);
+      auto box_sinc = [&](V xv, V sv) {
+        const auto small = hn::Lt(hn::Abs(xv), hn::Set(d, T(1e-4)));
+        const V safe = hn::IfThenElse(small, one, xv);
+        return hn::IfThenElse(small, hn::NegMulAdd(hn::Mul(xv, xv), hn::Set(d, T(1.0 / 6.0)), one),
+                              hn::Div(sv, safe));
+      };
+      const V f0 = box_sinc(x0, sx0), f1 = box_sinc(x1, sx1);
+      const V g = hn::Mul(hn::Mul(f0, cx0), hn::Mul(f1, cx1));
+      const V Af = hn::Mul(A, hn::Mul(f0, f1));
+      const V J0 = hn::Mul(hn::Mul(half, A), A);
+      const V kxx = hn::Mul(a, a), kxz = hn::Mul(a, b), kzz = hn::Mul(b, b);
+      // box_offset_rotations: the first offset -(n - 1) x and the step 2 x.
+      auto rotations = [&](V cx, V sx, V& fc, V& fs, V& c2, V& s2) {
+        c2 = hn::MulSub(hn::Add(cx, cx), cx, one);
+        s2 = hn::Mul(hn::Add(sx, sx), cx);
+        fc = side == 1 ? one : (side == 2 ? cx : c2);
+        fs = side == 1 ? zero : (side == 2 ? hn::Neg(sx) : hn::Neg(s2));
+      };
+      V ac, as, r0c, r0s, b0c, b0s, r1c, r1s;
+      rotations(cx0, sx0, ac, as, r0c, r0s);
+      rotations(cx1, sx1, b0c, b0s, r1c, r1s);
+      for (int iu = 0; iu < side; ++iu) {
+        V bc = b0c, bs = b0s;
+        for (int iv = 0; iv < side; ++iv) {
+          const V cab = hn::NegMulAdd(as, bs, hn::Mul(ac, bc));
+          const V sab = hn::MulAdd(ac, bs, hn::Mul(as, bc));
+          const V cp = hn::NegMulAdd(s, sab, hn::Mul(c, cab));
+          const V Kc = hn::Mul(Af, cp);
+          const V Jc = hn::Mul(J0, hn::MulAdd(hn::MulSub(hn::Add(cp, cp), cp, one), g, one));
+          const V var = hn::NegMulAdd(Kc, Kc, Jc);
+          const int q = iu * side + iv;
+          bmx[q] = hn::NegMulAdd(Kc, a, bmx[q]);
+          bmz[q] = hn::NegMulAdd(Kc, b, bmz[q]);
+          bxx[q] = hn::MulAdd(var, kxx, bxx[q]);
+          bxz[q] = hn::MulAdd(var, kxz, bxz[q]);
+          bzz[q] = hn::MulAdd(var, kzz, bzz[q]);
+          const V nbc = hn::NegMulAdd(bs, r1s, hn::Mul(bc, r1c));
+          bs = hn::MulAdd(bc, r1s, hn::Mul(bs, r1c));
+          bc = nbc;
+        }
+        const V nac = hn::NegMulAdd(as, r0s, hn::Mul(ac, r0c));
+        as = hn::MulAdd(ac, r0s, hn::Mul(as, r0c));
+        ac = nac;
+      }
     }
     const V aliasing = hn::Mul(alpha, A);
     if (hn::AllFalse(d, hn::Gt(aliasing, zero))) continue;
@@ -260,6 +317,13 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
   out.cxz = sum(cxz);
   out.czz = sum(czz);
   out.any = sum(any) > T(0);
+  for (int q = 0; q < side * side; ++q) {
+    out.bmx[q] = sum(bmx[q]);
+    out.bmz[q] = sum(bmz[q]);
+    out.bxx[q] = sum(bxx[q]);
+    out.bxz[q] = sum(bxz[q]);
+    out.bzz[q] = sum(bzz[q]);
+  }
 }
 
 double HeightD(const Arrays<double>& w, int n, double x, double z, double dt) {

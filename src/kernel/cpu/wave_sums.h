@@ -35,7 +35,10 @@ struct StaaPassIn {
   int segments = 1;
   int count = 0;       // the waves visited: positions [0, count) (kernel/staa.glsl, remainder)
   int alias_from = 0;  // every wave from this position on aliases fully (resolved share 0)
+  int box_side = 0;    // the smooth terms' cells per side (kernel/ndf.glsl, box_cells_add; 0: off)
 };
+
+inline constexpr int kMaxBoxCells = 9;
 
 template <class T>
 struct StaaPassOut {
@@ -44,6 +47,8 @@ struct StaaPassOut {
   T mx = 0, mz = 0;                      // NDF mean
   T cxx = 0, cxz = 0, czz = 0;           // NDF covariance
   bool any = false;
+  // The cells' moments (box_side^2 of them, row-major): mean and covariance.
+  T bmx[kMaxBoxCells], bmz[kMaxBoxCells], bxx[kMaxBoxCells], bxz[kMaxBoxCells], bzz[kMaxBoxCells];
 };
 
 // The height of the first n waves (n <= w.count).

@@ -1,0 +1,171 @@
+// The smooth terms of the water's radiance averaged over the pixel's distribution of
+// normals: the Fresnel-weighted sky, F(n . v) sky(r), and the sea, (1 - F) on the part
+// that reflects above the horizon and 1 below it (radiance.glsl). Taken at the mean normal
+// (the temporal method, Podee et al. 2021 Sec. 3.3), they miss the curvature of Schlick's
+// factor in the slope, strong at grazing view, and the horizon's cut through the
+// distribution; `staa` integrates them over the same Gaussian that it maps to the light
+// plane for the light (Eqs. 4-7), widened by the pixel footprint of the resolved waves and
+// the path of the normal over the shutter (docs/method.md, "The smooth terms").
+//
+// In NDF-plane coordinates s (the normal m = (s.x, 1, s.y)) and the unit view v with
+// v.y > 0, the reflection r = 2 (m . v) / (m . m) m - v points above the horizon where
+//     G(s) = v.y |s|^2 - 2 s . (v.x, v.z) - v.y < 0,
+// the inside of a circle (r.y > 0 <=> 2 (m . v) - v.y (m . m) > 0 with m . v = s . (v.x, v.z)
+// + v.y, m . m = 1 + |s|^2). With s = mu + A z, A A^T = cov, z ~ N(0, I), the standard
+// coordinates are turned so that z = (u, w) with u along A^T grad G(mu), the direction in
+// which the horizon cuts. Along w, 3-point Gauss-Hermite; along u, at each w node, the set
+// G < 0 is an interval [a, b] (the roots of a quadratic). Where neither root lies within
+// 8 deviations the u integral is 5-point Gauss-Hermite; otherwise it is integrated over
+// the interval only, in the normal's tail probability, so that the horizon's cut and the
+// sky's square root at it cost no accuracy (smooth_cut_piece). 15 evaluations of F and the
+// sky per pixel away from the horizon, 24 (48 when both roots cut) where it crosses the
+// distribution. The pixel's view is taken at its centre (its change across a pixel,
+// ~1e-3 rad, is far below the normals'). Tested against a dense 2D grid over the same
+// Gaussian (kernel/smooth_terms_test.cpp).
+
+// Probabilists' Gauss-Hermite nodes and weights: 5 points, 0, +-sqrt(5 -+ sqrt(10)).
+const real kGh5P = 1.3556261799742659;  // sqrt(5 - sqrt(10))
+const real kGh5Q = 2.8569700138728056;  // sqrt(5 + sqrt(10))
+const real kGh5W0 = 0.53333333333333333;  // 8 / 15
+const real kGh5WP = 0.22207592200561265;
+const real kGh5WQ = 0.011257411327720691;
+const real kGh3 = 1.7320508075688772;  // sqrt(3); weights 1/6, 2/3, 1/6
+
+// The integrand at NDF-plane point s: vec2(F, F z), with z = 0 where r points below the
+// horizon (the rule's nodes all lie above it, or far enough from it not to matter).
+SG_FN vec2 smooth_integrand(IN(Frame) f, vec2 s, vec3 v) {
+  real mm = 1.0 + dot(s, s);
+  real mv = s.x * v.x + s.y * v.z + v.y;
+  real F = f.fresnel == 0 ? 1.0 : fresnel_schlick(mv * inversesqrt(mm));
+  real ry = 2.0 * mv / mm - v.y;
+  real z = 0.0;
+  if (f.sky_gradient && ry > 0.0) z = pow(ry, f.sky_exponent);
+  return vec2(F, F * z);
+}
+
+// 8-point Gauss-Legendre on [0, 1]: nodes (1 +- x) / 2, weights w / 2.
+const real kGl8X[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                       0.9602898564975363};
+const real kGl8W[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                       0.1012285362903763};
+
+// (E[F], E[F z], mass) of the standard normal u over [c, e], c > -8 the horizon's cut
+// (e may be the clamp at 10). In the upper-tail probability q = Q(u) the piece runs from
+// Q(c) down to Q(e) with the density uniform; with q = Q(c) - mass g(tau),
+// g = tau^2 (3 - 2 tau), the integrand's square-root behaviour at the cut (r.y ~ u - c
+// there, the sky's (r.y)^exponent) becomes smooth in tau, and the quantile's logarithmic
+// growth at the far end (q -> 0) is pressed into g's flat end: mass int_0^1 h(Q^-1(q))
+// g'(tau) dtau by 8-point Gauss-Legendre, with Q^-1(q) = -Phi^-1(q) (special.glsl:
+// normal_quantile). Against a dense grid the pieces err by about 1e-5 (the test), where
+// g = tau^2 alone erred by 3e-4.
+SG_FN vec3 smooth_cut_piece(IN(Frame) f, vec2 sw, vec2 d, vec3 v, real c, real e) {
+  real qc = 0.5 * erfc(c * kInvSqrtTwo);
+  real mass = normal_mass(c, e);
+  vec2 sum = vec2(0.0);
+  for (int q = 0; q < 8; ++q) {
+    real x = q < 4 ? -kGl8X[q] : kGl8X[q - 4];
+    real wq = 0.5 * (q < 4 ? kGl8W[q] : kGl8W[q - 4]);
+    real tau = 0.5 * (1.0 + x);
+    real g = tau * tau * (3.0 - 2.0 * tau);
+    real dg = 6.0 * tau * (1.0 - tau);
+    real u = -normal_quantile(qc - mass * g);
+    sum += (wq * dg) * smooth_integrand(f, sw + u * d, v);
+  }
+  return vec3(mass * sum.x, mass * sum.y, mass);
+}
+
+// The integrals over N(mu, cov) in NDF-plane coordinates for the unit view v.
+SG_FN SmoothTerms smooth_terms(IN(Frame) f, vec2 mu, mat2 cov, vec3 v) {
+  SmoothTerms res;
+  res.f_above = 0.0;
+  res.f_zenith = 0.0;
+  res.above = 0.0;
+  vec2 vh = vec2(v.x, v.z);
+  PrincipalAxes ax = principal_axes(cov);
+  vec2 minor = vec2(-ax.u.y, ax.u.x);
+  mat2 A = mat2(ax.s1 * ax.u, ax.s2 * minor);  // columns: A A^T = cov
+  vec2 grad = 2.0 * v.y * mu - 2.0 * vh;
+  vec2 eu = transpose(A) * grad;
+  real eu2 = dot(eu, eu);
+  eu = eu2 > 0.0 ? eu * inversesqrt(eu2) : vec2(1.0, 0.0);
+  vec2 d = A * eu;                       // ds/du
+  vec2 dw = A * vec2(-eu.y, eu.x);       // ds/dw
+  real a2 = v.y * dot(d, d);
+  for (int j = 0; j < 3; ++j) {
+    real w = real(j - 1) * kGh3;
+    real wj = j == 1 ? 2.0 / 3.0 : 1.0 / 6.0;
+    vec2 sw = mu + w * dw;
+    // G(sw + u d) = a2 u^2 + 2 b1 u + c0: above where negative.
+    real b1 = v.y * dot(sw, d) - dot(vh, d);
+    real c0 = v.y * dot(sw, sw) - 2.0 * dot(sw, vh) - v.y;
+    real lo = -10.0;
+    real hi = 10.0;
+    bool empty = false;
+    if (a2 > 0.0) {
+      real disc = b1 * b1 - a2 * c0;
+      if (disc <= 0.0) {
+        empty = true;
+      } else {
+        // The roots in the form that does not cancel: q / a2 and c0 / q.
+        real q = -(b1 + (b1 >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+        real r1 = q / a2;
+        real r2 = c0 / q;
+        lo = max(lo, min(r1, r2));
+        hi = min(hi, max(r1, r2));
+      }
+    } else {
+      // No spread along u (a point distribution): all or nothing.
+      empty = c0 >= 0.0;
+    }
+    if (empty || hi <= lo) continue;
+    if (f.fresnel == 0 && !f.sky_gradient) {
+      // F = 1 and z = 0: the share above the horizon is all.
+      real m0 = normal_mass(lo, hi);
+      res.f_above += wj * m0;
+      res.above += wj * m0;
+      continue;
+    }
+    // Roots beyond 8 deviations cut off less than 1e-15: no cut.
+    bool cut_lo = lo > -8.0;
+    bool cut_hi = hi < 8.0;
+    vec3 h;  // (E[F], E[F z], mass) over the interval, for this w
+    if (!cut_lo && !cut_hi) {
+      h.x = 0.0;
+      h.y = 0.0;
+      h.z = 1.0;
+      for (int q = 0; q < 5; ++q) {
+        real x = q == 0 ? 0.0 : (q < 3 ? kGh5P : kGh5Q) * (q % 2 == 1 ? 1.0 : -1.0);
+        vec2 g = smooth_integrand(f, sw + x * d, v);
+        real wq = q == 0 ? kGh5W0 : (q < 3 ? kGh5WP : kGh5WQ);
+        h.x += wq * g.x;
+        h.y += wq * g.y;
+      }
+    } else if (cut_lo && cut_hi) {
+      // Both ends cut: split at the middle, each half with its cut at one end.
+      real mid = 0.5 * (lo + hi);
+      h = smooth_cut_piece(f, sw, d, v, lo, mid) + smooth_cut_piece(f, sw, -d, v, -hi, -mid);
+    } else if (cut_lo) {
+      h = smooth_cut_piece(f, sw, d, v, lo, hi);
+    } else {
+      // The cut at the upper end: u -> -u puts it at the lower end.
+      h = smooth_cut_piece(f, sw, -d, v, -hi, -lo);
+    }
+    res.f_above += wj * h.x;
+    res.f_zenith += wj * h.y;
+    res.above += wj * h.z;
+  }
+  res.f_above = clamp(res.f_above, 0.0, res.above);
+  res.f_zenith = clamp(res.f_zenith, 0.0, res.f_above);
+  return res;
+}
+
+// The weights (light, zenith, horizon, sea) from the smooth terms, with a share in_light
+// of the normals reflecting into the light at Fresnel factor F_light: the light replaces
+// the sky there (its zenith weight taken at the light's height).
+SG_FN vec4 smooth_weights(IN(Frame) f, IN(SmoothTerms) s, real F_light, real in_light) {
+  real lit = F_light * min(in_light, s.above);
+  vec4 sl = sky_weights(f, f.light.L.y);
+  real zenith = max(0.0, s.f_zenith - lit * sl.y);
+  real horizon = max(0.0, (s.f_above - s.f_zenith) - lit * sl.z);
+  return vec4(lit, zenith, horizon, 1.0 - s.f_above);
+}

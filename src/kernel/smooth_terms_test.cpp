@@ -1,0 +1,201 @@
+// `staa`'s smooth terms over a Gaussian of normals (kernel/smooth_terms.glsl), the cells'
+// moments over the footprint (kernel/ndf.glsl) and the horizon's share of a pixel
+// (kernel/horizon_coverage.glsl) against brute force. The smooth terms against
+// brute force: a dense midpoint grid over the same Gaussian in its standard coordinates,
+// with the horizon's indicator evaluated at every cell. Views from grazing (2 degrees) to
+// steep, round and elongated spreads, distributions that the horizon cuts through the
+// middle, at its edge and not at all; Schlick's factor with gradient skies of exponents
+// 0.5 to 2. Float against double.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "kernel/kernel_double.h"
+#include "kernel/kernel_float.h"
+#include "math/vec.h"
+
+namespace sg {
+namespace {
+
+kd::Frame smooth_frame(double exponent) {
+  kd::Frame f{};
+  f.fresnel = 1;
+  f.sky_gradient = true;
+  f.sky_exponent = exponent;
+  f.light.L = kd::vec3(0, 0.2, -0.98);
+  return f;
+}
+
+kf::Frame narrow_frame(const kd::Frame& d) {
+  kf::Frame f{};
+  f.fresnel = d.fresnel;
+  f.sky_gradient = d.sky_gradient;
+  f.sky_exponent = static_cast<float>(d.sky_exponent);
+  f.light.L = kf::vec3(d.light.L);
+  return f;
+}
+
+// E[F 1{above}], E[F z 1{above}], P(above) over N(mu, A A^T) on an n x n grid over
+// [-8, 8]^2 standard deviations.
+kd::SmoothTerms brute_smooth(const kd::Frame& f, kd::vec2 mu, kd::mat2 A, kd::vec3 v, int n) {
+  kd::SmoothTerms s{0, 0, 0};
+  const double h = 16.0 / n;
+  for (int a = 0; a < n; ++a) {
+    const double u = -8 + (a + 0.5) * h;
+    const double pu = std::exp(-0.5 * u * u);
+    for (int b = 0; b < n; ++b) {
+      const double w = -8 + (b + 0.5) * h;
+      const double weight = pu * std::exp(-0.5 * w * w) * h * h / (2 * kPi);
+      const kd::vec2 sl = mu + A * kd::vec2(u, w);
+      const kd::vec3 m(sl.x, 1, sl.y);
+      const kd::vec3 r = kd::reflect_view(normalize(m), v);
+      if (r.y <= 0) continue;
+      const double F = kd::fresnel_schlick(dot(normalize(m), v));
+      s.above += weight;
+      s.f_above += weight * F;
+      s.f_zenith += weight * F * std::pow(r.y, f.sky_exponent);
+    }
+  }
+  return s;
+}
+
+struct Case {
+  const char* what;
+  double view_deg;  // the view's elevation above the water
+  double sigma_along, sigma_across;
+  double mean_along;  // the mean slope towards the camera (positive: the normal tilts to it)
+  double exponent;
+};
+
+TEST(SmoothTerms, MatchesBruteForceOverTheNormals) {
+  const Case cases[] = {
+      {"grazing, wide, horizon through the middle", 2, 0.15, 0.12, 0.0, 0.5},
+      {"grazing, narrow", 2, 0.02, 0.02, 0.0, 0.5},
+      {"grazing, tilted away (mostly below)", 3, 0.08, 0.05, -0.05, 1.0},
+      {"low, elongated along the view", 5, 0.2, 0.03, 0.02, 0.5},
+      {"low, elongated across", 5, 0.03, 0.2, 0.0, 2.0},
+      {"medium", 20, 0.1, 0.1, 0.05, 0.5},
+      {"steep, far from the horizon", 60, 0.1, 0.07, 0.0, 0.5},
+      {"point distribution", 10, 0.0, 0.0, 0.01, 0.5},
+  };
+  for (const Case& c : cases) {
+    const double el = c.view_deg * kPi / 180;
+    // The camera is along -z from the water point... the view towards it: (0, sin, cos).
+    const kd::vec3 v(0, std::sin(el), std::cos(el));
+    const double turn = 0.3;  // the spread's axes turned from the view's plane
+    const kd::vec2 along(std::sin(turn), std::cos(turn)), across(-along.y, along.x);
+    const kd::mat2 A(c.sigma_along * along, c.sigma_across * across);
+    const kd::vec2 mu = c.mean_along * kd::vec2(0, 1);
+    const kd::Frame f = smooth_frame(c.exponent);
+    const kd::SmoothTerms got = kd::smooth_terms(f, mu, A * transpose(A), v);
+    const kd::SmoothTerms want = brute_smooth(f, mu, A, v, 1600);
+    const double e_f = std::fabs(got.f_above - want.f_above);
+    const double e_z = std::fabs(got.f_zenith - want.f_zenith);
+    const double e_a = std::fabs(got.above - want.above);
+    std::printf("%-45s F %.6f (%.1e)  Fz %.6f (%.1e)  above %.6f (%.1e)\n", c.what, got.f_above,
+                e_f, got.f_zenith, e_z, got.above, e_a);
+    // The grid's own error at the horizon's cut is about 1.5e-5 at 1600 cells per side
+    // (it halves with twice the cells); the rule's is about 1e-5.
+    EXPECT_LT(e_a, 4e-5) << c.what;
+    EXPECT_LT(e_f, 4e-5) << c.what;
+    EXPECT_LT(e_z, 4e-5) << c.what;
+    // Float (what a GPU computes) against double.
+    const kf::SmoothTerms fl = kf::float_smooth_terms(
+        narrow_frame(f), kf::vec2(mu), kf::mat2(A * transpose(A)), kf::vec3(v));
+    EXPECT_NEAR(fl.f_above, got.f_above, 2e-5) << c.what;
+    EXPECT_NEAR(fl.f_zenith, got.f_zenith, 2e-5) << c.what;
+    EXPECT_NEAR(fl.above, got.above, 2e-5) << c.what;
+  }
+}
+
+TEST(SmoothTerms, CellMomentsMatchNumericalIntegrationOverTheFootprint) {
+  // One wave over an elongated, sheared footprint parallelogram (a grazing view's) cut into
+  // n x n cells: each cell's mean slope and covariance (ndf.glsl, box_cells_add) against a
+  // 200 x 200 midpoint grid over the cell. A long wave spanning a fraction of a cycle, one
+  // oblique to the footprint spanning several, and one along it.
+  const kd::mat2 J(kd::vec2(0.45, 0.02), kd::vec2(0.9, 11.0));  // columns: metres per pixel
+  struct W {
+    double A, kx, kz, theta;
+  };
+  for (const W w : {W{0.13, 0.05, -0.3, 0.7}, W{0.02, 1.9, 0.8, 2.1}, W{0.05, 0.0, -1.1, -0.4}}) {
+    const kd::vec2 k(w.kx, w.kz);
+    for (int n = 1; n <= 3; ++n) {
+      kd::BoxCells b = kd::box_cells_zero();
+      kd::box_cells_add(b, n, w.A, k, std::sin(w.theta), std::cos(w.theta),
+                        0.5 * kd::vec2(dot(k, J[0]), dot(k, J[1])));
+      for (int iu = 0; iu < n; ++iu) {
+        for (int iv = 0; iv < n; ++iv) {
+          const int G = 200;
+          double m = 0, m2 = 0;
+          for (int a = 0; a < G; ++a) {
+            for (int c = 0; c < G; ++c) {
+              const double u = (iu + (a + 0.5) / G) / n - 0.5, v = (iv + (c + 0.5) / G) / n - 0.5;
+              const double slope = w.A * std::cos(w.theta + dot(k, J * kd::vec2(u, v)));
+              m += slope;
+              m2 += slope * slope;
+            }
+          }
+          m /= G * G;
+          m2 /= G * G;
+          const kd::NdfMoments& got = b.m[iu * n + iv];
+          const double scale = w.A * length(k);
+          // NDF-plane coordinates are minus the slope: mean -K k, covariance (J - K^2) k k^T.
+          EXPECT_NEAR(got.mean.x, -m * k.x, 1e-4 * scale) << n << " " << iu << iv;
+          EXPECT_NEAR(got.mean.y, -m * k.y, 1e-4 * scale) << n << " " << iu << iv;
+          EXPECT_NEAR(got.cov.x, (m2 - m * m) * k.x * k.x, 1e-4 * scale * scale) << n;
+          EXPECT_NEAR(got.cov.y, (m2 - m * m) * k.x * k.y, 1e-4 * scale * scale) << n;
+          EXPECT_NEAR(got.cov.z, (m2 - m * m) * k.y * k.y, 1e-4 * scale * scale) << n;
+        }
+      }
+    }
+  }
+}
+
+TEST(SmoothTerms, HorizonShareMatchesARayGrid) {
+  // The water's share of pixels that the horizon crosses (horizon_coverage.glsl) against
+  // a 400 x 400 grid of rays per pixel, for a level and a rolled camera; the centroid of
+  // the water part likewise.
+  for (double roll : {0.0, 0.3}) {
+    kd::Camera c{};
+    c.position = kd::vec3(0, 2, 0);
+    const double pitch = 0.013;  // the horizon through the middle of row 47
+    c.forward = kd::vec3(0, std::sin(pitch), -std::cos(pitch));
+    const kd::vec3 right0(1, 0, 0), up0 = cross(right0, c.forward);
+    c.right = std::cos(roll) * right0 + std::sin(roll) * up0;
+    c.up = cross(c.right, c.forward);
+    c.half_w = 0.4;
+    c.half_h = 0.225;
+    c.width = 160;
+    c.height = 90;
+    int crossed = 0;
+    for (int j = 30; j < 60; ++j) {
+      for (int i = 0; i < 160; i += 9) {
+        const kd::PixelWater w = kd::pixel_water(c, i, j);
+        const int G = 400;
+        double in = 0, cx = 0, cy = 0;
+        for (int a = 0; a < G; ++a) {
+          for (int b = 0; b < G; ++b) {
+            const double px = i + (a + 0.5) / G, py = j + (b + 0.5) / G;
+            if (kd::camera_direction(c, px, py).y < 0) {
+              in += 1;
+              cx += px;
+              cy += py;
+            }
+          }
+        }
+        const double share = in / (G * G);
+        EXPECT_NEAR(w.share, share, 3e-3) << roll << " " << i << "," << j;
+        if (share > 0.01 && share < 0.99) {
+          ++crossed;
+          EXPECT_NEAR(w.centre.x, cx / in, 5e-3) << roll << " " << i << "," << j;
+          EXPECT_NEAR(w.centre.y, cy / in, 5e-3) << roll << " " << i << "," << j;
+        }
+      }
+    }
+    EXPECT_GT(crossed, 10) << "the test must see pixels that the horizon crosses";
+  }
+}
+
+}  // namespace
+}  // namespace sg
