@@ -22,8 +22,8 @@ namespace {
 
 struct ViewArgs {
   std::string scene_path, method = "staa", split, screenshot, save_scene;
-  int frames = 0, width = 0, height = 0;
-  double exposure = 0;
+  int frames = 0, width = 0, height = 0, reference_batches = 0;
+  double exposure = 0, reference_difference = 0;
   bool no_glare = false, show_controls = false;
   // Edits of the scene (NaN: as the scene has it).
   double sun_elevation = std::nan(""), sun_azimuth = std::nan(""), sun_radius = std::nan("");
@@ -45,8 +45,21 @@ void run_view(ViewArgs& a) {
         throw Error("--split: " + std::string(e.what()));
       }
     }
-    if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls))
-      throw Error("--screenshot, --save-scene, --show-controls: need --frames N (a scripted run)");
+    if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls ||
+                          a.reference_batches > 0 || a.reference_difference > 0)) {
+      throw Error(
+          "--screenshot, --save-scene, --show-controls, --reference-batches, "
+          "--reference-difference: need --frames N (a scripted run)");
+    }
+    if (a.reference_difference > 0 && a.reference_batches == 0)
+      throw Error("--reference-difference: needs --reference-batches N");
+    if (a.reference_batches > 0) {
+      try {
+        gl_engine::gl_variant("reference", a.flags.options);
+      } catch (const Error& e) {
+        throw Error("--reference-batches: " + std::string(e.what()));
+      }
+    }
     if (!a.screenshot.empty() && image_format_of(a.screenshot) != ImageFormat::png)
       throw Error("--screenshot: must be a .png file (got '" + a.screenshot + "')");
   });
@@ -88,6 +101,8 @@ void run_view(ViewArgs& a) {
   o.screenshot = a.screenshot;
   o.save_scene = a.save_scene;
   o.show_controls = a.show_controls;
+  o.reference_batches = a.reference_batches;
+  o.reference_difference = a.reference_difference;
   viewer::run_viewer(o);
 }
 
@@ -113,6 +128,13 @@ void add_view_command(CLI::App& app) {
   c->add_option("--save-scene", a->save_scene, "Scripted run: the view's scene file (.json)");
   c->add_flag("--show-controls", a->show_controls,
               "Scripted run: draw the controls (and the split's divider) in the screenshot too");
+  c->add_option("--reference-batches", a->reference_batches,
+                "Scripted run: show the still-frame reference of the last frame after N batches "
+                "(seeds --seed, --seed + 1, ...) instead of the method")
+      ->check(integer_in(1, 65536));
+  c->add_option("--reference-difference", a->reference_difference,
+                "Scripted run: show |reference - method| times this scale instead")
+      ->check(number_in(0.001, 1e6));
   c->add_option("--width", a->width,
                 "Override the image (and window) width (height follows the aspect ratio unless "
                 "given)")

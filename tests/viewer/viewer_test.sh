@@ -3,7 +3,8 @@
 # `render --engine gl --display` of the same frame and method (max channel difference at
 # most 2/255); a split view's halves equal each method's render; a view saved as a scene
 # file renders as the view showed it; without a display, with a display that does not
-# open, below OpenGL 4.5 and with a bad scene: a clear error, a non-zero exit, no file.
+# open, below OpenGL 4.5 and with a bad scene: a clear error, a non-zero exit, no file; the
+# still-frame reference against `render --method reference`.
 # Usage: viewer_test.sh SUNGLINT SOURCE_DIR WORK_DIR
 # Runs itself under `xvfb-run -a` (or on $SUNGLINT_TEST_DISPLAY); exits 77 (skipped) when
 # there is no Xvfb, unless SUNGLINT_REQUIRE_GL=1.
@@ -95,7 +96,38 @@ run render-unedited "$bin" render "$scene" -m point --engine gl "${size[@]}" --d
   -o "$work/render_point0.png"
 expect_apart "the edits change the picture" "$work/view_edited.png" "$work/render_point0.png"
 
-# 4. Refusals: a clear error, a non-zero exit, no file.
+# 4. The still-frame reference (160x90): one batch is `render --method reference` of the
+# frame; more batches average more seeds (closer to a reference of as many samples); its
+# difference to the method is black where the method is that same batch, not otherwise.
+small=(--width 160 --height 90)
+run view-ref1 "$bin" view "$scene" -m point --frames 1 "${small[@]}" --reference-batches 1 \
+  --screenshot "$work/view_ref1.png"
+run render-ref "$bin" render "$scene" -m reference --engine gl --frame 0 "${small[@]}" --display -q \
+  -o "$work/render_ref.png"
+expect_close "reference view, 1 batch = render --method reference" 2 "$work/view_ref1.png" \
+  "$work/render_ref.png"
+run view-ref4 "$bin" view "$scene" -m point --frames 1 "${small[@]}" --reference-batches 4 \
+  --screenshot "$work/view_ref4.png"
+run render-ref16 "$bin" render "$scene" -m reference --samples 16x16x1 --engine gl --frame 0 \
+  "${small[@]}" --display -q -o "$work/render_ref16.png"
+e1=$(python3 "$src/tests/viewer/png_diff.py" --sum "$work/view_ref1.png" "$work/render_ref16.png")
+e4=$(python3 "$src/tests/viewer/png_diff.py" --sum "$work/view_ref4.png" "$work/render_ref16.png")
+if [ "$e4" -lt "$e1" ]; then pass; else
+  fail "reference view: 4 batches ($e4) not closer than 1 ($e1) to 16x16x1 (sums of |differences|)"
+fi
+peak() { python3 "$src/tests/viewer/png_diff.py" --peak "$1"; }
+run view-refdiff1 "$bin" view "$scene" -m reference --frames 1 "${small[@]}" \
+  --reference-batches 1 --reference-difference 100 --screenshot "$work/view_refdiff1.png"
+p=$(peak "$work/view_refdiff1.png")
+[ "$p" -eq 0 ] && pass || fail "reference difference to itself: not black ($p/255)"
+run view-refdiff2 "$bin" view "$scene" -m reference --frames 1 "${small[@]}" \
+  --reference-batches 2 --reference-difference 100 --screenshot "$work/view_refdiff2.png"
+p=$(peak "$work/view_refdiff2.png")
+[ "$p" -gt 8 ] && pass || fail "reference difference, 2 batches: black ($p/255): one seed only?"
+expect_refused "reference batches without frames" "need --frames" "$work/refused.png" \
+  "$bin" view "$scene" --reference-batches 2
+
+# 5. Refusals: a clear error, a non-zero exit, no file.
 shot=$work/refused.png
 expect_refused "no display" "no display: DISPLAY is not set" "$shot" \
   env -u DISPLAY -u WAYLAND_DISPLAY "$bin" view "$scene" -m point --frames 1 "${size[@]}" \
