@@ -13,7 +13,9 @@ constexpr double kMaxTargetDistance = 1e4;   // metres: farther hits are "the ho
 constexpr double kMaxSinElevation = 0.9962;  // sin(85 degrees): the view's steepest
 const vec3 kUp{0, 1, 0};
 
-vec3 forward(const CameraDesc& c) { return glm::normalize(c.look_at - c.position); }
+vec3 forward(const CameraDesc& c) {
+  return glm::normalize(c.look_at - c.position);
+}
 
 // The horizontal unit vector to the right of the view (its direction is vertical: +x).
 vec3 right_of(const vec3& fwd) {

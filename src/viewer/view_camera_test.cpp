@@ -20,7 +20,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Scene simple() { return load_scene(std::string(SG_SOURCE_DIR) + "/scenes/simple.json"); }
+Scene simple() {
+  return load_scene(std::string(SG_SOURCE_DIR) + "/scenes/simple.json");
+}
 
 // A camera with a look_at off the target, so that a rigid motion and a "look at the
 // target" differ.
@@ -38,7 +40,9 @@ void expect_near(const vec3& a, const vec3& b, double tol) {
   EXPECT_NEAR(a.y, b.y, tol);
   EXPECT_NEAR(a.z, b.z, tol);
 }
-vec3 dir(const CameraDesc& c) { return glm::normalize(c.look_at - c.position); }
+vec3 dir(const CameraDesc& c) {
+  return glm::normalize(c.look_at - c.position);
+}
 
 TEST(ViewCamera, HomeIsTheScenesCameraExactly) {
   const Scene s = simple();

@@ -9,8 +9,7 @@
 namespace sg::viewer {
 
 ReferenceView::ReferenceView(const MethodOptions& options)
-    : options_(options),
-      engine_(std::make_unique<gl_engine::GlEngine>("reference", options)) {
+    : options_(options), engine_(std::make_unique<gl_engine::GlEngine>("reference", options)) {
   const ReferenceSettings rs = reference_settings(options);
   const long kernel_batches = rs.batches, t = rs.samples.st;
   per_batch_busy_ = kernel_batches * rs.samples.sx * rs.samples.sy * t;

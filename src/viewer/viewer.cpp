@@ -284,8 +284,7 @@ class Viewer {
         orbit_target_ = orbit_target(c);
       }
       if (ImGui::IsMouseClicked(1)) looking_ = true;
-      if (io.MouseWheel != 0)
-        c = dolly(c, orbit_target(c), std::pow(0.85, double(io.MouseWheel)));
+      if (io.MouseWheel != 0) c = dolly(c, orbit_target(c), std::pow(0.85, double(io.MouseWheel)));
     }
     if (!io.MouseDown[0]) orbiting_ = false;
     if (!io.MouseDown[1]) looking_ = false;
@@ -537,8 +536,9 @@ class Viewer {
         recompose();
       }
       if (ref_ && ref_->batches() > 0) {
-        ImGui::Text("%d batches: %ld samples per pixel (%ld quiet), %.1f ms/batch", ref_->batches(),
-                    ref_->busy_samples(), ref_->quiet_samples(), ref_->last_gpu_ms());
+        ImGui::TextWrapped("%d batches: %ld samples per pixel (quiet pixels %ld), %.1f ms a batch",
+                           ref_->batches(), ref_->busy_samples(), ref_->quiet_samples(),
+                           ref_->last_gpu_ms());
       } else {
         ImGui::TextUnformatted("(shown while paused)");
       }
@@ -571,8 +571,8 @@ class Viewer {
     ImGui::SameLine();
     if (ImGui::Button("Home (H)")) home(dirty);
     const CameraDesc& cam = edits_.camera;
-    ImGui::Text("camera (%.2f, %.2f, %.2f) -> (%.1f, %.1f, %.1f)", cam.position.x, cam.position.y,
-                cam.position.z, cam.look_at.x, cam.look_at.y, cam.look_at.z);
+    ImGui::TextWrapped("camera (%.2f, %.2f, %.2f) looks at (%.1f, %.1f, %.1f)", cam.position.x,
+                       cam.position.y, cam.position.z, cam.look_at.x, cam.look_at.y, cam.look_at.z);
     // Saving.
     ImGui::Separator();
     ImGui::InputText("file", path_, sizeof path_);
