@@ -21,7 +21,7 @@ namespace sg {
 namespace {
 
 struct ViewArgs {
-  std::string scene_path, method = "staa", split, screenshot, save_scene;
+  std::string scene_path, method = "staa", split, screenshot, save_scene, display_on = "auto";
   int frames = 0, width = 0, height = 0, reference_batches = 0;
   double exposure = 0, reference_difference = 0;
   bool no_glare = false, show_controls = false;
@@ -103,6 +103,7 @@ void run_view(ViewArgs& a) {
   o.show_controls = a.show_controls;
   o.reference_batches = a.reference_batches;
   o.reference_difference = a.reference_difference;
+  o.display_on = a.display_on;
   viewer::run_viewer(o);
 }
 
@@ -144,6 +145,11 @@ void add_view_command(CLI::App& app) {
       ->capture_default_str()
       ->check(number_in(-64, 64));
   c->add_flag("--no-glare", a->no_glare, "The display pipeline without glare");
+  c->add_option("--display-on", a->display_on,
+                "Where the display pipeline runs: gpu, cpu, or auto (the GPU unless the "
+                "renderer is Mesa's llvmpipe or softpipe)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
   c->add_option("--sun-elevation", a->sun_elevation,
                 "The light's elevation above the horizon, degrees (default: the scene's)")
       ->check(number_in(-90, 90));

@@ -18,6 +18,7 @@
 #include "gl_engine/gl_engine.h"
 #include "image/image_io.h"
 #include "methods/method.h"
+#include "viewer/gpu_display.h"
 #include "viewer/texture_view.h"
 #include "viewer/view_camera.h"
 #include "viewer/view_image.h"
@@ -80,6 +81,13 @@ class Viewer {
     }
     view_ = std::make_unique<TextureView>();
     shown_ = gl::Texture::image_2d(scene_.width, scene_.height);
+    const std::string& renderer = window_.info().gl_renderer;
+    const bool software = renderer.find("llvmpipe") != std::string::npos ||
+                          renderer.find("softpipe") != std::string::npos;
+    if (o.display_on == "gpu" || (o.display_on == "auto" && !software)) {
+      gpu_display_ = std::make_unique<GpuDisplay>();
+      display_on_gpu_ = true;
+    }
     display_.exposure = o.exposure;
     display_.glare = o.glare;
     divider_ = scene_.width / 2;
@@ -226,10 +234,17 @@ class Viewer {
     redisplay();
   }
 
+  // `img` through the display pipeline, on the GPU or the CPU.
+  Picture show(const Image& img, const DisplaySettings& d) {
+    if (!display_on_gpu_) return display_picture(img, d);
+    if (!gpu_display_) gpu_display_ = std::make_unique<GpuDisplay>();
+    return gpu_display_->picture(img, d);
+  }
+
   // The display pipeline and the split again, on the images already rendered.
   void redisplay() {
     for (int k = 0; k < (split_ ? 2 : 1); ++k)
-      sides_[k].picture = display_picture(sides_[k].linear, display_);
+      sides_[k].picture = show(sides_[k].linear, display_);
     recompose();
   }
   void recompose() {
@@ -237,10 +252,9 @@ class Viewer {
       if (ref_difference_) {
         DisplaySettings d = display_;
         d.glare = false;
-        shown_picture_ =
-            display_picture(difference_image(ref_->mean(), sides_[0].linear, diff_scale_), d);
+        shown_picture_ = show(difference_image(ref_->mean(), sides_[0].linear, diff_scale_), d);
       } else {
-        shown_picture_ = display_picture(ref_->mean(), display_);
+        shown_picture_ = show(ref_->mean(), display_);
       }
     } else {
       shown_picture_ = split_ ? split_picture(sides_[0].picture, sides_[1].picture, divider_)
@@ -522,6 +536,7 @@ class Viewer {
     }
     ImGui::SameLine();
     if (ImGui::Checkbox("glare", &display_.glare)) redisplay();
+    if (ImGui::Checkbox("display on the GPU", &display_on_gpu_)) redisplay();
     ImGui::Checkbox("zoom lens (Z)", &lens_);
     ImGui::SameLine();
     ImGui::SliderInt("zoom", &zoom_, 2, 16);
@@ -609,6 +624,8 @@ class Viewer {
   bool orbiting_ = false, looking_ = false, reference_ = false, ref_difference_ = false;
   float diff_scale_ = 10;
   std::unique_ptr<ReferenceView> ref_;
+  std::unique_ptr<GpuDisplay> gpu_display_;
+  bool display_on_gpu_ = false;
   vec3 orbit_target_{0};
   int divider_ = 0, zoom_ = 4;
   double position_ = 0, wall_ms_ = 0;

@@ -42,6 +42,10 @@ struct ViewerOptions {
   // its absolute difference to the method, times that scale.
   int reference_batches = 0;
   double reference_difference = 0;
+  // Where the display pipeline runs: "gpu" (viewer/gpu_display.h), "cpu"
+  // (image/tonemap.h), "auto": the GPU unless the renderer is Mesa's llvmpipe or softpipe
+  // (a CPU, where the CPU path is faster).
+  std::string display_on = "auto";
 };
 
 // The GL engine's methods, in the catalogue's order.

@@ -71,6 +71,26 @@ run render-colour "$bin" render "$src/scenes/sunset.json" -m staa-temporal --eng
 expect_close "view = render (staa-temporal, colour, frame 1)" 2 "$work/view_sunset.png" \
   "$work/render_sunset.png"
 
+# The same with the display pipeline on the GPU (viewer/gpu_display.h; "auto" keeps it on
+# the CPU on llvmpipe): glare on the colour scene (it changes the picture), and without.
+run view-gpu-point "$bin" view "$scene" -m point --frames 3 "${size[@]}" --display-on gpu \
+  --screenshot "$work/view_gpu_point.png"
+expect_close "GPU display = render (point, frame 2)" 2 "$work/view_gpu_point.png" \
+  "$work/render_point.png"
+run view-gpu-colour "$bin" view "$src/scenes/sunset.json" -m staa-temporal --frames 2 "${size[@]}" \
+  --display-on gpu --screenshot "$work/view_gpu_sunset.png"
+expect_close "GPU display = render (staa-temporal, colour, glare)" 2 "$work/view_gpu_sunset.png" \
+  "$work/render_sunset.png"
+run view-gpu-noglare "$bin" view "$src/scenes/sunset.json" -m staa-temporal --frames 2 \
+  "${size[@]}" --display-on gpu --no-glare --exposure 1.5 --screenshot "$work/view_gpu_ng.png"
+run render-noglare "$bin" render "$src/scenes/sunset.json" -m staa-temporal --engine gl --frame 1 \
+  "${size[@]}" --display --no-glare --exposure 1.5 -q -o "$work/render_sunset_ng.png"
+expect_close "GPU display = render (no glare, exposure 1.5)" 2 "$work/view_gpu_ng.png" \
+  "$work/render_sunset_ng.png"
+run render-noglare0 "$bin" render "$src/scenes/sunset.json" -m staa-temporal --engine gl --frame 1 \
+  "${size[@]}" --display --no-glare -q -o "$work/render_sunset_ng0.png"
+expect_apart "the glare changes the picture" "$work/render_sunset.png" "$work/render_sunset_ng0.png"
+
 run view-controls "$bin" view "$scene" -m point --frames 3 "${size[@]}" --show-controls \
   --screenshot "$work/view_controls.png"
 expect_apart "--show-controls draws the controls" "$work/view_controls.png" "$work/view_point.png" \
