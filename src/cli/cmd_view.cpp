@@ -15,6 +15,7 @@
 #include "gl_engine/gl_engine.h"
 #include "image/image_io.h"
 #include "scene/scene.h"
+#include "viewer/view_camera.h"
 #include "viewer/viewer.h"
 
 namespace sg {
@@ -28,6 +29,7 @@ struct ViewArgs {
   // Edits of the scene (NaN: as the scene has it).
   double sun_elevation = std::nan(""), sun_azimuth = std::nan(""), sun_radius = std::nan("");
   double amplitude_scale = 1;
+  double orbit_yaw = 0, orbit_pitch = 0;  // degrees: the view's camera orbited at the start
   MethodFlags flags;
 };
 
@@ -73,6 +75,17 @@ void run_view(ViewArgs& a) {
     if (!std::isnan(a.sun_azimuth)) e.sun_azimuth_deg = a.sun_azimuth;
     if (!std::isnan(a.sun_radius)) e.sun_radius_deg = a.sun_radius;
     e.amplitude_scale = a.amplitude_scale;
+    if (a.orbit_yaw != 0 || a.orbit_pitch != 0) {
+      constexpr double kDeg = 3.14159265358979323846 / 180;
+      const CameraDesc c = viewer::orbit(e.camera, viewer::orbit_target(e.camera),
+                                         a.orbit_yaw * kDeg, a.orbit_pitch * kDeg);
+      if (c.position == e.camera.position) {
+        throw Error(
+            "--orbit-yaw, --orbit-pitch: the orbit would take the camera under 1 cm above the "
+            "water or its view within 5 degrees of the vertical");
+      }
+      e.camera = c;
+    }
     try {
       viewer::edited_scene(scene, e);
     } catch (const Error& err) {
@@ -159,6 +172,13 @@ void add_view_command(CLI::App& app) {
   c->add_option("--sun-radius", a->sun_radius,
                 "The light's angular radius, degrees (default: the scene's)")
       ->check(number_in(0, 89));
+  c->add_option("--orbit-yaw", a->orbit_yaw,
+                "Start with the camera orbited this many degrees about the vertical through the "
+                "point its view meets the water (as a left drag does)")
+      ->check(number_in(-3600, 3600));
+  c->add_option("--orbit-pitch", a->orbit_pitch,
+                "... and raised by this many degrees about that point (negative: lowered)")
+      ->check(number_in(-90, 90));
   c->add_option("--amplitude-scale", a->amplitude_scale, "A scale on every wave's amplitude")
       ->capture_default_str()
       ->check(number_in(0, 100));

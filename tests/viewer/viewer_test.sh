@@ -116,6 +116,24 @@ run render-unedited "$bin" render "$scene" -m point --engine gl "${size[@]}" --d
   -o "$work/render_point0.png"
 expect_apart "the edits change the picture" "$work/view_edited.png" "$work/render_point0.png"
 
+# A camera moved (an orbit, as a left drag does) is the camera of both sides of a split
+# and the one the saved scene holds.
+run view-orbit "$bin" view "$scene" -m point --split supersample --samples 3x3x1 --frames 1 \
+  "${size[@]}" --orbit-yaw -30 --orbit-pitch 5 --screenshot "$work/view_orbit.png" \
+  --save-scene "$work/orbit.json"
+run render-orbit-point "$bin" render "$work/orbit.json" -m point --engine gl --display -q \
+  -o "$work/render_orbit_point.png"
+run render-orbit-ss "$bin" render "$work/orbit.json" -m supersample --samples 3x3x1 --engine gl \
+  --display -q -o "$work/render_orbit_ss.png"
+expect_close "orbited split: left half = the saved scene's point" 2 "$work/view_orbit.png" \
+  "$work/render_orbit_point.png" 0 160
+expect_close "orbited split: right half = the saved scene's supersample" 2 "$work/view_orbit.png" \
+  "$work/render_orbit_ss.png" 160 320
+expect_apart "the orbit moves the camera (left half)" "$work/render_orbit_point.png" \
+  "$work/render_point0.png" 0 160
+expect_apart "the orbit moves the camera (right half)" "$work/render_orbit_point.png" \
+  "$work/render_point0.png" 160 320
+
 # 4. The still-frame reference (160x90): one batch is `render --method reference` of the
 # frame; more batches average more seeds (closer to a reference of as many samples); its
 # difference to the method is black where the method is that same batch, not otherwise.
@@ -165,6 +183,8 @@ expect_refused "screenshot not png" "--screenshot: must be a .png" "$work/refuse
   "$bin" view "$scene" --frames 1 --screenshot "$work/refused.exr"
 expect_refused "edit out of range" "--sun-radius" "$shot" \
   "$bin" view "$scene" --frames 1 --sun-radius 0 --screenshot "$shot"
+expect_refused "orbit under the water" "--orbit-yaw, --orbit-pitch: the orbit would take" "$shot" \
+  "$bin" view "$scene" --frames 1 --orbit-pitch -60 --screenshot "$shot"
 expect_refused "frames past the animation" "--frames" "$shot" \
   "$bin" view "$scene" --frames 61 --screenshot "$shot"
 
