@@ -15,19 +15,21 @@
 #include "gl_engine/gl_engine.h"
 #include "image/image_io.h"
 #include "scene/scene.h"
+#include "viewer/view_camera.h"
 #include "viewer/viewer.h"
 
 namespace sg {
 namespace {
 
 struct ViewArgs {
-  std::string scene_path, method = "staa", split, screenshot, save_scene;
-  int frames = 0, width = 0, height = 0;
-  double exposure = 0;
+  std::string scene_path, method = "staa", split, screenshot, save_scene, display_on = "auto";
+  int frames = 0, width = 0, height = 0, reference_batches = 0;
+  double exposure = 0, reference_difference = 0;
   bool no_glare = false, show_controls = false;
   // Edits of the scene (NaN: as the scene has it).
   double sun_elevation = std::nan(""), sun_azimuth = std::nan(""), sun_radius = std::nan("");
   double amplitude_scale = 1;
+  double orbit_yaw = 0, orbit_pitch = 0;  // degrees: the view's camera orbited at the start
   MethodFlags flags;
 };
 
@@ -45,8 +47,21 @@ void run_view(ViewArgs& a) {
         throw Error("--split: " + std::string(e.what()));
       }
     }
-    if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls))
-      throw Error("--screenshot, --save-scene, --show-controls: need --frames N (a scripted run)");
+    if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls ||
+                          a.reference_batches > 0 || a.reference_difference > 0)) {
+      throw Error(
+          "--screenshot, --save-scene, --show-controls, --reference-batches, "
+          "--reference-difference: need --frames N (a scripted run)");
+    }
+    if (a.reference_difference > 0 && a.reference_batches == 0)
+      throw Error("--reference-difference: needs --reference-batches N");
+    if (a.reference_batches > 0) {
+      try {
+        gl_engine::gl_variant("reference", a.flags.options);
+      } catch (const Error& e) {
+        throw Error("--reference-batches: " + std::string(e.what()));
+      }
+    }
     if (!a.screenshot.empty() && image_format_of(a.screenshot) != ImageFormat::png)
       throw Error("--screenshot: must be a .png file (got '" + a.screenshot + "')");
   });
@@ -60,6 +75,17 @@ void run_view(ViewArgs& a) {
     if (!std::isnan(a.sun_azimuth)) e.sun_azimuth_deg = a.sun_azimuth;
     if (!std::isnan(a.sun_radius)) e.sun_radius_deg = a.sun_radius;
     e.amplitude_scale = a.amplitude_scale;
+    if (a.orbit_yaw != 0 || a.orbit_pitch != 0) {
+      constexpr double kDeg = 3.14159265358979323846 / 180;
+      const CameraDesc c = viewer::orbit(e.camera, viewer::orbit_target(e.camera),
+                                         a.orbit_yaw * kDeg, a.orbit_pitch * kDeg);
+      if (c.position == e.camera.position) {
+        throw Error(
+            "--orbit-yaw, --orbit-pitch: the orbit would take the camera under 1 cm above the "
+            "water or its view within 5 degrees of the vertical");
+      }
+      e.camera = c;
+    }
     try {
       viewer::edited_scene(scene, e);
     } catch (const Error& err) {
@@ -88,6 +114,9 @@ void run_view(ViewArgs& a) {
   o.screenshot = a.screenshot;
   o.save_scene = a.save_scene;
   o.show_controls = a.show_controls;
+  o.reference_batches = a.reference_batches;
+  o.reference_difference = a.reference_difference;
+  o.display_on = a.display_on;
   viewer::run_viewer(o);
 }
 
@@ -113,6 +142,13 @@ void add_view_command(CLI::App& app) {
   c->add_option("--save-scene", a->save_scene, "Scripted run: the view's scene file (.json)");
   c->add_flag("--show-controls", a->show_controls,
               "Scripted run: draw the controls (and the split's divider) in the screenshot too");
+  c->add_option("--reference-batches", a->reference_batches,
+                "Scripted run: show the still-frame reference of the last frame after N batches "
+                "(seeds --seed, --seed + 1, ...) instead of the method")
+      ->check(integer_in(1, 65536));
+  c->add_option("--reference-difference", a->reference_difference,
+                "Scripted run: show |reference - method| times this scale instead")
+      ->check(number_in(0.001, 1e6));
   c->add_option("--width", a->width,
                 "Override the image (and window) width (height follows the aspect ratio unless "
                 "given)")
@@ -122,6 +158,11 @@ void add_view_command(CLI::App& app) {
       ->capture_default_str()
       ->check(number_in(-64, 64));
   c->add_flag("--no-glare", a->no_glare, "The display pipeline without glare");
+  c->add_option("--display-on", a->display_on,
+                "Where the display pipeline runs: gpu, cpu, or auto (the GPU unless the "
+                "renderer is Mesa's llvmpipe or softpipe)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
   c->add_option("--sun-elevation", a->sun_elevation,
                 "The light's elevation above the horizon, degrees (default: the scene's)")
       ->check(number_in(-90, 90));
@@ -131,6 +172,13 @@ void add_view_command(CLI::App& app) {
   c->add_option("--sun-radius", a->sun_radius,
                 "The light's angular radius, degrees (default: the scene's)")
       ->check(number_in(0, 89));
+  c->add_option("--orbit-yaw", a->orbit_yaw,
+                "Start with the camera orbited this many degrees about the vertical through the "
+                "point its view meets the water (as a left drag does)")
+      ->check(number_in(-3600, 3600));
+  c->add_option("--orbit-pitch", a->orbit_pitch,
+                "... and raised by this many degrees about that point (negative: lowered)")
+      ->check(number_in(-90, 90));
   c->add_option("--amplitude-scale", a->amplitude_scale, "A scale on every wave's amplitude")
       ->capture_default_str()
       ->check(number_in(0, 100));

@@ -17,6 +17,7 @@ ViewEdits edits_of(const Scene& scene) {
   e.sun_azimuth_deg = (d.x == 0 && d.z == 0) ? 0.0 : std::atan2(d.x, -d.z) / kDeg;
   e.sun_radius_deg = scene.light.angular_radius_deg;
   e.amplitude_scale = 1;
+  e.camera = scene.camera;
   return e;
 }
 
@@ -30,6 +31,7 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
         vec3(std::cos(el) * std::sin(az), std::sin(el), -std::cos(el) * std::cos(az));
   }
   s.light.angular_radius_deg = e.sun_radius_deg;
+  s.camera = e.camera;
   if (e.amplitude_scale != 1) {
     for (Wave& w : s.surface.waves)
       w.amplitude *= e.amplitude_scale;

@@ -1,5 +1,6 @@
-// What the viewer changes in a scene while it runs: the light's elevation, azimuth and
-// angular radius, and one scale on every wave's amplitude; and the animation time of a
+// What the viewer changes in a scene while it runs: the camera (moved by
+// viewer/view_camera.h), the light's elevation, azimuth and angular radius, and one scale
+// on every wave's amplitude; and the animation time of a
 // fractional frame position (slow motion and scrubbing land between frames). The edited
 // scene is an ordinary Scene, so saving the view writes it as a scene file that `render`
 // reproduces, and an unedited view is the scene itself, bit for bit.
@@ -18,9 +19,10 @@ struct ViewEdits {
   double sun_azimuth_deg = 0;
   double sun_radius_deg = 0.27;
   double amplitude_scale = 1;
+  CameraDesc camera;  // the view's camera; edits_of: the scene's, exactly
 };
 
-// The edits that leave `scene` as it is (its light's angles, radius, scale 1).
+// The edits that leave `scene` as it is (its camera, its light's angles, radius, scale 1).
 ViewEdits edits_of(const Scene& scene);
 
 // `base` with the edits applied. The light direction is replaced only when the elevation

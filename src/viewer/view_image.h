@@ -2,8 +2,9 @@
 // radiance weights read back and the scene's radiances applied as the CPU engine's tiles
 // apply them (store_pixel), so a view's linear image is `render --engine gl`'s; then the
 // display pipeline of `render --display` (exposure, glare, filmic curve, sRGB;
-// image/tonemap.h), run on the CPU on that read-back image, so the displayed bytes are
-// the same function of the same values; then the split: columns left of the divider
+// image/tonemap.h), run here on the CPU on that read-back image (viewer/gpu_display.h runs
+// it on the GPU), so the displayed bytes are the same function of the same values; then
+// the split: columns left of the divider
 // from the first method, the rest from the second.
 #pragma once
 

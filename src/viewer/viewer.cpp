@@ -18,8 +18,11 @@
 #include "gl_engine/gl_engine.h"
 #include "image/image_io.h"
 #include "methods/method.h"
+#include "viewer/gpu_display.h"
 #include "viewer/texture_view.h"
+#include "viewer/view_camera.h"
 #include "viewer/view_image.h"
+#include "viewer/view_reference.h"
 #include "viewer/window.h"
 
 namespace sg::viewer {
@@ -78,6 +81,13 @@ class Viewer {
     }
     view_ = std::make_unique<TextureView>();
     shown_ = gl::Texture::image_2d(scene_.width, scene_.height);
+    const std::string& renderer = window_.info().gl_renderer;
+    const bool software = renderer.find("llvmpipe") != std::string::npos ||
+                          renderer.find("softpipe") != std::string::npos;
+    if (o.display_on == "gpu" || (o.display_on == "auto" && !software)) {
+      gpu_display_ = std::make_unique<GpuDisplay>();
+      display_on_gpu_ = true;
+    }
     display_.exposure = o.exposure;
     display_.glare = o.glare;
     divider_ = scene_.width / 2;
@@ -96,6 +106,15 @@ class Viewer {
     for (int f = 0; f < o_.frames; ++f) {
       window_.begin_frame();
       render(f);
+      if (f == o_.frames - 1 && o_.reference_batches > 0) {
+        playing_ = false;
+        reference_ = true;
+        ref_difference_ = o_.reference_difference > 0;
+        if (ref_difference_) diff_scale_ = static_cast<float>(o_.reference_difference);
+        for (int b = 0; b < o_.reference_batches; ++b)
+          reference_batch(f);
+        if (!status_.empty()) throw Error("view: " + status_);
+      }
       view_->draw(shown_, 0, 0, scene_.width, scene_.height);
       if (o_.show_controls) {
         bool dirty = false;
@@ -116,6 +135,10 @@ class Viewer {
     }
     if (!o_.save_scene.empty()) write_file_atomic(o_.save_scene, scene_to_json(scene_) + "\n");
     std::string gpu = sides_[0].method + " " + fmt_ms(sides_[0].sum_gpu_ms / o_.frames);
+    if (ref_ && ref_->batches() > 0) {
+      gpu += ", reference " + std::to_string(ref_->batches()) + " batches (" +
+             std::to_string(ref_->busy_samples()) + " samples per busy pixel)";
+    }
     if (split_) gpu += ", " + sides_[1].method + " " + fmt_ms(sides_[1].sum_gpu_ms / o_.frames);
     std::string written = o_.screenshot;
     if (!o_.save_scene.empty()) written += (written.empty() ? "" : " and ") + o_.save_scene;
@@ -136,6 +159,7 @@ class Viewer {
       const double dt = std::chrono::duration<double>(now - last).count();
       last = now;
       keys(dirty);
+      camera_input(dt, dirty);
       if (playing_) {
         position_ += speed_ * scene_.animation.fps * dt;
         wrap_position();
@@ -144,6 +168,8 @@ class Viewer {
       if (dirty) {
         render(position_);
         dirty = false;
+      } else if (reference_ && !playing_ && (!ref_ || ref_->batches() < kMaxReferenceBatches)) {
+        reference_batch(position_);
       } else {
         // Paused and unchanged: the image stands; the loop only serves the controls.
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -163,6 +189,21 @@ class Viewer {
     std::snprintf(b, sizeof b, "%.2f ms", ms);
     return b;
   }
+
+  static constexpr int kMaxReferenceBatches = 1 << 16;
+
+  // One more batch of the still-frame reference at `position`, shown.
+  void reference_batch(double position) {
+    try {
+      if (!ref_) ref_ = std::make_unique<ReferenceView>(o_.options);
+      ref_->add_batch(FrameContext{*model_, view_time(scene_, position), 0});
+    } catch (const Error& e) {
+      status_ = std::string("reference: ") + e.what();
+      reference_ = false;
+    }
+    redisplay();
+  }
+  bool showing_reference() const { return reference_ && !playing_ && ref_ && ref_->batches() > 0; }
 
   void build(Side& s) {
     s.engine = std::make_unique<gl_engine::GlEngine>(s.method, s.options);
@@ -189,34 +230,52 @@ class Viewer {
       s.sum_gpu_ms += ms;
       ++s.frames;
     }
+    if (ref_) ref_->restart();  // a new frame, camera, edit or method
     redisplay();
+  }
+
+  // `img` through the display pipeline, on the GPU or the CPU.
+  Picture show(const Image& img, const DisplaySettings& d) {
+    if (!display_on_gpu_) return display_picture(img, d);
+    if (!gpu_display_) gpu_display_ = std::make_unique<GpuDisplay>();
+    return gpu_display_->picture(img, d);
   }
 
   // The display pipeline and the split again, on the images already rendered.
   void redisplay() {
     for (int k = 0; k < (split_ ? 2 : 1); ++k)
-      sides_[k].picture = display_picture(sides_[k].linear, display_);
+      sides_[k].picture = show(sides_[k].linear, display_);
     recompose();
   }
   void recompose() {
-    shown_picture_ =
-        split_ ? split_picture(sides_[0].picture, sides_[1].picture, divider_) : sides_[0].picture;
+    if (showing_reference()) {
+      if (ref_difference_) {
+        DisplaySettings d = display_;
+        d.glare = false;
+        shown_picture_ = show(difference_image(ref_->mean(), sides_[0].linear, diff_scale_), d);
+      } else {
+        shown_picture_ = show(ref_->mean(), display_);
+      }
+    } else {
+      shown_picture_ = split_ ? split_picture(sides_[0].picture, sides_[1].picture, divider_)
+                              : sides_[0].picture;
+    }
     shown_.upload(picture_texels(shown_picture_));
   }
 
   void keys(bool& dirty) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureKeyboard) return;
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) ||
-        ImGui::IsKeyPressed('Q', false)) {
-      window_.request_close();
-    }
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) window_.request_close();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) playing_ = !playing_;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) step(1, dirty);
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) step(-1, dirty);
     if (ImGui::IsKeyPressed('Z', false)) lens_ = !lens_;
-    if (ImGui::IsKeyPressed('H', false)) show_controls_ = !show_controls_;
-    if (ImGui::IsKeyPressed('S', false)) {
+    if (ImGui::IsKeyPressed('R', false)) set_reference(!reference_);
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab), false))
+      show_controls_ = !show_controls_;
+    if (ImGui::IsKeyPressed('H', false)) home(dirty);
+    if (ImGui::IsKeyPressed('V', false)) {
       split_ = !split_;
       set_split(dirty);
     }
@@ -224,6 +283,59 @@ class Viewer {
       speed_ = std::min(4.0f, speed_ * 2);
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_DownArrow)))
       speed_ = std::max(1.0f / 32, speed_ / 2);
+  }
+
+  // The camera's moves (viewer/view_camera.h) from the mouse and keys: left drag orbits
+  // about the point the view meets the water (fixed when the drag starts), right drag
+  // looks around, the wheel dollies towards that point, W A S D Q E fly.
+  void camera_input(double dt, bool& dirty) {
+    const ImGuiIO& io = ImGui::GetIO();
+    CameraDesc c = edits_.camera;
+    const bool near_divider = split_ && std::abs(io.MousePos.x - divider_) < 6;
+    if (!io.WantCaptureMouse && !dragging_ && !near_divider) {
+      if (ImGui::IsMouseClicked(0)) {
+        orbiting_ = true;
+        orbit_target_ = orbit_target(c);
+      }
+      if (ImGui::IsMouseClicked(1)) looking_ = true;
+      if (io.MouseWheel != 0) c = dolly(c, orbit_target(c), std::pow(0.85, double(io.MouseWheel)));
+    }
+    if (!io.MouseDown[0]) orbiting_ = false;
+    if (!io.MouseDown[1]) looking_ = false;
+    const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
+    if (orbiting_ && (dx != 0 || dy != 0)) c = orbit(c, orbit_target_, -0.005 * dx, 0.005 * dy);
+    if (looking_ && (dx != 0 || dy != 0)) {
+      const double per_pixel = c.vfov_deg * 3.14159265358979323846 / 180 / scene_.height;
+      c = look(c, -per_pixel * dx, -per_pixel * dy);
+    }
+    if (!io.WantCaptureKeyboard) {
+      auto key = [](int k) { return ImGui::IsKeyDown(k) ? 1.0 : 0.0; };
+      const double right = key('D') - key('A'), up = key('E') - key('Q');
+      const double forward = key('W') - key('S');
+      if (right != 0 || up != 0 || forward != 0) {
+        // Metres per second: twice the camera's height (at least 2), five times with Shift.
+        const double v = 2 * std::max(1.0, c.position.y) * (io.KeyShift ? 5 : 1) * dt;
+        c = fly(c, v * right, v * up, v * forward);
+      }
+    }
+    if (c.position != edits_.camera.position || c.look_at != edits_.camera.look_at) {
+      ViewEdits e = edits_;
+      e.camera = c;
+      set_edits(e, dirty);
+    }
+  }
+
+  void set_reference(bool on) {
+    reference_ = on;
+    if (on) playing_ = false;
+    recompose();
+  }
+
+  // The scene's camera again.
+  void home(bool& dirty) {
+    ViewEdits e = edits_;
+    e.camera = base_.camera;
+    set_edits(e, dirty);
   }
 
   void step(int by, bool& dirty) {
@@ -256,7 +368,8 @@ class Viewer {
     const ImGuiIO& io = ImGui::GetIO();
     if (split_) {
       const bool near = std::abs(io.MousePos.x - divider_) < 6;
-      if (!io.WantCaptureMouse && io.MouseDown[0] && (dragging_ || near)) dragging_ = true;
+      if (!io.WantCaptureMouse && !orbiting_ && io.MouseDown[0] && (dragging_ || near))
+        dragging_ = true;
       if (!io.MouseDown[0]) dragging_ = false;
       if (dragging_) {
         const int d = std::clamp(static_cast<int>(std::lround(io.MousePos.x)), 0, scene_.width);
@@ -278,7 +391,7 @@ class Viewer {
   // A magnified crop of the displayed image under the cursor, nearest texels.
   void lens() {
     const ImGuiIO& io = ImGui::GetIO();
-    if (!lens_ || io.WantCaptureMouse || dragging_) return;
+    if (!lens_ || io.WantCaptureMouse || dragging_ || orbiting_ || looking_) return;
     const float mx = io.MousePos.x, my = io.MousePos.y;
     if (mx < 0 || my < 0 || mx >= scene_.width || my >= scene_.height) return;
     const float side = 192, half = side / 2 / float(zoom_);
@@ -387,7 +500,7 @@ class Viewer {
     ImGui::SetNextWindowSize(ImVec2(300, std::min(560.0f, float(scene_.height) - 12)),
                              ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.75f);
-    ImGui::Begin("sunglint view (H hides)", nullptr);
+    ImGui::Begin("sunglint view (Tab hides)", nullptr);
     ImGui::PushItemWidth(150);
     ImGui::Text("%s, %d x %d, %d frames at %.0f fps", scene_.name.c_str(), scene_.width,
                 scene_.height, scene_.animation.frames, scene_.animation.fps);
@@ -423,9 +536,28 @@ class Viewer {
     }
     ImGui::SameLine();
     if (ImGui::Checkbox("glare", &display_.glare)) redisplay();
+    if (ImGui::Checkbox("display on the GPU", &display_on_gpu_)) redisplay();
     ImGui::Checkbox("zoom lens (Z)", &lens_);
     ImGui::SameLine();
     ImGui::SliderInt("zoom", &zoom_, 2, 16);
+    // The still-frame reference.
+    bool ref = reference_;
+    if (ImGui::Checkbox("reference (R)", &ref)) set_reference(ref);
+    if (reference_) {
+      ImGui::SameLine();
+      if (ImGui::Checkbox("difference", &ref_difference_)) recompose();
+      if (ref_difference_ && ImGui::SliderFloat("x scale", &diff_scale_, 1, 1000, "%.1f",
+                                                ImGuiSliderFlags_Logarithmic)) {
+        recompose();
+      }
+      if (ref_ && ref_->batches() > 0) {
+        ImGui::TextWrapped("%d batches: %ld samples per pixel (quiet pixels %ld), %.1f ms a batch",
+                           ref_->batches(), ref_->busy_samples(), ref_->quiet_samples(),
+                           ref_->last_gpu_ms());
+      } else {
+        ImGui::TextUnformatted("(shown while paused)");
+      }
+    }
     // The scene.
     ImGui::Separator();
     ViewEdits e = edits_;
@@ -451,6 +583,11 @@ class Viewer {
     }
     if (edited) set_edits(e, dirty);
     if (ImGui::Button("scene as loaded")) set_edits(edits_of(base_), dirty);
+    ImGui::SameLine();
+    if (ImGui::Button("Home (H)")) home(dirty);
+    const CameraDesc& cam = edits_.camera;
+    ImGui::TextWrapped("camera (%.2f, %.2f, %.2f) looks at (%.1f, %.1f, %.1f)", cam.position.x,
+                       cam.position.y, cam.position.z, cam.look_at.x, cam.look_at.y, cam.look_at.z);
     // Saving.
     ImGui::Separator();
     ImGui::InputText("file", path_, sizeof path_);
@@ -484,6 +621,12 @@ class Viewer {
   DisplaySettings display_;
   Side sides_[2];
   bool split_ = false, playing_ = true, lens_ = false, dragging_ = false, show_controls_ = true;
+  bool orbiting_ = false, looking_ = false, reference_ = false, ref_difference_ = false;
+  float diff_scale_ = 10;
+  std::unique_ptr<ReferenceView> ref_;
+  std::unique_ptr<GpuDisplay> gpu_display_;
+  bool display_on_gpu_ = false;
+  vec3 orbit_target_{0};
   int divider_ = 0, zoom_ = 4;
   double position_ = 0, wall_ms_ = 0;
   float speed_ = 1;

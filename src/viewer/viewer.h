@@ -4,8 +4,10 @@
 // play, pause, step and scrub, playback speed, the method and a few of its options, a
 // split view of two methods with a movable divider, a zoom lens under the cursor, the
 // light's elevation, azimuth and radius, a wave-amplitude scale, the exposure and glare,
-// saving the view as a scene file, EXR or PNG, and the GPU time of each frame (timer
-// queries). docs/viewer.md lists the keys.
+// saving the view as a scene file, EXR or PNG, the GPU time of each frame (timer
+// queries), a fly/orbit camera with the scene's camera as home (viewer/view_camera.h), and,
+// while paused, a progressive reference of the still frame (viewer/view_reference.h).
+// docs/viewer.md lists the keys.
 //
 // A scripted run (`frames` > 0) needs no input: it renders frames 0 .. frames-1 of the
 // animation in the window (without the controls unless `show_controls`), then writes the last
@@ -35,6 +37,15 @@ struct ViewerOptions {
   std::string screenshot;      // scripted: the last frame's displayed image (.png)
   std::string save_scene;      // scripted: the view's scene (.json)
   bool show_controls = false;  // scripted: the controls drawn too (pictures of the viewer)
+  // Scripted: > 0 shows the still-frame reference (viewer/view_reference.h) of the last
+  // frame after this many batches instead of the method; with reference_difference > 0,
+  // its absolute difference to the method, times that scale.
+  int reference_batches = 0;
+  double reference_difference = 0;
+  // Where the display pipeline runs: "gpu" (viewer/gpu_display.h), "cpu"
+  // (image/tonemap.h), "auto": the GPU unless the renderer is Mesa's llvmpipe or softpipe
+  // (a CPU, where the CPU path is faster).
+  std::string display_on = "auto";
 };
 
 // The GL engine's methods, in the catalogue's order.

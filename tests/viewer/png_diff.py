@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The largest difference of two 8-bit PNG pictures, over all channels, in 1/255 steps.
 
-Usage: png_diff.py A.png B.png [X0 X1]   (columns [X0, X1) only)
+Usage: png_diff.py [--sum] A.png B.png [X0 X1]   (columns [X0, X1) only)
+With --sum, prints the sum of the absolute differences over all channels instead.
+png_diff.py --peak A.png prints A's largest channel value (0: a black picture).
 A grey picture counts as three equal channels, so a grey `render --display` compares
 with the viewer's RGB screenshot. Prints the maximum; exits 2 when the sizes differ.
 Standard library only (zlib); handles the non-interlaced 8-bit grey, RGB and RGBA that
@@ -65,17 +67,26 @@ def read_png(path):
 
 
 def main():
-    wa, ha, a = read_png(sys.argv[1])
-    wb, hb, b = read_png(sys.argv[2])
+    args = sys.argv[1:]
+    if args[:1] == ["--peak"]:
+        print(max(max(row) for row in read_png(args[1])[2]))
+        return
+    total = args[:1] == ["--sum"]
+    if total:
+        args = args[1:]
+    wa, ha, a = read_png(args[0])
+    wb, hb, b = read_png(args[1])
     if (wa, ha) != (wb, hb):
         print(f"sizes differ: {wa}x{ha} and {wb}x{hb}")
         sys.exit(2)
-    x0, x1 = (int(sys.argv[3]), int(sys.argv[4])) if len(sys.argv) > 4 else (0, wa)
-    worst = 0
+    x0, x1 = (int(args[2]), int(args[3])) if len(args) > 3 else (0, wa)
+    worst = summed = 0
     for ra, rb in zip(a, b):
         for i in range(3 * x0, 3 * x1):
-            worst = max(worst, abs(ra[i] - rb[i]))
-    print(worst)
+            d = abs(ra[i] - rb[i])
+            worst = max(worst, d)
+            summed += d
+    print(summed if total else worst)
 
 
 main()

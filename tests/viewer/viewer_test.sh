@@ -3,7 +3,8 @@
 # `render --engine gl --display` of the same frame and method (max channel difference at
 # most 2/255); a split view's halves equal each method's render; a view saved as a scene
 # file renders as the view showed it; without a display, with a display that does not
-# open, below OpenGL 4.5 and with a bad scene: a clear error, a non-zero exit, no file.
+# open, below OpenGL 4.5 and with a bad scene: a clear error, a non-zero exit, no file; the
+# still-frame reference against `render --method reference`.
 # Usage: viewer_test.sh SUNGLINT SOURCE_DIR WORK_DIR
 # Runs itself under `xvfb-run -a` (or on $SUNGLINT_TEST_DISPLAY); exits 77 (skipped) when
 # there is no Xvfb, unless SUNGLINT_REQUIRE_GL=1.
@@ -70,6 +71,26 @@ run render-colour "$bin" render "$src/scenes/sunset.json" -m staa-temporal --eng
 expect_close "view = render (staa-temporal, colour, frame 1)" 2 "$work/view_sunset.png" \
   "$work/render_sunset.png"
 
+# The same with the display pipeline on the GPU (viewer/gpu_display.h; "auto" keeps it on
+# the CPU on llvmpipe): glare on the colour scene (it changes the picture), and without.
+run view-gpu-point "$bin" view "$scene" -m point --frames 3 "${size[@]}" --display-on gpu \
+  --screenshot "$work/view_gpu_point.png"
+expect_close "GPU display = render (point, frame 2)" 2 "$work/view_gpu_point.png" \
+  "$work/render_point.png"
+run view-gpu-colour "$bin" view "$src/scenes/sunset.json" -m staa-temporal --frames 2 "${size[@]}" \
+  --display-on gpu --screenshot "$work/view_gpu_sunset.png"
+expect_close "GPU display = render (staa-temporal, colour, glare)" 2 "$work/view_gpu_sunset.png" \
+  "$work/render_sunset.png"
+run view-gpu-noglare "$bin" view "$src/scenes/sunset.json" -m staa-temporal --frames 2 \
+  "${size[@]}" --display-on gpu --no-glare --exposure 1.5 --screenshot "$work/view_gpu_ng.png"
+run render-noglare "$bin" render "$src/scenes/sunset.json" -m staa-temporal --engine gl --frame 1 \
+  "${size[@]}" --display --no-glare --exposure 1.5 -q -o "$work/render_sunset_ng.png"
+expect_close "GPU display = render (no glare, exposure 1.5)" 2 "$work/view_gpu_ng.png" \
+  "$work/render_sunset_ng.png"
+run render-noglare0 "$bin" render "$src/scenes/sunset.json" -m staa-temporal --engine gl --frame 1 \
+  "${size[@]}" --display --no-glare -q -o "$work/render_sunset_ng0.png"
+expect_apart "the glare changes the picture" "$work/render_sunset.png" "$work/render_sunset_ng0.png"
+
 run view-controls "$bin" view "$scene" -m point --frames 3 "${size[@]}" --show-controls \
   --screenshot "$work/view_controls.png"
 expect_apart "--show-controls draws the controls" "$work/view_controls.png" "$work/view_point.png" \
@@ -95,7 +116,56 @@ run render-unedited "$bin" render "$scene" -m point --engine gl "${size[@]}" --d
   -o "$work/render_point0.png"
 expect_apart "the edits change the picture" "$work/view_edited.png" "$work/render_point0.png"
 
-# 4. Refusals: a clear error, a non-zero exit, no file.
+# A camera moved (an orbit, as a left drag does) is the camera of both sides of a split
+# and the one the saved scene holds.
+run view-orbit "$bin" view "$scene" -m point --split supersample --samples 3x3x1 --frames 1 \
+  "${size[@]}" --orbit-yaw -30 --orbit-pitch 5 --screenshot "$work/view_orbit.png" \
+  --save-scene "$work/orbit.json"
+run render-orbit-point "$bin" render "$work/orbit.json" -m point --engine gl --display -q \
+  -o "$work/render_orbit_point.png"
+run render-orbit-ss "$bin" render "$work/orbit.json" -m supersample --samples 3x3x1 --engine gl \
+  --display -q -o "$work/render_orbit_ss.png"
+expect_close "orbited split: left half = the saved scene's point" 2 "$work/view_orbit.png" \
+  "$work/render_orbit_point.png" 0 160
+expect_close "orbited split: right half = the saved scene's supersample" 2 "$work/view_orbit.png" \
+  "$work/render_orbit_ss.png" 160 320
+expect_apart "the orbit moves the camera (left half)" "$work/render_orbit_point.png" \
+  "$work/render_point0.png" 0 160
+expect_apart "the orbit moves the camera (right half)" "$work/render_orbit_point.png" \
+  "$work/render_point0.png" 160 320
+
+# 4. The still-frame reference (160x90): one batch is `render --method reference` of the
+# frame; more batches average more seeds (closer to a reference of as many samples); its
+# difference to the method is black where the method is that same batch, not otherwise.
+small=(--width 160 --height 90)
+run view-ref1 "$bin" view "$scene" -m point --frames 1 "${small[@]}" --reference-batches 1 \
+  --screenshot "$work/view_ref1.png"
+run render-ref "$bin" render "$scene" -m reference --engine gl --frame 0 "${small[@]}" --display -q \
+  -o "$work/render_ref.png"
+expect_close "reference view, 1 batch = render --method reference" 2 "$work/view_ref1.png" \
+  "$work/render_ref.png"
+run view-ref4 "$bin" view "$scene" -m point --frames 1 "${small[@]}" --reference-batches 4 \
+  --screenshot "$work/view_ref4.png"
+run render-ref16 "$bin" render "$scene" -m reference --samples 16x16x1 --engine gl --frame 0 \
+  "${small[@]}" --display -q -o "$work/render_ref16.png"
+e1=$(python3 "$src/tests/viewer/png_diff.py" --sum "$work/view_ref1.png" "$work/render_ref16.png")
+e4=$(python3 "$src/tests/viewer/png_diff.py" --sum "$work/view_ref4.png" "$work/render_ref16.png")
+if [ "$e4" -lt "$e1" ]; then pass; else
+  fail "reference view: 4 batches ($e4) not closer than 1 ($e1) to 16x16x1 (sums of |differences|)"
+fi
+peak() { python3 "$src/tests/viewer/png_diff.py" --peak "$1"; }
+run view-refdiff1 "$bin" view "$scene" -m reference --frames 1 "${small[@]}" \
+  --reference-batches 1 --reference-difference 100 --screenshot "$work/view_refdiff1.png"
+p=$(peak "$work/view_refdiff1.png")
+[ "$p" -eq 0 ] && pass || fail "reference difference to itself: not black ($p/255)"
+run view-refdiff2 "$bin" view "$scene" -m reference --frames 1 "${small[@]}" \
+  --reference-batches 2 --reference-difference 100 --screenshot "$work/view_refdiff2.png"
+p=$(peak "$work/view_refdiff2.png")
+[ "$p" -gt 8 ] && pass || fail "reference difference, 2 batches: black ($p/255): one seed only?"
+expect_refused "reference batches without frames" "need --frames" "$work/refused.png" \
+  "$bin" view "$scene" --reference-batches 2
+
+# 5. Refusals: a clear error, a non-zero exit, no file.
 shot=$work/refused.png
 expect_refused "no display" "no display: DISPLAY is not set" "$shot" \
   env -u DISPLAY -u WAYLAND_DISPLAY "$bin" view "$scene" -m point --frames 1 "${size[@]}" \
@@ -113,6 +183,8 @@ expect_refused "screenshot not png" "--screenshot: must be a .png" "$work/refuse
   "$bin" view "$scene" --frames 1 --screenshot "$work/refused.exr"
 expect_refused "edit out of range" "--sun-radius" "$shot" \
   "$bin" view "$scene" --frames 1 --sun-radius 0 --screenshot "$shot"
+expect_refused "orbit under the water" "--orbit-yaw, --orbit-pitch: the orbit would take" "$shot" \
+  "$bin" view "$scene" --frames 1 --orbit-pitch -60 --screenshot "$shot"
 expect_refused "frames past the animation" "--frames" "$shot" \
   "$bin" view "$scene" --frames 61 --screenshot "$shot"
 
