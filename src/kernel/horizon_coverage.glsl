@@ -10,7 +10,7 @@
 // visible light is (disk_coverage.glsl).
 
 struct PixelWater {
-  real share;     // the fraction of the pixel square whose rays point down
+  real share;   // the fraction of the pixel square whose rays point down
   vec2 centre;  // the centre of that part (image-plane coordinates)
 };
 

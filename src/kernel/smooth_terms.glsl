@@ -24,8 +24,8 @@
 // Gaussian (kernel/smooth_terms_test.cpp).
 
 // Probabilists' Gauss-Hermite nodes and weights: 5 points, 0, +-sqrt(5 -+ sqrt(10)).
-const real kGh5P = 1.3556261799742659;  // sqrt(5 - sqrt(10))
-const real kGh5Q = 2.8569700138728056;  // sqrt(5 + sqrt(10))
+const real kGh5P = 1.3556261799742659;    // sqrt(5 - sqrt(10))
+const real kGh5Q = 2.8569700138728056;    // sqrt(5 + sqrt(10))
 const real kGh5W0 = 0.53333333333333333;  // 8 / 15
 const real kGh5WP = 0.22207592200561265;
 const real kGh5WQ = 0.011257411327720691;
@@ -88,8 +88,8 @@ SG_FN SmoothTerms smooth_terms(IN(Frame) f, vec2 mu, mat2 cov, vec3 v) {
   vec2 eu = transpose(A) * grad;
   real eu2 = dot(eu, eu);
   eu = eu2 > 0.0 ? eu * inversesqrt(eu2) : vec2(1.0, 0.0);
-  vec2 d = A * eu;                       // ds/du
-  vec2 dw = A * vec2(-eu.y, eu.x);       // ds/dw
+  vec2 d = A * eu;                  // ds/du
+  vec2 dw = A * vec2(-eu.y, eu.x);  // ds/dw
   real a2 = v.y * dot(d, d);
   for (int j = 0; j < 3; ++j) {
     real w = real(j - 1) * kGh3;

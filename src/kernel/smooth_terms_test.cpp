@@ -101,8 +101,8 @@ TEST(SmoothTerms, MatchesBruteForceOverTheNormals) {
     EXPECT_LT(e_f, 4e-5) << c.what;
     EXPECT_LT(e_z, 4e-5) << c.what;
     // Float (what a GPU computes) against double.
-    const kf::SmoothTerms fl = kf::float_smooth_terms(
-        narrow_frame(f), kf::vec2(mu), kf::mat2(A * transpose(A)), kf::vec3(v));
+    const kf::SmoothTerms fl = kf::float_smooth_terms(narrow_frame(f), kf::vec2(mu),
+                                                      kf::mat2(A * transpose(A)), kf::vec3(v));
     EXPECT_NEAR(fl.f_above, got.f_above, 2e-5) << c.what;
     EXPECT_NEAR(fl.f_zenith, got.f_zenith, 2e-5) << c.what;
     EXPECT_NEAR(fl.above, got.above, 2e-5) << c.what;
