@@ -1,7 +1,10 @@
 #include "gl_engine/kernel_program.h"
 
+#include <cstdint>
+#include <cstdio>
 #include <vector>
 
+#include "base/fnv1a.h"
 #include "embedded/kernel_sources.h"
 
 namespace sg::gl_engine {
@@ -54,6 +57,18 @@ gl::Program kernel_program(KernelEntry entry, int segments) {
 std::string kernel_program_text(KernelEntry entry, int segments) {
   const std::vector<gl::ShaderSource> s = sources();
   return gl::assemble_shader(s, header(entry, segments)).text;
+}
+
+std::string kernel_fingerprint() {
+  uint64_t h = kFnv1aBasis;
+  for (const EmbeddedFile& f : kernel_sources()) {
+    h = fnv1a64(f.name, h);
+    h = fnv1a64(std::string_view("\0", 1), h);
+    h = fnv1a64(f.bytes, h);
+  }
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
 }
 
 }  // namespace sg::gl_engine

@@ -20,5 +20,9 @@ gl::Program kernel_program(KernelEntry entry, int segments);
 
 // The assembled text of that program, as handed to the driver (for tests and `--dump`).
 std::string kernel_program_text(KernelEntry entry, int segments);
+// A fingerprint of the shading kernel's sources as built into this binary (both engines
+// compute with them): FNV-1a over every embedded file's name and bytes. The study's frame
+// cache keys on it, so that frames rendered by another kernel are not reused.
+std::string kernel_fingerprint();
 
 }  // namespace sg::gl_engine

@@ -111,10 +111,15 @@ SG_FN real box_sinc(real x, real sx) {
 
 SG_FN void box_cells_add(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, real cos_t, vec2 h) {
   vec2 x = h / real(n);
-  real cx0 = cos(x.x);
-  real sx0 = sin(x.x);
-  real cx1 = cos(x.y);
-  real sx1 = sin(x.y);
+  // The half-phases reach millions of radians for a distant footprint: reduced to
+  // [-pi, pi] before the sine and cosine (special.glsl), as GPUs' and the vectorised
+  // sums' sine and cosine need; sinc then divides by the unreduced x.
+  real rx0 = wrap_angle(x.x);
+  real rx1 = wrap_angle(x.y);
+  real cx0 = cos(rx0);
+  real sx0 = sin(rx0);
+  real cx1 = cos(rx1);
+  real sx1 = sin(rx1);
   real f0 = box_sinc(x.x, sx0);
   real f1 = box_sinc(x.y, sx1);
   real g = f0 * cx0 * f1 * cx1;  // sinc(2 x_0) sinc(2 x_1)

@@ -20,8 +20,8 @@ namespace sg {
 namespace {
 
 // Images of the method of Part 2 (tests/golden/), rendered with
-//   sunglint render scenes/S.json -m staa --footprint none --width 96 --frame 4
-//            -o staa_S_96x54_f4.pfm
+//   sunglint render scenes/S.json -m staa --footprint none --wave-remainder each --width 96
+//            --frame 4 -o staa_S_96x54_f4.pfm
 //   sunglint render scenes/S.json -m staa --footprint none --ndf uniform --kernels 3
 //            --segments 2 --width 96 --frame 7 -o staa_uniform_k3_s2_S_96x54_f7.pfm
 // They were first made by the commit before the footprint term. The speed-ups that followed
@@ -30,7 +30,9 @@ namespace {
 // so did the move of the shading into the kernel (src/kernel/: waves sorted by |k|, phases
 // camera-relative, the kernel's erfc): 1.4e-11 RMSE from the previous images, RMSE against
 // a 12x12x8 reference unchanged to six digits (0.00162154, 0.000775986, 0.000326899,
-// 0.000345487). Any later change to the `none` path fails here: regenerate only for a
+// 0.000345487). The split of the pixels that the horizon crosses (kernel/horizon_coverage.glsl)
+// moved high's horizon row by up to 3.6e-15 (its light there is ~0) and the images were
+// regenerated. Any later change to the `none` path fails here: regenerate only for a
 // deliberate change.
 //
 // Bit for bit holds between optimised builds (Release, the images' build) on processors

@@ -8,10 +8,18 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "gl_engine/kernel_program.h"
 #include "image/image_io.h"
 
 namespace sg {
 namespace fs = std::filesystem;
+
+namespace {
+// The revision of the methods computed outside the shading kernel (lean, taa, microspec,
+// specaa, bruneton, the exact footprint's host finish): raise it when a change alters
+// their pictures, so that the frame cache renders them again.
+constexpr int kHostMethodsRevision = 2;
+}  // namespace
 
 std::string canonical_label(const std::string& label) {
   std::string out;
@@ -45,20 +53,15 @@ std::string file_slug(const std::string& label) {
 }
 
 std::string frame_key(const Scene& scene, const std::string& label, int frame, int history_from) {
-  std::string key = "sunglint-frame/1\nsize=" + std::to_string(scene.width) + "x" +
+  // The renderer: the shading kernel's sources (both engines) and the revision of the
+  // host-side methods (bumped when their pictures change).
+  std::string key = "sunglint-frame/1\nrenderer=" + gl_engine::kernel_fingerprint() + "/" +
+                    std::to_string(kHostMethodsRevision) +
+                    "\nsize=" + std::to_string(scene.width) + "x" +
                     std::to_string(scene.height) + "\nframe=" + std::to_string(frame) +
                     "\nmethod=" + canonical_label(label) + "\n";
   if (history_from >= 0) key += "history_from=" + std::to_string(history_from) + "\n";
   return key + "scene=" + scene_to_json(scene) + "\n";
-}
-
-uint64_t fnv1a64(std::string_view bytes) {
-  uint64_t h = 0xcbf29ce484222325ull;  // FNV offset basis
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 0x100000001b3ull;  // FNV prime
-  }
-  return h;
 }
 
 std::string variance_key(const std::string& frame_key) {

@@ -17,6 +17,8 @@
 // its files (CACHE/<slug>-*) or the whole cache.
 #pragma once
 
+#include "base/fnv1a.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -42,9 +44,6 @@ std::string frame_key(const Scene& scene, const std::string& label, int frame,
 // The key of a frame's companion image: the per-pixel variance of a reference's estimate
 // (methods/reference.h), stored beside the frame as a frame of its own.
 std::string variance_key(const std::string& frame_key);
-
-// 64-bit FNV-1a (Fowler, Noll, Vo) of `bytes`.
-uint64_t fnv1a64(std::string_view bytes);
 
 struct CachedFrame {
   Image image;

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "gl_engine/kernel_program.h"
 #include "report/cache.h"
 #include "testing/testing.h"
 
@@ -38,6 +39,11 @@ TEST(FrameKey, ChangesWithSceneFrameSizeAndSamplesOnly) {
   EXPECT_NE(frame_key(s, "reference --samples 4x4x4", 3), base);
   EXPECT_NE(frame_key(s, "reference --samples 4x4x2 --seed 1", 3), base);
   EXPECT_NE(frame_key(s, "point", 3), base);
+  // The renderer: the shading kernel's fingerprint is part of the key, so frames from
+  // another build of the kernel are rendered again.
+  const std::string fp = gl_engine::kernel_fingerprint();
+  EXPECT_EQ(fp.size(), 16u);
+  EXPECT_NE(base.find("renderer=" + fp + "/"), std::string::npos);
   // Stateful methods: the first frame of the history is part of the key.
   EXPECT_NE(frame_key(s, ref, 3, 0), base);
   EXPECT_NE(frame_key(s, ref, 3, 0), frame_key(s, ref, 3, 1));

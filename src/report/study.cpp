@@ -52,9 +52,15 @@ std::unique_ptr<Method> build(const StudyVariant& v) {
   return v.make ? v.make() : make_method(v.name, v.options);
 }
 
-// Samples per pixel of the supersampling estimators; 0 for other methods.
+// Samples per pixel of the supersampling estimators; 0 for other methods. The reference's
+// are those of its busy pixels: every batch's strata times their samples (its own default
+// when --samples is not given; the pilot's quiet pixels take fewer).
 double samples_per_pixel(const StudyVariant& v) {
-  if (v.name == "reference" || v.name == "supersample") return double(v.options.samples.total());
+  if (v.name == "reference") {
+    const ReferenceSettings rs = reference_settings(v.options);
+    return double(rs.samples.total()) * rs.batches;
+  }
+  if (v.name == "supersample") return double(v.options.samples.total());
   return 0.0;
 }
 
