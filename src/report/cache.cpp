@@ -56,9 +56,8 @@ std::string frame_key(const Scene& scene, const std::string& label, int frame, i
   // The renderer: the shading kernel's sources (both engines) and the revision of the
   // host-side methods (bumped when their pictures change).
   std::string key = "sunglint-frame/1\nrenderer=" + gl_engine::kernel_fingerprint() + "/" +
-                    std::to_string(kHostMethodsRevision) +
-                    "\nsize=" + std::to_string(scene.width) + "x" +
-                    std::to_string(scene.height) + "\nframe=" + std::to_string(frame) +
+                    std::to_string(kHostMethodsRevision) + "\nsize=" + std::to_string(scene.width) +
+                    "x" + std::to_string(scene.height) + "\nframe=" + std::to_string(frame) +
                     "\nmethod=" + canonical_label(label) + "\n";
   if (history_from >= 0) key += "history_from=" + std::to_string(history_from) + "\n";
   return key + "scene=" + scene_to_json(scene) + "\n";
