@@ -228,13 +228,8 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
       // Half-phases along the pixel's edges, per cell: x = (k . J_0, k . J_1) / (2 n).
       const V x0 = hn::Mul(hn::Mul(half, hn::MulAdd(a, j00, hn::Mul(b, j01))), inv_side);
       const V x1 = hn::Mul(hn::Mul(half, hn::MulAdd(a, j10, hn::Mul(b, j11))), inv_side);
-      // kernel/special.glsl, wrap_angle: reduced to [-pi, pi] before the sine and cosine.
-      auto wrap = [&](V xv) {
-        const V k = hn::Floor(hn::MulAdd(xv, inv_two_pi, half));
-        return hn::NegMulAdd(k, hn::Set(d, T(0.0019353071795864769252867665590)),
-                             hn::NegMulAdd(k, hn::Set(d, T(6.28125)), xv));
-      };
-      const V rx0 = wrap(x0), rx1 = wrap(x1);
+      // Reduced to [-pi, pi] before the sine and cosine (kernel/ndf.glsl, box_cells_add).
+      const V rx0 = Wrap(d, x0), rx1 = Wrap(d, x1);
       const V cx0 = hn::Cos(d, rx0), sx0 = hn::Sin(d, rx0), cx1 = hn::Cos(d, rx1),
               sx1 = hn::Sin(d, rx1);
       auto box_sinc = [&](V xv, V sv) {
