@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The demo: `sunglint compare` on the four shared scenes with every method of the
-# catalogue, against a cached reference, and the report a user opens to see and trust
+# The demo: `sunglint compare` on the four shared scenes and the two spectrum oceans
+# (scenes/ocean-wind.json, scenes/ocean-swell.json: 512 waves each) with every method of
+# the catalogue, against a cached reference, and the report a user opens to see and trust
 # the result (out/demo/index.html).
 #
 #   scripts/demo.sh [--full] [--docs] [path/to/sunglint]
@@ -51,7 +52,8 @@ done < <("$bin" compare --list-methods)
 
 start=$(date +%s)
 (cd "$root" && "$bin" compare scenes/simple.json scenes/smooth.json scenes/medium.json scenes/high.json \
-  "${methods[@]}" "${size[@]}" --frames $frames --reference "$reference" --cache out/cache --out "$out")
+  scenes/ocean-wind.json scenes/ocean-swell.json "${methods[@]}" "${size[@]}" --frames $frames \
+  --reference "$reference" --cache out/cache --out "$out")
 echo "demo: $(($(date +%s) - start)) s"
 if [ $docs -eq 1 ]; then
   (cd "$root" && "$bin" report "$out/results.json" --markdown docs/results.md \

@@ -66,3 +66,10 @@ SG_FN vec4 sky_part_weights(IN(Frame) f, int i, int j, real sky) {
   real cover = min(light_pixel_coverage(f.camera, f.light, i, j), sky);
   return cover * light_weights() + (sky - cover) * sky_weights(f, d.y);
 }
+
+// A pixel's weights from its water part's `water`: the water's share of them and the
+// sky's part over the rest (the pixel's water part unchanged when it has no sky).
+SG_FN vec4 with_sky_part(IN(Frame) f, IN(PixelWater) pw, int i, int j, vec4 water) {
+  if (pw.share >= 1.0) return water;
+  return pw.share * water + sky_part_weights(f, i, j, 1.0 - pw.share);
+}

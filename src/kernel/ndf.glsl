@@ -48,9 +48,8 @@ SG_FN void ndf_add_uniform(INOUT(NdfMoments) m, real A, vec2 k) {
 // cosine) and half-width D, sin_d and cos_d the sine and cosine of D: the mean slope
 // factor K and the second-moment factor J (the slope is (a, b) A cos(phase)).
 SG_FN vec2 wave_moment_factors(real A, real cos_theta, real D, real sin_d, real cos_d) {
-  real inv_d = 1.0 / max(D, 1e-4);
-  real sinc1 = D < 1e-4 ? 1.0 - D * D / 6.0 : sin_d * inv_d;
-  real sinc2 = D < 1e-4 ? 1.0 - 2.0 * D * D / 3.0 : sin_d * cos_d * inv_d;
+  real sinc1 = sinc_from(D, sin_d);
+  real sinc2 = sinc1 * cos_d;  // sinc(2 D) = sinc(D) cos(D)
   real cos_2t = 2.0 * cos_theta * cos_theta - 1.0;
   return vec2(A * cos_theta * sinc1, 0.5 * A * A * (1.0 + cos_2t * sinc2));
 }
@@ -105,10 +104,6 @@ SG_FN vec4 box_offset_rotations(int n, real cx, real sx) {
   return vec4(first, c2, s2);
 }
 
-SG_FN real box_sinc(real x, real sx) {
-  return abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : sx / x;
-}
-
 SG_FN void box_cells_add(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, real cos_t, vec2 h) {
   vec2 x = h / real(n);
   // The half-phases reach millions of radians for a distant footprint: reduced to
@@ -120,8 +115,8 @@ SG_FN void box_cells_add(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, r
   real sx0 = sin(rx0);
   real cx1 = cos(rx1);
   real sx1 = sin(rx1);
-  real f0 = box_sinc(x.x, sx0);
-  real f1 = box_sinc(x.y, sx1);
+  real f0 = sinc_from(x.x, sx0);
+  real f1 = sinc_from(x.y, sx1);
   real g = f0 * cx0 * f1 * cx1;  // sinc(2 x_0) sinc(2 x_1)
   real Af = A * f0 * f1;
   real J0 = 0.5 * A * A;

@@ -71,7 +71,5 @@ SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) 
   Footprint fp = pixel_footprint(waves, f, pw.centre.x, pw.centre.y, 0.0, f.displaced);
   if (!fp.hit) return miss_pixel_weights(f, i, j);
   PathGradients g = path_gradients(waves, f, fp.point);
-  vec4 water = temporal_shares(f, g, fp.view).weights;
-  if (pw.share >= 1.0) return water;
-  return pw.share * water + sky_part_weights(f, i, j, 1.0 - pw.share);
+  return with_sky_part(f, pw, i, j, temporal_shares(f, g, fp.view).weights);
 }

@@ -69,10 +69,16 @@ SG_FN real normal_interval(real lo, real hi, real s) {
   return normal_mass(lo / s, hi / s);
 }
 
+// sin(x) / x from x and its sine sin_x (which a caller may have from a reduced angle or
+// an angle addition), accurate near 0.
+SG_FN real sinc_from(real x, real sin_x) {
+  if (abs(x) < 1e-4) return 1.0 - x * x / 6.0;
+  return sin_x / x;
+}
+
 // sin(x) / x, accurate near 0.
 SG_FN real sinc(real x) {
-  if (abs(x) < 1e-4) return 1.0 - x * x / 6.0;
-  return sin(x) / x;
+  return sinc_from(x, sin(x));
 }
 
 // x reduced to [-pi, pi]: x - 2 pi k, k = round(x / 2 pi). GPUs' sin and cos lose

@@ -497,6 +497,6 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
   if (pw.share < 1.0 && q.footprint == 2) q.footprint = 1;
   StaaSums sums = staa_wave_pass(waves, f, q, fp);
   StaaResult r = staa_finish(table_f, table_s, tinfo, fits, finfo, f, q, fp, sums, path);
-  if (pw.share < 1.0) r.weights = pw.share * r.weights + sky_part_weights(f, i, j, 1.0 - pw.share);
+  r.weights = with_sky_part(f, pw, i, j, r.weights);
   return r;
 }

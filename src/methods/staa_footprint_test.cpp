@@ -32,6 +32,8 @@ namespace {
 // a 12x12x8 reference unchanged to six digits (0.00162154, 0.000775986, 0.000326899,
 // 0.000345487). The split of the pixels that the horizon crosses (kernel/horizon_coverage.glsl)
 // moved high's horizon row by up to 3.6e-15 (its light there is ~0) and the images were
+// regenerated. One sinc for the kernel (special.glsl, sinc_from: sin(D) / D where Appendix
+// A's factors multiplied by 1 / D) moved one pixel of high by 1.2e-18, and high's image was
 // regenerated. Any later change to the `none` path fails here: regenerate only for a
 // deliberate change.
 //

@@ -267,11 +267,13 @@ std::string report_html(const StudyResults& r) {
     o << "<a href=\"#scene-" << file_slug(sc.name) << "\">" << html_escape(sc.name) << "</a> ";
   o << "<a href=\"#notes\">definitions</a></nav></header>\n<main>\n";
 
-  o << "<section id=\"table1\"><h2>Table 1 of Podee et al. (2021) beside ours</h2>\n"
-    << "<p>RMSE, with the ratio to No AA in brackets. The paper measures pictures after "
-       "glare and tone mapping against its reference; we measure linear pixel values against "
-       "ours. Compare the ratios, not the absolute values.</p>\n"
-    << paper_table(r) << "</section>\n";
+  if (studies_a_paper_scene(r)) {
+    o << "<section id=\"table1\"><h2>Table 1 of Podee et al. (2021) beside ours</h2>\n"
+      << "<p>RMSE, with the ratio to No AA in brackets. The paper measures pictures after "
+         "glare and tone mapping against its reference; we measure linear pixel values against "
+         "ours. Compare the ratios, not the absolute values.</p>\n"
+      << paper_table(r) << "</section>\n";
+  }
 
   o << "<section id=\"charts\"><h2>Error per method and scene</h2>\n<div class=\"charts\">"
     << "<div class=\"chart\"><canvas id=\"chart-rmse\"></canvas></div>"

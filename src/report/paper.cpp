@@ -98,4 +98,11 @@ std::vector<PaperComparison> compare_with_paper(const StudyResults& r) {
   return out;
 }
 
+bool studies_a_paper_scene(const StudyResults& r) {
+  for (const SceneResult& s : r.scenes)
+    for (const char* name : kPaperScenes)
+      if (s.name == name) return true;
+  return false;
+}
+
 }  // namespace sg

@@ -44,4 +44,8 @@ struct PaperComparison {
 };
 std::vector<PaperComparison> compare_with_paper(const StudyResults& r);
 
+// Whether the study renders one of the paper's four scenes (kPaperScenes, by name): the
+// report shows Table 1 beside it only then.
+bool studies_a_paper_scene(const StudyResults& r);
+
 }  // namespace sg

@@ -279,6 +279,14 @@ TEST(Results, MarkdownAndReadmeSection) {
             filled);
   EXPECT_THROW(replace_marked_section("x", "<!-- demo:begin -->", "<!-- demo:end -->", "", "R"),
                Error);
+  // Table 1 only beside a study of the paper's scenes.
+  EXPECT_NE(md.find("### Table 1 of Podee"), std::string::npos);
+  StudyResults other = r;
+  for (SceneResult& sc : other.scenes)
+    sc.name = "sea-" + sc.name;
+  EXPECT_EQ(results_to_markdown(other, "../out/").find("Table 1"), std::string::npos);
+  EXPECT_FALSE(studies_a_paper_scene(other));
+  EXPECT_TRUE(studies_a_paper_scene(r));
   const std::string summary = results_summary_markdown(r, "docs/img/simple-grid.png");
   EXPECT_NE(summary.find("![simple"), std::string::npos);
   EXPECT_NE(summary.find("| `point` |"), std::string::npos);

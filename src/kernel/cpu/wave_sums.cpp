@@ -29,6 +29,16 @@ HWY_INLINE V Wrap(D d, V x) {
   return hn::NegMulAdd(k, hn::Set(d, T(0.0019353071795864769252867665590)), r);
 }
 
+// sin(x) / x from x and its sine (kernel/special.glsl, sinc_from).
+template <class D, class V>
+HWY_INLINE V SincFrom(D d, V x, V sin_x) {
+  using T = hn::TFromD<D>;
+  const auto small = hn::Lt(hn::Abs(x), hn::Set(d, T(1e-4)));
+  const V one = hn::Set(d, T(1));
+  return hn::IfThenElse(small, hn::NegMulAdd(hn::Mul(x, x), hn::Set(d, T(1.0 / 6.0)), one),
+                        hn::Div(sin_x, hn::IfThenElse(small, one, x)));
+}
+
 // The phase a x + b z + theta0 + c dt (kernel/waves.glsl, wave_phase), wrapped.
 template <class D, class V>
 HWY_INLINE V Phase(D d, const V a, const V b, const V theta0, const V c, V x, V z, V dt) {
@@ -232,13 +242,7 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
       const V rx0 = Wrap(d, x0), rx1 = Wrap(d, x1);
       const V cx0 = hn::Cos(d, rx0), sx0 = hn::Sin(d, rx0), cx1 = hn::Cos(d, rx1),
               sx1 = hn::Sin(d, rx1);
-      auto box_sinc = [&](V xv, V sv) {
-        const auto small = hn::Lt(hn::Abs(xv), hn::Set(d, T(1e-4)));
-        const V safe = hn::IfThenElse(small, one, xv);
-        return hn::IfThenElse(small, hn::NegMulAdd(hn::Mul(xv, xv), hn::Set(d, T(1.0 / 6.0)), one),
-                              hn::Div(sv, safe));
-      };
-      const V f0 = box_sinc(x0, sx0), f1 = box_sinc(x1, sx1);
+      const V f0 = SincFrom(d, x0, sx0), f1 = SincFrom(d, x1, sx1);
       const V g = hn::Mul(hn::Mul(f0, cx0), hn::Mul(f1, cx1));
       const V Af = hn::Mul(A, hn::Mul(f0, f1));
       const V J0 = hn::Mul(hn::Mul(half, A), A);
@@ -284,13 +288,8 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
     if (in.per_pixel) {
       // kernel/ndf.glsl, wave_moment_factors (Eqs. 23-24).
       const V sd = hn::Sin(d, D), cd = hn::Cos(d, D);
-      const auto small = hn::Lt(D, hn::Set(d, T(1e-4)));
-      const V inv_d = hn::Div(one, hn::Max(D, hn::Set(d, T(1e-4))));
-      const V D2 = hn::Mul(D, D);
-      const V sinc1 = hn::IfThenElse(small, hn::NegMulAdd(D2, hn::Set(d, T(1.0 / 6.0)), one),
-                                     hn::Mul(sd, inv_d));
-      const V sinc2 = hn::IfThenElse(small, hn::NegMulAdd(D2, hn::Set(d, T(2.0 / 3.0)), one),
-                                     hn::Mul(hn::Mul(sd, cd), inv_d));
+      const V sinc1 = SincFrom(d, D, sd);
+      const V sinc2 = hn::Mul(sinc1, cd);  // sinc(2 D) = sinc(D) cos(D)
       const V cos_2t = hn::MulSub(hn::Add(c, c), c, one);
       const V Kf = hn::Mul(hn::Mul(aliasing, c), sinc1);
       const V Jf =
