@@ -3,9 +3,15 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <vector>
+
+#ifdef __SANITIZE_ADDRESS__
+#include <dlfcn.h>
+#include <link.h>
+#endif
 
 #include "gl/check.h"
 #include "gl/error.h"
@@ -121,6 +127,7 @@ std::string try_candidate(const Candidate& c, bool debug, HeadlessContext::Egl& 
   if (d == EGL_NO_DISPLAY) return "eglGetPlatformDisplay: " + egl_error_name(eglGetError());
   EGLint major = 0, minor = 0;
   if (!eglInitialize(d, &major, &minor)) return "eglInitialize: " + egl_error_name(eglGetError());
+  pin_dri_drivers();
   acquire_display(d);
   auto fail = [&](const std::string& why) {
     release_display(d);
@@ -248,6 +255,18 @@ void HeadlessContext::make_current() const {
   if (eglGetCurrentContext() == egl_->context) return;
   if (!eglMakeCurrent(egl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, egl_->context))
     throw GlError("eglMakeCurrent: " + egl_error_name(eglGetError()));
+}
+
+void pin_dri_drivers() {
+#ifdef __SANITIZE_ADDRESS__
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void*) {
+        if (info->dlpi_name && std::strstr(info->dlpi_name, "_dri.so"))
+          dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+        return 0;
+      },
+      nullptr);
+#endif
 }
 
 }  // namespace sg::gl

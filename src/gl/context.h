@@ -74,4 +74,12 @@ class HeadlessContext {
 // EGL's or a window's).
 void query_gl_info(ContextInfo& info);
 
+// In sanitizer builds, keeps Mesa's DRI drivers (*_dri.so) loaded until exit; elsewhere
+// nothing. eglTerminate and glfwTerminate make Mesa unload its driver (swrast_dri.so) with
+// memory still referenced from the driver's globals: LeakSanitizer then reports it as
+// leaked, in frames of an unloaded module that no suppression can match. Pinned
+// (RTLD_NODELETE), that memory stays reachable. Call it once a driver is loaded (after
+// eglInitialize, or once GLFW has tried to make a context).
+void pin_dri_drivers();
+
 }  // namespace sg::gl

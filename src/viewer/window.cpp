@@ -9,13 +9,7 @@
 #include <imgui.h>
 
 #include <cstdlib>
-#include <cstring>
 #include <string>
-
-#ifdef __SANITIZE_ADDRESS__
-#include <dlfcn.h>
-#include <link.h>
-#endif
 
 #include "gl/check.h"
 #include "gl/error.h"
@@ -39,22 +33,6 @@ bool set(const char* name) {
   return v && *v;
 }
 
-#ifdef __SANITIZE_ADDRESS__
-// glfwTerminate closes the X display, and Mesa's GLX then unloads its DRI driver
-// (swrast_dri.so) with memory still referenced from the driver's globals: LeakSanitizer
-// reports it as leaked, in frames of an unloaded module that no suppression can match. In
-// sanitizer builds the driver is pinned (RTLD_NODELETE) so that memory stays reachable.
-void pin_dri_drivers() {
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void*) {
-        if (info->dlpi_name && std::strstr(info->dlpi_name, "_dri.so"))
-          dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-        return 0;
-      },
-      nullptr);
-}
-#endif
-
 }  // namespace
 
 Window::Window(const WindowOptions& options) : width_(options.width), height_(options.height) {
@@ -77,15 +55,13 @@ Window::Window(const WindowOptions& options) : width_(options.width), height_(op
 #endif
   window_ =
       glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+  gl::pin_dri_drivers();  // before any glfwTerminate (gl/context.h)
   if (!window_) {
     std::string why = last_glfw_error;
     glfwTerminate();
     throw gl::Unavailable("no OpenGL 4.5 core window: " + why);
   }
   glfwMakeContextCurrent(window_);
-#ifdef __SANITIZE_ADDRESS__
-  pin_dri_drivers();
-#endif
   glfwSwapInterval(options.vsync ? 1 : 0);
   glfwGetFramebufferSize(window_, &width_, &height_);
   info_.platform = "GLX";
