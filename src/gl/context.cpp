@@ -3,7 +3,6 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
-#include <cstring>
 #include <map>
 #include <mutex>
 #include <vector>
@@ -11,6 +10,8 @@
 #ifdef __SANITIZE_ADDRESS__
 #include <dlfcn.h>
 #include <link.h>
+
+#include <cstring>
 #endif
 
 #include "gl/check.h"

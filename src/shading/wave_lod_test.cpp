@@ -2,8 +2,8 @@
 // filter over every wave in file order: for the footprints of real views of generated
 // spectrum oceans (256 and 1024 waves, the waves shuffled), the prefix that a pixel keeps
 // plus the suffix sum of the rest give the same filtered gradient, filtered height and
-// filtered-out slope covariance as Sec. 3.2's weights applied to all the waves, and every
-// wave past the prefix has weight 0 (so that the prefix is not an approximation).
+// filtered-out slope covariance as Sec. 3.2's weights applied to all the waves (which holds
+// only if every wave past the prefix has weight 0: the prefix is not an approximation).
 #include <gtest/gtest.h>
 
 #include <algorithm>
