@@ -1,11 +1,13 @@
 # sunglint: `make demo` and `make test` set everything up on a fresh Debian 12 machine
 # (packages through scripts/install-deps.sh, as root or through sudo), build in Release
-# and run. Other targets: build, bench, pictures, sanitize, fuzz, format, format-check, clean, ocean-scenes.
+# and run. Other targets: build, bench, pictures, sanitize, fuzz, ci-fast, format, format-check,
+# clean, ocean-scenes. CI (.ci/run) and its budget: docs/ci.md.
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build test demo pictures bench sanitize fuzz format format-check clean ocean-scenes
+.PHONY: all deps configure build test demo pictures bench sanitize sanitize-build sanitize-test \
+  fuzz fuzz-build fuzz-run ci-fast format format-check clean ocean-scenes
 
 all: build
 
@@ -39,27 +41,44 @@ bench: build
 ocean-scenes: build
 	bash scripts/ocean-scenes.sh $(BUILD)/sunglint
 
-# The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (Debug build).
-sanitize: deps
-	cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DSUNGLINT_SANITIZE=ON \
-	  -DSUNGLINT_BUILD_BENCH=OFF
-	cmake --build build-asan -j $(JOBS)
-	ctest --test-dir build-asan --output-on-failure -j $(JOBS) -LE slow
+# Every unit test (each test program; CTest label `unit`) under AddressSanitizer and
+# UndefinedBehaviorSanitizer: a build of the test programs alone (no CLI, viewer binary,
+# tools or benchmarks), -O1 with line tables only (-g1: stack traces with lines, at a
+# fraction of -g's compile time).
+SANITIZE_BUILD ?= build-asan
+sanitize: sanitize-build sanitize-test
+
+sanitize-build: deps
+	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
+	  -DSUNGLINT_SANITIZE=ON -DSUNGLINT_BUILD_BENCH=OFF $(CMAKE_FLAGS)
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target unit_tests
+
+sanitize-test:
+	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L unit
 
 # The scene loader under libFuzzer (clang, fuzz/scene_fuzz.cpp) for FUZZ_SECONDS, from a seed
 # corpus of the shipped, bad and edge scenes; new inputs go to build-fuzz/corpus, findings
 # to build-fuzz/artifacts (the run fails on one).
 FUZZ_SECONDS ?= 60
-fuzz: deps
+fuzz: fuzz-build fuzz-run
+
+fuzz-build: deps
 	cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_COMPILER=clang++ -DSUNGLINT_FUZZ=ON -DSUNGLINT_BUILD_TESTS=OFF \
 	  -DSUNGLINT_BUILD_BENCH=OFF
 	cmake --build build-fuzz -j $(JOBS) --target scene_fuzz
+
+fuzz-run:
 	mkdir -p build-fuzz/corpus build-fuzz/artifacts
 	build-fuzz/fuzz/scene_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=4096 \
 	  -max_len=16384 -dict=fuzz/scene.dict -artifact_prefix=build-fuzz/artifacts/ \
 	  -print_final_stats=1 build-fuzz/corpus scenes tests/scenes/bad tests/scenes/edge \
 	  tests/scenes/extreme
+
+# The check before every merge (docs/ci.md): the Release build and its whole suite, and the
+# formatting; at most 5 minutes from a built tree. CI (.ci/run) adds the sanitizers and the
+# fuzzer.
+ci-fast: test format-check
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h' '*.glsl')
@@ -68,4 +87,4 @@ format-check:
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.h' '*.glsl')
 
 clean:
-	rm -rf $(BUILD) build-asan build-fuzz
+	rm -rf $(BUILD) $(SANITIZE_BUILD) build-fuzz build-ci-logs

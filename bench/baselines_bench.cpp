@@ -15,12 +15,13 @@
 #include "engine/render.h"
 #include "methods/lean.h"
 #include "methods/taa.h"
+#include "testing/paths.h"
 
 namespace sg {
 namespace {
 
 Scene bench_scene(const char* name) {
-  Scene s = load_scene(std::string(SG_SOURCE_DIR) + "/scenes/" + name + ".json");
+  Scene s = load_scene(sg::testing::source_dir() + "/scenes/" + name + ".json");
   set_image_size(s, 160, 90);
   return s;
 }

@@ -14,12 +14,13 @@
 
 #include "engine/render.h"
 #include "methods/method.h"
+#include "testing/paths.h"
 
 namespace sg {
 namespace {
 
 Scene bench_scene(bool colour) {
-  Scene s = load_scene(std::string(SG_SOURCE_DIR) + "/scenes/medium.json");
+  Scene s = load_scene(sg::testing::source_dir() + "/scenes/medium.json");
   set_image_size(s, 160, 90);
   s.surface.fresnel = FresnelMode::schlick;
   s.light.radiance = colour ? Rgb(1, 0.7, 0.4) : Rgb(1);

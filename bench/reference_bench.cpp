@@ -10,6 +10,7 @@
 #include "math/simd_trig.h"
 #include "methods/stratified.h"
 #include "scene/model.h"
+#include "testing/paths.h"
 
 namespace sg {
 namespace {
@@ -51,7 +52,7 @@ void BM_LibmSincos(benchmark::State& state) {
 BENCHMARK(BM_LibmSincos);
 
 void BM_ReferencePixel(benchmark::State& state, const char* scene_name) {
-  Scene s = load_scene(std::string(SG_SOURCE_DIR) + "/scenes/" + scene_name + ".json");
+  Scene s = load_scene(sg::testing::source_dir() + "/scenes/" + scene_name + ".json");
   SceneModel m(s);
   FrameContext ctx{m, frame_time(s, 0), 0};
   StratifiedSettings st{{8, 8, 8}, false};

@@ -40,7 +40,11 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     const char* name;
     MethodOptions o;
   };
-  std::vector<Case> cases = {{"point", {}}, {"reference", {}}, {"staa-temporal", {}}, {"staa", {}}};
+  // Every program the suite runs (this test is the fixture that compiles them first:
+  // src/CMakeLists.txt, gl_programs): the five methods with the default options, and staa's
+  // with 2 path segments.
+  std::vector<Case> cases = {
+      {"point", {}}, {"supersample", {}}, {"reference", {}}, {"staa-temporal", {}}, {"staa", {}}};
   MethodOptions two;
   two.staa.segments = 2;
   two.staa.ndf = NdfMode::uniform;

@@ -13,6 +13,7 @@
 #include "base/error.h"
 #include "image/display.h"
 #include "image/sequence.h"
+#include "testing/paths.h"
 
 namespace sg {
 namespace {
@@ -30,7 +31,7 @@ Image ramp(int w, int h) {
 class ImageIo : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(SG_BINARY_DIR) / "test_out" /
+    dir_ = fs::path(sg::testing::binary_dir()) / "test_out" /
            ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);

@@ -11,13 +11,14 @@
 #include "image/image_io.h"
 #include "methods/fallback.h"
 #include "methods/method.h"
+#include "testing/paths.h"
 
 namespace sg {
 namespace {
 
 Scene under_the_surface() {
   // tests/scenes/edge/camera_below_crests.json: the camera 5 cm up, under a crest in frame 0.
-  Scene s = load_scene(std::string(SG_SOURCE_DIR) + "/tests/scenes/edge/camera_below_crests.json");
+  Scene s = load_scene(sg::testing::source_dir() + "/tests/scenes/edge/camera_below_crests.json");
   s.width = 32;
   s.height = 18;
   return s;

@@ -30,6 +30,7 @@
 #include "methods/method.h"
 #include "testing/gl_context.h"
 #include "testing/random_scene.h"
+#include "testing/paths.h"
 
 namespace sg {
 namespace {
@@ -53,7 +54,7 @@ MethodOptions cheap_options() {
 const std::set<std::string> kPending = {};
 
 TEST(FiniteProperty, EveryMethodIsFiniteOnRandomValidScenes) {
-  const std::string dump = std::string(SG_BINARY_DIR) + "/test_out/finite_property";
+  const std::string dump = sg::testing::binary_dir() + "/test_out/finite_property";
   std::filesystem::remove_all(dump);
   std::filesystem::create_directories(dump);
   const char* env_n = std::getenv("SG_PROPERTY_SCENES");
@@ -187,7 +188,7 @@ std::vector<std::string> non_finite_renders(const std::string& dir) {
 
 TEST(EdgeScenes, EveryMethodIsFinite) {
   // tests/scenes/edge: valid scenes at the ends of every range (make_edge_scenes.py).
-  for (const std::string& b : non_finite_renders(std::string(SG_SOURCE_DIR) + "/tests/scenes/edge"))
+  for (const std::string& b : non_finite_renders(sg::testing::source_dir() + "/tests/scenes/edge"))
     ADD_FAILURE() << b;
 }
 
@@ -195,7 +196,7 @@ TEST(EdgeScenes, EveryMethodIsFinite) {
 // lists each case; none is open). Run on demand (--gtest_also_run_disabled_tests).
 TEST(ExtremeScenes, DISABLED_EveryMethodIsFinite) {
   for (const std::string& b :
-       non_finite_renders(std::string(SG_SOURCE_DIR) + "/tests/scenes/extreme")) {
+       non_finite_renders(sg::testing::source_dir() + "/tests/scenes/extreme")) {
     ADD_FAILURE() << b;
   }
 }

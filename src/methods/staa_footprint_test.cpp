@@ -83,7 +83,7 @@ TEST(StaaFootprint, NoneIsThePaperMethodBitForBit) {
     b.ndf = NdfMode::uniform;
     b.kernels = 3;
     b.segments = 2;
-    const std::string dir = std::string(SG_SOURCE_DIR) + "/tests/golden/";
+    const std::string dir = sg::testing::source_dir() + "/tests/golden/";
     StaaMethod ma(a), mb(b);
     Image ia = render_frame(m, ma, 4, {}), ib = render_frame(m, mb, 7, {});
     Image ga = read_image(dir + "staa_" + scene + "_96x54_f4.pfm");

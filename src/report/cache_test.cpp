@@ -48,7 +48,7 @@ TEST(FrameKey, ChangesWithSceneFrameSizeAndSamplesOnly) {
   EXPECT_NE(frame_key(s, ref, 3, 0), base);
   EXPECT_NE(frame_key(s, ref, 3, 0), frame_key(s, ref, 3, 1));
 
-  FrameCache c((fs::path(SG_BINARY_DIR) / "test_out/cache_keys").string());
+  FrameCache c((fs::path(sg::testing::binary_dir()) / "test_out/cache_keys").string());
   EXPECT_EQ(c.path(ref, base), c.path(ref, frame_key(scene(), ref, 3)));
   EXPECT_NE(c.path(ref, base), c.path(ref, frame_key(s, ref, 4)));
   EXPECT_EQ(fs::path(c.path(ref, base)).filename().string().rfind("reference-samples-4x4x2-", 0),
@@ -66,7 +66,7 @@ TEST(FrameKey, LabelsAndSlugs) {
 }
 
 TEST(FrameCache, TrustsOnlyCompleteFramesWithTheirKey) {
-  const std::string dir = (fs::path(SG_BINARY_DIR) / "test_out/cache_store").string();
+  const std::string dir = (fs::path(sg::testing::binary_dir()) / "test_out/cache_store").string();
   fs::remove_all(dir);
   FrameCache c(dir);
   Image img(4, 3, 0.25f);

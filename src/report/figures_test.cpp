@@ -9,6 +9,7 @@
 #include "base/error.h"
 #include "report/figures.h"
 #include "report/video.h"
+#include "testing/paths.h"
 
 namespace sg {
 namespace {
@@ -60,7 +61,7 @@ TEST(Figures, GridZoomAndErrorScale) {
 }
 
 TEST(Video, SameBytesEveryTimeAndAClearErrorWithoutFfmpeg) {
-  const fs::path dir = fs::path(SG_BINARY_DIR) / "test_out/video";
+  const fs::path dir = fs::path(sg::testing::binary_dir()) / "test_out/video";
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::vector<std::vector<uint8_t>> frames;

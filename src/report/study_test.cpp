@@ -55,7 +55,7 @@ StudyVariant variant(const std::string& label, const std::string& name, SampleCo
 class StudyTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = (fs::path(SG_BINARY_DIR) / "test_out/study" /
+    dir_ = (fs::path(sg::testing::binary_dir()) / "test_out/study" /
             ::testing::UnitTest::GetInstance()->current_test_info()->name())
                .string();
     fs::remove_all(dir_);

@@ -136,7 +136,7 @@ class BadScene : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(BadScene, RejectedWithKeyAndRule) {
   const std::string path =
-      std::string(SG_SOURCE_DIR) + "/tests/scenes/bad/" + GetParam().file + ".json";
+      sg::testing::source_dir() + "/tests/scenes/bad/" + GetParam().file + ".json";
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   try {
     load_scene(path);
@@ -152,7 +152,7 @@ INSTANTIATE_TEST_SUITE_P(Rules, BadScene, ::testing::ValuesIn(kBad),
 TEST(SceneLoad, EveryBadFixtureHasAnExpectedMessage) {
   int files = 0;
   for (const auto& e :
-       std::filesystem::directory_iterator(std::string(SG_SOURCE_DIR) + "/tests/scenes/bad")) {
+       std::filesystem::directory_iterator(sg::testing::source_dir() + "/tests/scenes/bad")) {
     ++files;
     bool listed = false;
     for (const auto& c : kBad)
@@ -320,7 +320,7 @@ std::string load_error(const std::string& path) {
 }
 
 std::string scratch_dir(const std::string& name) {
-  const std::string d = std::string(SG_BINARY_DIR) + "/test_out/scene_test/" + name;
+  const std::string d = sg::testing::binary_dir() + "/test_out/scene_test/" + name;
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d;

@@ -24,6 +24,7 @@
 #include "shading/arc.h"
 #include "shading/disk_gaussian.h"
 #include "testing/quadrature.h"
+#include "testing/paths.h"
 
 namespace sg {
 namespace {
@@ -34,7 +35,7 @@ namespace fs = std::filesystem;
 // (ctest runs each test case in its own process).
 const PathTables& table() {
   static const bool env = [] {
-    setenv("SUNGLINT_CACHE_DIR", (std::string(SG_BINARY_DIR) + "/test-cache").c_str(), 1);
+    setenv("SUNGLINT_CACHE_DIR", (sg::testing::binary_dir() + "/test-cache").c_str(), 1);
     return true;
   }();
   (void)env;
@@ -432,7 +433,7 @@ TEST(PathTableCache, SharedInstanceIsOneAndCached) {
   for (const PathTables* s : seen)
     EXPECT_EQ(s, seen[0]);
   const PathTableCacheResult& r = PathTables::shared_cache_result();
-  EXPECT_EQ(r.path, std::string(SG_BINARY_DIR) + "/test-cache/" + PathTables::kCacheFileName);
+  EXPECT_EQ(r.path, sg::testing::binary_dir() + "/test-cache/" + PathTables::kCacheFileName);
   EXPECT_TRUE(r.loaded || r.written) << r.note;
   EXPECT_TRUE(fs::exists(r.path));
   EXPECT_EQ(seen[0]->params(), PathTableParams{});

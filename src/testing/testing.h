@@ -6,15 +6,9 @@
 #include <string>
 
 #include "scene/scene.h"
+#include "testing/paths.h"
 
 namespace sg::testing {
-
-// The checkout the tests read scenes from: $SUNGLINT_SOURCE_DIR where set (a test program
-// carried to another machine, scripts/gpu-check.sh), else the one it was built from.
-inline std::string source_dir() {
-  const char* d = std::getenv("SUNGLINT_SOURCE_DIR");
-  return d && *d ? std::string(d) : std::string(SG_SOURCE_DIR);
-}
 
 // A scene shipped with the project (scenes/NAME.json).
 inline Scene project_scene(const std::string& name) {

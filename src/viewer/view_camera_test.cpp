@@ -14,6 +14,7 @@
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "viewer/view_edits.h"
+#include "testing/paths.h"
 
 namespace sg::viewer {
 namespace {
@@ -21,7 +22,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 Scene simple() {
-  return load_scene(std::string(SG_SOURCE_DIR) + "/scenes/simple.json");
+  return load_scene(sg::testing::source_dir() + "/scenes/simple.json");
 }
 
 // A camera with a look_at off the target, so that a rigid motion and a "look at the

@@ -9,12 +9,13 @@
 #include "base/error.h"
 #include "scene/scene.h"
 #include "viewer/view_edits.h"
+#include "testing/paths.h"
 
 namespace sg::viewer {
 namespace {
 
 Scene simple() {
-  return load_scene(std::string(SG_SOURCE_DIR) + "/scenes/simple.json");
+  return load_scene(sg::testing::source_dir() + "/scenes/simple.json");
 }
 
 TEST(ViewEdits, UneditedViewIsTheSceneExactly) {
