@@ -41,7 +41,7 @@ bench: build
 ocean-scenes: build
 	bash scripts/ocean-scenes.sh $(BUILD)/sunglint
 
-# Every unit test (each test program; CTest label `unit`) under AddressSanitizer and
+# Every unit test (each test program; CTest labels unit, gl and slow) under AddressSanitizer and
 # UndefinedBehaviorSanitizer: a build of the test programs alone (no CLI, viewer binary,
 # tools or benchmarks), -O1 with line tables only (-g1: stack traces with lines, at a
 # fraction of -g's compile time).
@@ -54,7 +54,7 @@ sanitize-build: deps
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target unit_tests
 
 sanitize-test:
-	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L unit
+	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L '^(unit|gl|slow)$$'
 
 # The scene loader under libFuzzer (clang, fuzz/scene_fuzz.cpp) for FUZZ_SECONDS, from a seed
 # corpus of the shipped, bad and edge scenes; new inputs go to build-fuzz/corpus, findings
