@@ -152,6 +152,19 @@ std::vector<float> Texture::read() const {
   return out;
 }
 
+std::vector<float> Texture::read_region(int width, int height) const {
+  if (width < 1 || height < 1 || width > width_ || height > height_)
+    throw GlError("texture read: region " + std::to_string(width) + "x" + std::to_string(height) +
+                  " outside the " + std::to_string(width_) + "x" + std::to_string(height_) +
+                  " texture");
+  std::vector<float> out(size_t(width) * size_t(height) * size_t(components()));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureSubImage(id_, 0, 0, 0, 0, width, height, 1, pixel_format(format_), GL_FLOAT,
+                       static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
+  check_errors("texture read");
+  return out;
+}
+
 void Texture::bind_texture(GLuint unit) const {
   glBindTextureUnit(unit, id_);
   check_errors("glBindTextureUnit(" + std::to_string(unit) + ")");

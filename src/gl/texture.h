@@ -38,6 +38,8 @@ class Texture {
   void upload(std::span<const float> data);
   void fill(glm::vec4 value);
   std::vector<float> read() const;
+  // The 2D region [0, width) x [0, height) of level 0: width * height * components floats.
+  std::vector<float> read_region(int width, int height) const;
 
   // glBindTextureUnit: sampler2D/sampler3D/sampler2DArray with layout(binding = unit).
   void bind_texture(GLuint unit) const;

@@ -17,6 +17,22 @@
 
 namespace sg::gl_engine {
 
+namespace {
+
+// The smallest n' >= n that is not a power of two. llvmpipe compiles a variant of a
+// program for each combination of "this image's / buffer's sides are powers of two"
+// (its sampler and image keys), and each of the kernel's programs takes up to a minute to
+// compile there: the engine's image and wave buffer always get sides that are not, so
+// every scene size runs the same compiled variant (and Mesa's shader cache serves it).
+// The region past the scene's image is never written or read.
+int not_power_of_two(int n) {
+  while ((n & (n - 1)) == 0)
+    n += 1;
+  return n;
+}
+
+}  // namespace
+
 const char* gl_methods() {
   return "point, supersample, reference, staa-temporal, staa";
 }
@@ -94,12 +110,13 @@ void GlEngine::upload(const FrameContext& ctx) {
   build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance);
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
-    weights_ = gl::Texture::image_2d(w, h, GL_RGBA32F);
+    weights_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);
     width_ = w;
     height_ = h;
   }
-  // The wave buffer: at least one texel (a scene may have no waves).
-  std::vector<float> texels(std::max<size_t>(4, inputs_->texels.size() * 4), 0.0f);
+  // The wave buffer: at least one texel (a scene may have no waves), zeros past the waves.
+  std::vector<float> texels(
+      4 * size_t(not_power_of_two(int(std::max<size_t>(1, inputs_->texels.size())))), 0.0f);
   for (size_t i = 0; i < inputs_->texels.size(); ++i) {
     for (int c = 0; c < 4; ++c)
       texels[4 * i + c] = inputs_->texels[i][c];
@@ -143,7 +160,7 @@ void GlEngine::dispatch(const FrameContext& ctx) {
 }
 
 std::vector<float> GlEngine::read_weights() const {
-  return weights_.read();
+  return weights_.read_region(width_, height_);
 }
 
 double GlEngine::time_dispatch(const FrameContext& ctx, int warmup, int repeats) {

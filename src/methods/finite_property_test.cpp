@@ -29,8 +29,8 @@
 #include "image/image_io.h"
 #include "methods/method.h"
 #include "testing/gl_context.h"
-#include "testing/random_scene.h"
 #include "testing/paths.h"
+#include "testing/random_scene.h"
 
 namespace sg {
 namespace {

@@ -23,8 +23,8 @@
 #include "scene/light.h"
 #include "shading/arc.h"
 #include "shading/disk_gaussian.h"
-#include "testing/quadrature.h"
 #include "testing/paths.h"
+#include "testing/quadrature.h"
 
 namespace sg {
 namespace {

@@ -10,6 +10,8 @@ std::string source_dir() {
   return d && *d ? std::string(d) : std::string(SG_SOURCE_DIR);
 }
 
-std::string binary_dir() { return SG_BINARY_DIR; }
+std::string binary_dir() {
+  return SG_BINARY_DIR;
+}
 
 }  // namespace sg::testing

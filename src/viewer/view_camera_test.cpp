@@ -13,8 +13,8 @@
 
 #include "scene/camera.h"
 #include "scene/scene.h"
-#include "viewer/view_edits.h"
 #include "testing/paths.h"
+#include "viewer/view_edits.h"
 
 namespace sg::viewer {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "base/error.h"
 #include "scene/scene.h"
-#include "viewer/view_edits.h"
 #include "testing/paths.h"
+#include "viewer/view_edits.h"
 
 namespace sg::viewer {
 namespace {
