@@ -30,12 +30,7 @@ free_port() {
 
 # The pids of this cluster's job processes: their environment names its slurm.conf.
 job_pids() {
-  local conf=$1 p
-  for p in /proc/[0-9]*; do
-    if { tr '\0' '\n' <"$p/environ"; } 2>/dev/null | grep -qxF "SLURM_CONF=$conf"; then
-      echo "${p#/proc/}"
-    fi
-  done
+  grep -lzxF "SLURM_CONF=$1" /proc/[0-9]*/environ 2>/dev/null | cut -d/ -f3
 }
 
 stop() {
@@ -48,6 +43,8 @@ stop() {
     scancel --full --quiet --user "$(id -un)" 2>/dev/null || true
     scontrol shutdown 2>/dev/null || true
   fi
+  # munged has no shutdown command: its pid file.
+  [ -f "$dir/munged.pid" ] && kill "$(cat "$dir/munged.pid")" 2>/dev/null || true
   # Wait for the daemons to end (at most 5 s), then kill what is left, by pid.
   for n in $(seq 50); do
     alive=0

@@ -4,8 +4,8 @@
 # @WHAT@. The work lands in files written whole (temporary file + rename), and work already
 # there is skipped, so an element that runs twice renders nothing twice.
 #
-# Each @NAME@ of the template is a value sunglint fills in; a line whose value is empty is
-# left out (an option not given).
+# Each placeholder (a capitalised name between two at signs) is a value sunglint fills in;
+# a line whose value is empty is left out (an option not given).
 #SBATCH --job-name=@JOB_NAME@
 #SBATCH --array=@ARRAY@
 #SBATCH --chdir=@WORK_DIR@

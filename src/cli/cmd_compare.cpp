@@ -289,7 +289,7 @@ const std::map<std::string, int> kSubmissionFlags{{"--slurm", 0},
 void submit_study(const CompareArgs& a, const StudyConfig& c) {
   const SlurmOptions& o = a.slurm;
   // Slurm is there, and the nodes see the study's folders, the scenes and the program.
-  run_slurm({"sbatch", "--version"}, "--slurm");
+  require_program("sbatch", "--slurm");
   const std::string exe = program_path();
   std::vector<std::pair<std::string, std::string>> paths{
       {"--out", a.out},

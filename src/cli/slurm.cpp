@@ -125,6 +125,7 @@ CommandOutput run_program(const std::vector<std::string>& argv) {
     ::close(out_fd);
     ::close(err_fd);
     r.status = 127;
+    r.started = false;
     r.err = argv[0] + ": " + std::strerror(rc);
     return r;
   }
@@ -140,13 +141,30 @@ CommandOutput run_program(const std::vector<std::string>& argv) {
   return r;
 }
 
+namespace {
+[[noreturn]] void not_found(const std::string& name, const std::string& flag) {
+  throw Error(flag + ": " + name +
+              ": not found on PATH; submit from a machine where Slurm's commands run (a "
+              "login node of the cluster), or run without " +
+              flag);
+}
+}  // namespace
+
+void require_program(const std::string& name, const std::string& flag) {
+  const char* path = std::getenv("PATH");
+  std::stringstream ss(path ? path : "");
+  for (std::string d; std::getline(ss, d, ':');) {
+    const fs::path p = fs::path(d.empty() ? "." : d) / name;
+    std::error_code ec;
+    if (::access(p.c_str(), X_OK) == 0 && !fs::is_directory(p, ec)) return;
+  }
+  not_found(name, flag);
+}
+
 std::string run_slurm(const std::vector<std::string>& argv, const std::string& flag) {
   const CommandOutput r = run_program(argv);
-  if (r.status == 127 && r.out.empty()) {
-    throw Error(flag + ": " + argv[0] +
-                ": not found on PATH; submit from a machine where Slurm's commands run (a "
-                "login node of the cluster), or run without " +
-                flag);
+  if (!r.started) {
+    not_found(argv[0], flag);
   }
   if (r.status != 0) {
     std::string msg = trim(r.err.empty() ? r.out : r.err);

@@ -31,7 +31,8 @@ std::string shell_quote(const std::string& s);
 std::string shell_join(const std::vector<std::string>& argv);
 
 struct CommandOutput {
-  int status = 0;  // exit status; 127 when the program is not found
+  int status = 0;      // exit status; 127 when the program is not found
+  bool started = true;  // false: it could not be started (not found)
   std::string out, err;
 };
 // Runs argv[0] (looked up on PATH) with the arguments, standard input from /dev/null.
@@ -39,6 +40,9 @@ CommandOutput run_program(const std::vector<std::string>& argv);
 // Runs it and returns its standard output; throws sg::Error "FLAG: `COMMAND` failed (exit
 // N): MESSAGE" when it fails, "FLAG: sbatch: not found on PATH (...)" when it is missing.
 std::string run_slurm(const std::vector<std::string>& argv, const std::string& flag);
+
+// Throws the error of run_slurm for a missing command when `name` is not on PATH.
+void require_program(const std::string& name, const std::string& flag);
 
 // The options of a submission that the user gives.
 struct SlurmOptions {

@@ -178,8 +178,13 @@ class Study {
     shown_ = std::max(shown_, std::clamp(fraction, 0.0, 1.0));
     if (progress_) progress_({shown_, left, what});
   }
-  void report_estimate(const std::string& what) {
-    if (estimate_) report(estimate_->fraction(), estimate_->seconds_left(), what);
+  // With no estimate (a task of a plan), the share of the units rendered.
+  void report_estimate(const std::string& what, double share = 0) {
+    if (estimate_) {
+      report(estimate_->fraction(), estimate_->seconds_left(), what);
+    } else {
+      report(share, -1, what);
+    }
   }
   Sequence load(const SceneModel& model, const StudyVariant& v, int scene) const;
   VariantResult measure(const StudyVariant& v, const Sequence& s, const Sequence& ref,
@@ -318,18 +323,16 @@ int Study::render(const std::vector<StudyUnit>& units,
       method_of = {u.scene, u.variant, u.batch};
     }
     const std::string what = u.id;
-    report_estimate(what);
+    report_estimate(what, double(k) / double(units.size()));
     RenderSettings rs;
     rs.threads = c_.threads;
     rs.seed = v.options.seed;
     const long frames = u.last - u.first + 1 + (u.last > u.first ? warmup_frame_count(*method) : 0);
     long frames_done = 0;
     rs.progress = [&](long done, long total) {
-      if (estimate_) {
-        estimate_->partial(u.seconds * (double(frames_done) + double(done) / double(total)) /
-                           double(frames));
-        report_estimate(what);
-      }
+      const double part = (double(frames_done) + double(done) / double(total)) / double(frames);
+      if (estimate_) estimate_->partial(u.seconds * part);
+      report_estimate(what, (double(k) + part) / double(units.size()));
       if (done == total) ++frames_done;
     };
     const Clock::time_point t_unit = Clock::now();
