@@ -39,24 +39,24 @@ stop() {
   conf=$dir/slurm.conf
   [ -f "$conf" ] || { echo "slurm-local: no cluster in $dir" >&2; return 0; }
   export SLURM_CONF=$conf
-  if [ -f "$dir/slurmctld.pid" ] && kill -0 "$(cat "$dir/slurmctld.pid")" 2>/dev/null; then
+  if [ -f "$dir/slurmctld.pid" ] && kill -0 "$(cat "$dir/slurmctld.pid" 2>/dev/null)" 2>/dev/null; then
     scancel --full --quiet --user "$(id -un)" 2>/dev/null || true
     scontrol shutdown 2>/dev/null || true
   fi
   # munged has no shutdown command: its pid file.
-  [ -f "$dir/munged.pid" ] && kill "$(cat "$dir/munged.pid")" 2>/dev/null || true
+  [ -f "$dir/munged.pid" ] && kill "$(cat "$dir/munged.pid" 2>/dev/null)" 2>/dev/null || true
   # Wait for the daemons to end (at most 5 s), then kill what is left, by pid.
   for n in $(seq 50); do
     alive=0
     for f in slurmctld slurmd munged; do
-      if [ -f "$dir/$f.pid" ] && kill -0 "$(cat "$dir/$f.pid")" 2>/dev/null; then alive=1; fi
+      if [ -f "$dir/$f.pid" ] && kill -0 "$(cat "$dir/$f.pid" 2>/dev/null)" 2>/dev/null; then alive=1; fi
     done
     [ $alive -eq 0 ] && break
     sleep 0.1
   done
   for f in slurmctld slurmd munged; do
     if [ -f "$dir/$f.pid" ]; then
-      pid=$(cat "$dir/$f.pid")
+      pid=$(cat "$dir/$f.pid" 2>/dev/null)
       kill -0 "$pid" 2>/dev/null && kill -9 "$pid" 2>/dev/null || true
     fi
   done
