@@ -230,31 +230,6 @@ void run_task(const CompareArgs& a, const StudyConfig& c) {
       a.task, rendered, int(units.size()) - rendered, secs, p.tasks[a.task].seconds());
 }
 
-// The submission's folder: OUT/slurm/N, N one more than the last.
-std::string next_submission_dir(const std::string& out) {
-  const fs::path base = fs::absolute(fs::path(out) / "slurm");
-  fs::create_directories(base);
-  int n = 0;
-  for (const auto& e : fs::directory_iterator(base)) {
-    const std::string name = e.path().filename().string();
-    if (e.is_directory() && !name.empty() &&
-        name.find_first_not_of("0123456789") == std::string::npos)
-      n = std::max(n, std::stoi(name));
-  }
-  const fs::path dir = base / std::to_string(n + 1);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-// "123" from sbatch --parsable's "123" or "123;cluster".
-std::string job_id(const std::string& out, const std::vector<std::string>& argv) {
-  std::string id = out.substr(0, out.find_first_of(";\n"));
-  if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos) {
-    throw Error("--slurm: `" + shell_join(argv) + "` printed no job id (got '" + out + "')");
-  }
-  return id;
-}
-
 // The largest array index the cluster takes (MaxArraySize - 1; Slurm's default 1001).
 int max_array_index() {
   const CommandOutput r = run_program({"scontrol", "show", "config"});
@@ -344,7 +319,7 @@ void submit_study(const CompareArgs& a, const StudyConfig& c) {
                 "); group units into fewer tasks with --task-seconds S (e.g. --task-seconds " +
                 std::to_string(int(std::ceil(p.core_seconds() / max_array_index()))) + ")");
   }
-  const std::string dir = next_submission_dir(a.out);
+  const std::string dir = next_submission_dir((fs::path(a.out) / "slurm").string());
   const std::string plan_file = (fs::path(dir) / "plan.json").string();
   write_file_atomic(plan_file, plan_to_json(p));
   const std::string time =

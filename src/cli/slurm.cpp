@@ -342,4 +342,27 @@ std::vector<std::string> queued_jobs(const std::vector<std::string>& ids) {
   return out;
 }
 
+std::string next_submission_dir(const std::string& folder) {
+  const fs::path base = fs::absolute(folder);
+  fs::create_directories(base);
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(base)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_directory() && !name.empty() &&
+        name.find_first_not_of("0123456789") == std::string::npos)
+      n = std::max(n, std::stoi(name));
+  }
+  const fs::path dir = base / std::to_string(n + 1);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+std::string job_id(const std::string& out, const std::vector<std::string>& argv) {
+  std::string id = out.substr(0, out.find_first_of(";\n"));
+  if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos) {
+    throw Error("--slurm: `" + shell_join(argv) + "` printed no job id (got '" + out + "')");
+  }
+  return id;
+}
+
 }  // namespace sg

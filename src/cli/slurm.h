@@ -31,7 +31,7 @@ std::string shell_quote(const std::string& s);
 std::string shell_join(const std::vector<std::string>& argv);
 
 struct CommandOutput {
-  int status = 0;      // exit status; 127 when the program is not found
+  int status = 0;       // exit status; 127 when the program is not found
   bool started = true;  // false: it could not be started (not found)
   std::string out, err;
 };
@@ -88,5 +88,10 @@ std::vector<std::string> arguments_without(const std::vector<std::string>& args,
 
 // Jobs of this user still in the queue among `job_ids`: "ID STATE REASON" lines (squeue).
 std::vector<std::string> queued_jobs(const std::vector<std::string>& job_ids);
+
+// A submission's folder: FOLDER/N (created), N one more than the last there.
+std::string next_submission_dir(const std::string& folder);
+// "123" from sbatch --parsable's "123" or "123;cluster"; throws sg::Error naming `argv`.
+std::string job_id(const std::string& out, const std::vector<std::string>& argv);
 
 }  // namespace sg

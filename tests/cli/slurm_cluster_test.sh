@@ -4,8 +4,9 @@
 # and its merge job, two tasks are killed on purpose in the middle of their unit
 # (SUNGLINT_TEST_KILL_TASKS: the process SIGKILLs itself, as the OOM killer would), the same
 # command run again resubmits exactly the two missing units and the merge, and the result
-# equals a local run: the same frames byte for byte, the same results.json numbers. The
-# cluster is stopped on every exit, failures included.
+# equals a local run: the same frames byte for byte, the same results.json numbers; then
+# `render --slurm` over a frame range, and again for a frame removed. The cluster is stopped
+# on every exit, failures included.
 #
 # Exit 77 (skipped) when slurm-wlm or munge is not installed, unless SUNGLINT_REQUIRE_SLURM=1
 # (CI), which makes that a failure.
@@ -118,6 +119,23 @@ done
 [ "$(ls sharded/cache/*.exr | wc -l)" -eq 8 ] || fail "sharded cache: not 8 frames"
 python3 "$src/tests/cli/same_results.py" local/results.json sharded/results.json ||
   fail "results.json differ"
+
+# 4. render --slurm: the frames as an array, then only a missing one; equal to a local render.
+frames=("$src/scenes/simple.json" -m point --frames 0-3 --width 32 --height 18 -q)
+"$bin" render "${frames[@]}" -o local-frames/p_%04d.exr --mkdir >/dev/null 2>&1 || fail "local render"
+"$bin" render "${frames[@]}" -o frames/p_%04d.exr --mkdir --slurm >render1.log 2>&1 ||
+  fail "render --slurm: $(cat render1.log)"
+id=$(sed -n 's/^submitted job array \([0-9]*\):.*/\1/p' render1.log)
+wait_gone "$id" 30 || fail "render array $id still queued"
+rm -f frames/p_0002.exr
+"$bin" render "${frames[@]}" -o frames/p_%04d.exr --slurm >render2.log 2>&1
+grep -q "submitted job array [0-9]*: 1 of frames 0-3" render2.log || fail "render resubmission: $(cat render2.log)"
+id=$(sed -n 's/^submitted job array \([0-9]*\):.*/\1/p' render2.log)
+wait_gone "$id" 30 || fail "render array $id still queued"
+for f in 0 1 2 3; do
+  cmp -s "local-frames/p_000$f.exr" "frames/p_000$f.exr" || fail "render --slurm: frame $f differs"
+done
+echo "render --slurm done after $(ms) ms"
 
 stop_cluster
 [ -d "$(dirname "$SLURM_CONF")" ] && fail "the cluster's folder was left behind"
