@@ -6,6 +6,7 @@
 // flags of `render` ("supersample --samples 6x6x1"): each variant is one shell word, so
 // no separator can collide with a flag's value.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 
@@ -19,6 +20,7 @@
 #include "methods/method.h"
 #include "report/cache.h"
 #include "report/study.h"
+#include "web/web_page.h"
 
 namespace sg {
 namespace {
@@ -158,6 +160,12 @@ void run_compare(const CompareArgs& a) {
   c.video = !a.no_video;
   c.command = command_line(a);
 
+  // The live page of the study's scenes at its size (docs/web.md), which the report links.
+  web::WebPageOptions live;
+  live.out_dir = (std::filesystem::path(a.out) / "web").string();
+  for (const auto& s : c.scenes)
+    live.scenes.push_back({s.file, s.scene.width, s.scene.height});
+
   ProgressBar bar("compare", !a.quiet);
   std::string last;
   const StudyResults r = run_study(c, [&](double f, const std::string& what) {
@@ -173,6 +181,7 @@ void run_compare(const CompareArgs& a) {
     }
   });
   bar.finish();
+  web::write_web_page(live);
 
   std::printf("%-10s %-32s %9s %9s %9s %9s %10s\n", "scene", "variant", "rmse", "temporal", "near",
               "far", "ms/frame");
@@ -191,6 +200,7 @@ void run_compare(const CompareArgs& a) {
   }
   std::printf("report: %s/index.html (results.json, results.csv, results.md beside it)\n",
               a.out.c_str());
+  std::printf("live page: %s/index.html\n", live.out_dir.c_str());
 }
 
 }  // namespace
