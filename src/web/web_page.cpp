@@ -251,7 +251,6 @@ WebPage write_web_page(const WebPageOptions& o) {
 
   const PathTables& tables = PathTables::shared();
   json data = {
-      {"generator", "sunglint 0.1.0"},
       {"kernel", gl_engine::kernel_fingerprint()},
       {"scenes", scenes},
       {"methods", methods_json(tables.kernel_info_float(), kernel_fit_texture().info_float)},
