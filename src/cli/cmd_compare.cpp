@@ -30,6 +30,7 @@
 #include "report/cache.h"
 #include "report/plan.h"
 #include "report/study.h"
+#include "web/web_page.h"
 
 namespace sg {
 namespace {
@@ -468,10 +469,17 @@ void run_compare(const CompareArgs& a) {
   if (a.plan) return run_plan(a, c);
   if (a.slurm.submit) return submit_study(a, c);
 
+  // The live page of the study's scenes at its size (docs/web.md), which the report links.
+  web::WebPageOptions live;
+  live.out_dir = (std::filesystem::path(a.out) / "web").string();
+  for (const auto& s : c.scenes)
+    live.scenes.push_back({s.file, s.scene.width, s.scene.height});
+
   ProgressBar bar("compare", !a.quiet);
   const StudyResults r =
       a.merge ? merge_study(c, progress_of(bar)) : run_study(c, progress_of(bar));
   bar.finish();
+  web::write_web_page(live);
 
   std::printf("%-10s %-32s %9s %9s %9s %9s %10s\n", "scene", "variant", "rmse", "temporal", "near",
               "far", "ms/frame");
@@ -490,6 +498,7 @@ void run_compare(const CompareArgs& a) {
   }
   std::printf("report: %s/index.html (results.json, results.csv, results.md beside it)\n",
               a.out.c_str());
+  std::printf("live page: %s/index.html\n", live.out_dir.c_str());
 }
 
 }  // namespace

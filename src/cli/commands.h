@@ -15,5 +15,6 @@ void add_compare_command(CLI::App& app);
 void add_report_command(CLI::App& app);
 void add_ocean_command(CLI::App& app);
 void add_view_command(CLI::App& app);
+void add_web_command(CLI::App& app);
 
 }  // namespace sg

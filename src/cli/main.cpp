@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
   sg::add_report_command(app);
   sg::add_ocean_command(app);
   sg::add_view_command(app);
+  sg::add_web_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

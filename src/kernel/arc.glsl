@@ -172,10 +172,10 @@ SG_FN ArcFractions arc_fractions(vec3 r0_in, vec3 r1_in, IN(Light) l) {
     arc.theta = kPi;
   }
 
-  Intervals cone =
-      misses_light ? intervals_empty() : cap_on_arc(arc, l.L, l.sin_radius, l.cos_radius);
-  Intervals below =
-      stays_above ? intervals_empty() : cap_on_arc(arc, vec3(0.0, -1.0, 0.0), 1.0, 0.0);
+  Intervals cone = intervals_empty();
+  if (!misses_light) cone = cap_on_arc(arc, l.L, l.sin_radius, l.cos_radius);
+  Intervals below = intervals_empty();
+  if (!stays_above) below = cap_on_arc(arc, vec3(0.0, -1.0, 0.0), 1.0, 0.0);
   ArcFractions f;
   f.below = clamp(intervals_measure(below) / arc.theta, 0.0, 1.0);
   f.in_light = clamp((intervals_measure(cone) - intervals_overlap(cone, below)) / arc.theta, 0.0,

@@ -15,9 +15,13 @@
 //    umulExtended) and texelFetch on the table types below;
 //  - float literals written with a decimal point (2.0, never 2 or 2.0f); a vector is never
 //    mixed with an int. The float build compiles with -fsingle-precision-constant, so a
-//    literal is a float there, as in GLSL.
+//    literal is a float there, as in GLSL;
+//  - the wave buffer read through wave_texel(waves, i) only; constant arrays initialised as
+//    SG_ARRAY(T, N, (v0, v1, ...)) (GLSL ES has no brace initialisers).
 // Not allowed: pointers, references, std::, templates, exceptions, allocation, static or
-// thread_local state, recursion, swizzles beyond .x/.y/.z/.w, struct constructors.
+// thread_local state, recursion, swizzles beyond .x/.y/.z/.w, struct constructors, and (for
+// GLSL ES 3.00 and WebGL 2, kernel/glsl_es_prelude.glsl) the ternary operator on structs,
+// names beginning with webgl_ or _webgl, and any name with two consecutive underscores.
 //
 // Include this file, then, inside a namespace of your own, kernel/cpp_types.h with
 // SG_KERNEL_REAL defined as double or float (kernel/kernel_double.h does both).
@@ -38,6 +42,11 @@
 // Every kernel function: inline in C++ (the kernel is included by several translation
 // units), nothing in GLSL.
 #define SG_FN inline
+// A constant array's initialiser: `const real k[2] = SG_ARRAY(real, 2, (1.0, 2.0));` is
+// `{1.0, 2.0}` in C++ and `real[2](1.0, 2.0)` in GLSL.
+#define SG_ARRAY_ITEMS(...) __VA_ARGS__
+#define SG_ARRAY(T, N, ITEMS) \
+  { SG_ARRAY_ITEMS ITEMS }
 
 namespace sg::kernel_tables {
 
@@ -51,6 +60,12 @@ struct R32Texture2D {  // GLSL sampler2D (R32F): texel (x, y) = data[y * width +
 struct R32Texture3D {  // GLSL sampler2DArray (R32F): texel (x, y, layer)
   const float* data = nullptr;
   int width = 0, height = 0, layers = 0;
+};
+// A 1-D table of the host's doubles (kernel/path_table_gen.glsl: the fine grids the path
+// tables are integrated from); in GLSL an R32F buffer, read with line_value.
+struct TableLine {
+  const double* data = nullptr;
+  int size = 0;
 };
 
 }  // namespace sg::kernel_tables

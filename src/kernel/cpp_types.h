@@ -55,6 +55,7 @@ using glm::transpose;
 using glm::umulExtended;
 using sg::kernel_tables::R32Texture2D;
 using sg::kernel_tables::R32Texture3D;
+using sg::kernel_tables::TableLine;
 
 // GLSL's isnan / isinf on scalars.
 inline bool isnan(real x) {
@@ -76,6 +77,11 @@ inline vec4 texelFetch(const R32Texture3D& t, const ivec3& p, int) {
       0, 0, 1);
 }
 
+// Value i of a 1-D table (GLSL: texelFetch of an R32F buffer).
+inline real line_value(const TableLine& t, int i) {
+  return real(t.data[i]);
+}
+
 // The precision's constants (the GLSL prelude defines the float ones).
 const real kRealEpsilon = std::numeric_limits<real>::epsilon();
 const real kRealMax = std::numeric_limits<real>::max();
@@ -89,6 +95,8 @@ struct WaveBuffer {
   int size = 0;  // texels
   sg::wave_simd::Arrays<real> arrays;
 };
-inline vec4 texelFetch(const WaveBuffer& b, int i) {
+// Texel i of the wave buffer (GLSL 4.50: texelFetch of the samplerBuffer; GLSL ES: of a
+// 2D texture, row by row).
+inline vec4 wave_texel(const WaveBuffer& b, int i) {
   return b.data[i];
 }

@@ -28,7 +28,12 @@ SG_FN Footprint pixel_footprint(IN(WaveBuffer) waves, IN(Frame) f, real px, real
   vec3 d = camera_direction(f.camera, px, py);  // unnormalised: linear in (px, py)
   vec3 o = f.camera.position;
   real len = length(d);
-  RayHit hit = displaced ? intersect_displaced(waves, f, o, d / len, dt) : intersect_flat(o, d);
+  RayHit hit;
+  if (displaced) {
+    hit = intersect_displaced(waves, f, o, d / len, dt);
+  } else {
+    hit = intersect_flat(o, d);
+  }
   if (!hit.hit) return fp;
   // intersect_displaced works on the unit direction: its parameter in d's units.
   real s = displaced ? hit.s / len : hit.s;

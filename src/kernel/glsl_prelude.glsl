@@ -10,9 +10,13 @@
 #ifndef SG_MAX_SEGMENTS
 #define SG_MAX_SEGMENTS 8
 #endif
+#define SG_ARRAY(T, N, ITEMS) T[N] ITEMS
 #define WaveBuffer samplerBuffer
+#define wave_texel(waves, i) texelFetch(waves, i)
 #define R32Texture2D sampler2D
 #define R32Texture3D sampler2DArray
+#define TableLine samplerBuffer
+#define line_value(line, i) texelFetch(line, i).x
 
 const real kRealEpsilon = 1.1920928955078125e-07;
 const real kRealMax = 3.4028234663852886e+38;

@@ -22,6 +22,7 @@
 #include "kernel/gaussian.glsl"
 #include "kernel/arc.glsl"
 #include "kernel/path_table.glsl"
+#include "kernel/path_table_gen.glsl"
 #include "kernel/kernel_fit.glsl"
 #include "kernel/reflection_path.glsl"
 #include "kernel/reflection_footprint.glsl"

@@ -160,15 +160,15 @@ SG_FN real poly6_derivative(IN(Poly6) p, real s) {
 }
 
 // C(k, j) / C(6, j) for j <= k: power-basis to Bernstein coefficients of degree 6.
-const real kPowerToBernstein6[49] = {
-    1.0, 0.0,       0.0,         0.0,         0.0,        0.0,       0.0,  //
-    1.0, 1.0 / 6.0, 0.0,         0.0,         0.0,        0.0,       0.0,  //
-    1.0, 2.0 / 6.0, 1.0 / 15.0,  0.0,         0.0,        0.0,       0.0,  //
-    1.0, 3.0 / 6.0, 3.0 / 15.0,  1.0 / 20.0,  0.0,        0.0,       0.0,  //
-    1.0, 4.0 / 6.0, 6.0 / 15.0,  4.0 / 20.0,  1.0 / 15.0, 0.0,       0.0,  //
-    1.0, 5.0 / 6.0, 10.0 / 15.0, 10.0 / 20.0, 5.0 / 15.0, 1.0 / 6.0, 0.0,  //
-    1.0, 1.0,       1.0,         1.0,         1.0,        1.0,       1.0,
-};
+const real kPowerToBernstein6[49] =
+    SG_ARRAY(real, 49,
+             (1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,                                     //
+              1.0, 1.0 / 6.0, 0.0, 0.0, 0.0, 0.0, 0.0,                               //
+              1.0, 2.0 / 6.0, 1.0 / 15.0, 0.0, 0.0, 0.0, 0.0,                        //
+              1.0, 3.0 / 6.0, 3.0 / 15.0, 1.0 / 20.0, 0.0, 0.0, 0.0,                 //
+              1.0, 4.0 / 6.0, 6.0 / 15.0, 4.0 / 20.0, 1.0 / 15.0, 0.0, 0.0,          //
+              1.0, 5.0 / 6.0, 10.0 / 15.0, 10.0 / 20.0, 5.0 / 15.0, 1.0 / 6.0, 0.0,  //
+              1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0));
 
 // The Bernstein coefficients of p restricted to [a, b] (p(a + (b - a) s), s in [0, 1]):
 // a Taylor shift by a (repeated synthetic division), a scaling by b - a, then the basis
@@ -505,7 +505,12 @@ SG_FN bool reference_pixel_busy(IN(WaveBuffer) waves, IN(Frame) f, real margin, 
     real py = real(j) + (q == 0 ? 0.5 : real((q - 1) / 2));
     vec3 d = normalize(camera_direction(f.camera, px, py));
     vec3 o = f.camera.position;
-    RayHit hit = f.displaced ? intersect_displaced(waves, f, o, d, 0.0) : intersect_flat(o, d);
+    RayHit hit;
+    if (f.displaced) {
+      hit = intersect_displaced(waves, f, o, d, 0.0);
+    } else {
+      hit = intersect_flat(o, d);
+    }
     if (!hit.hit) continue;
     hits += 1;
     PathGradients p = path_gradients(waves, f, hit.point);

@@ -16,7 +16,12 @@
 SG_FN vec4 sample_weights(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, real dt) {
   vec3 d = normalize(camera_direction(f.camera, px, py));
   vec3 o = f.camera.position;
-  RayHit hit = f.displaced ? intersect_displaced(waves, f, o, d, dt) : intersect_flat(o, d);
+  RayHit hit;
+  if (f.displaced) {
+    hit = intersect_displaced(waves, f, o, d, dt);
+  } else {
+    hit = intersect_flat(o, d);
+  }
   if (!hit.hit) return miss_weights(f, d);
   vec2 g = water_gradient(waves, f, hit.point.x, hit.point.z, dt);
   return water_weights(f, normal_direction(g), -d);

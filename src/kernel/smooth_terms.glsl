@@ -44,10 +44,10 @@ SG_FN vec2 smooth_integrand(IN(Frame) f, vec2 s, vec3 v) {
 }
 
 // 8-point Gauss-Legendre on [0, 1]: nodes (1 +- x) / 2, weights w / 2.
-const real kGl8X[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                       0.9602898564975363};
-const real kGl8W[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                       0.1012285362903763};
+const real kGl8X[4] = SG_ARRAY(
+    real, 4, (0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363));
+const real kGl8W[4] = SG_ARRAY(
+    real, 4, (0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763));
 
 // (E[F], E[F z], mass) of the standard normal u over [c, e], c > -8 the horizon's cut
 // (e may be the clamp at 10). In the upper-tail probability q = Q(u) the piece runs from

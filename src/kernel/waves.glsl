@@ -31,8 +31,8 @@ struct Wave {
 };
 
 SG_FN Wave wave_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
-  vec4 t0 = texelFetch(waves, i * f.wave_stride);
-  vec4 t1 = texelFetch(waves, i * f.wave_stride + 1);
+  vec4 t0 = wave_texel(waves, i * f.wave_stride);
+  vec4 t1 = wave_texel(waves, i * f.wave_stride + 1);
   Wave w;
   w.A = t0.x;
   w.a = t0.y;
@@ -46,7 +46,7 @@ SG_FN Wave wave_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
 
 // (cos, sin) of c (end - t_k): the rotation from the display time back to instant k < K.
 SG_FN vec2 wave_rotation(IN(WaveBuffer) waves, IN(Frame) f, int i, int k) {
-  vec4 t = texelFetch(waves, i * f.wave_stride + 2 + k / 2);
+  vec4 t = wave_texel(waves, i * f.wave_stride + 2 + k / 2);
   return (k % 2) == 0 ? vec2(t.x, t.y) : vec2(t.z, t.w);
 }
 
@@ -57,10 +57,10 @@ SG_FN real wave_phase(IN(Wave) w, real x, real z, real dt) {
 
 // The sums of entry i (0 <= i <= N) of the table above.
 SG_FN vec4 wave_suffix_moments(IN(WaveBuffer) waves, IN(Frame) f, int i) {
-  return texelFetch(waves, f.wave_count * f.wave_stride + 2 * i);
+  return wave_texel(waves, f.wave_count * f.wave_stride + 2 * i);
 }
 SG_FN vec4 wave_bounds_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
-  return texelFetch(waves, f.wave_count * f.wave_stride + 2 * i + 1);
+  return wave_texel(waves, f.wave_count * f.wave_stride + 2 * i + 1);
 }
 
 // The first position whose wavenumber is at least `k` (N when none is): a binary search
@@ -70,7 +70,7 @@ SG_FN int first_wave_from(IN(WaveBuffer) waves, IN(Frame) f, real k) {
   int hi = f.wave_count;
   while (lo < hi) {
     int mid = (lo + hi) / 2;
-    if (texelFetch(waves, mid * f.wave_stride + 1).y < k) {
+    if (wave_texel(waves, mid * f.wave_stride + 1).y < k) {
       lo = mid + 1;
     } else {
       hi = mid;

@@ -1,5 +1,6 @@
 #include "report/html.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -189,6 +190,21 @@ std::string flicker_section(const SceneResult& sc) {
   return o.str();
 }
 
+// A URL query value: every byte but unreserved ones (RFC 3986) as %XX.
+std::string url_escape(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += "0123456789ABCDEF"[c >> 4];
+      out += "0123456789ABCDEF"[c & 15];
+    }
+  }
+  return out;
+}
+
 std::string scene_section(const SceneResult& sc, const StudyResults& r) {
   const std::string id = "scene-" + file_slug(sc.name);
   std::ostringstream o;
@@ -199,6 +215,10 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
     << fmt("%.3g", sc.reference.at(Region::image).flicker) << ", near "
     << fmt("%.3g", sc.reference.at(Region::near).flicker) << ", far "
     << fmt("%.3g", sc.reference.at(Region::far).flicker) << ".</p>\n";
+  // The live page `compare` writes beside the report (web/web_page.h, docs/web.md).
+  o << "<p class=\"live\"><a href=\"web/index.html?scene=" << html_escape(url_escape(sc.name))
+    << "&amp;method=staa&amp;split=point\">" << html_escape(sc.name)
+    << " live in the browser</a>: staa | point, the kernel as WebGL 2 shaders (sunglint web)</p>\n";
   o << scene_table(sc);
   if (sc.equal_cost) {
     o << "<p class=\"equal-cost\">"

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
-#include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -48,33 +47,6 @@ void validate(const PathTableParams& p) {
 
 // ---------------------------------------------------------------- generation
 
-// F(d) for one sigma on a fine uniform grid, read back with 4-point (cubic) Lagrange
-// interpolation. F is even in d, so the point before 0 mirrors the one after it.
-class FineF {
- public:
-  FineF(double sigma, double d_max, double step) : step_(step) {
-    const int n = static_cast<int>(std::ceil(d_max / step)) + 4;
-    g_.resize(n);
-    for (int j = 0; j < n; ++j)
-      g_[j] = disk_gaussian(j * step, sigma);
-  }
-  double operator()(double d) const {
-    const double x = d / step_;
-    const int j = static_cast<int>(x);
-    if (j + 2 >= static_cast<int>(g_.size())) return 0;  // beyond sqrt(2) R: F < 1e-9
-    const double t = x - j;
-    const double gm = j == 0 ? g_[1] : g_[j - 1];
-    const double g0 = g_[j], g1 = g_[j + 1], g2 = g_[j + 2];
-    // Newton form of the cubic through the nodes 0, 1, -1, 2.
-    return g0 + t * ((g1 - g0) + (t - 1) * (0.5 * (g1 - 2 * g0 + gm) +
-                                            (t + 1) * (g2 - 3 * g1 + 3 * g0 - gm) / 6));
-  }
-
- private:
-  double step_;
-  std::vector<double> g_;
-};
-
 }  // namespace
 
 PathTables::PathTables(const PathTableParams& p) : p_(p) {
@@ -88,6 +60,20 @@ PathTables::PathTables(const PathTableParams& p) : p_(p) {
   sigma_[p.n_sigma - 1] = p.sigma_max;
   for (int k = 0; k < p.n_sigma; ++k)
     extent_[k] = 1 + p.extent_k * sigma_[k];
+}
+
+PathTables::FineGrid PathTables::fine_grid(double sigma, double R) {
+  FineGrid g;
+  g.step = std::min(sigma / 16, R / 1024);
+  const int n = static_cast<int>(std::ceil(std::sqrt(2.0) * R / g.step)) + 4;
+  g.values.resize(n);
+  for (int j = 0; j < n; ++j)
+    g.values[j] = disk_gaussian(j * g.step, sigma);
+  return g;
+}
+
+int PathTables::cell_panels(double hu, double sigma) {
+  return std::max(1, static_cast<int>(std::ceil(hu / sigma)));
 }
 
 PathTables PathTables::generate(const PathTableParams& params, int threads) {
@@ -105,19 +91,19 @@ PathTables PathTables::generate(const PathTableParams& params, int threads) {
     if (sigma == 0) {
       for (int j = 0; j < p.n_v; ++j) {
         const double v = t.v_node(j, k);
-        const double c = std::sqrt(std::max(0.0, 1 - v * v));
         float* row = &t.s_[(size_t(k) * p.n_v + j) * p.n_u];
         for (int i = 0; i < p.n_u; ++i)
-          row[i] = float(std::clamp(t.u_node(i, k), -c, c) + c);
+          row[i] = float(kd::path_table_chord(t.u_node(i, k), v));
       }
       return;
     }
-    const FineF fine(sigma, std::sqrt(2.0) * R, std::min(sigma / 16, R / 1024));
-    const int panels = std::max(1, static_cast<int>(std::ceil(hu / sigma)));
+    // F on the fine grid, integrated by the kernel's functions (kernel/path_table_gen.glsl).
+    const FineGrid fine = fine_grid(sigma, R);
+    const kd::TableLine line{fine.values.data(), static_cast<int>(fine.values.size())};
+    const int count = line.size;
+    const double step = fine.step;
+    const int panels = cell_panels(hu, sigma);
     const double w = hu / panels;
-    using Gauss4 = boost::math::quadrature::gauss<double, 4>;
-    const auto& x = Gauss4::abscissa();  // the positive nodes on [-1, 1]
-    const auto& gw = Gauss4::weights();
     // Where F is exactly 1 or 0 (|d - 1| >= 40 sigma, disk_gaussian.h) the cell's integral
     // is its width or 0; the fine grid holds those exact values, so skipping is exact.
     const double d_one = 1 - 40 * sigma, d_zero = 1 + 40 * sigma;
@@ -141,15 +127,7 @@ PathTables PathTables::generate(const PathTableParams& params, int threads) {
         } else {
           for (int m = 0; m < panels; ++m) {
             const double c = u0 + (m + 0.5) * w, r = 0.5 * w;
-            double cell = 0;
-            for (size_t q = 0; q < x.size(); ++q) {
-              const double dx = r * x[q];
-              const double f = (x[q] == 0) ? fine(std::sqrt(c * c + v2))
-                                           : fine(std::sqrt((c - dx) * (c - dx) + v2)) +
-                                                 fine(std::sqrt((c + dx) * (c + dx) + v2));
-              cell += gw[q] * f;
-            }
-            sum += r * cell;
+            sum += kd::path_cell_panel(line, 0, count, step, c, r, v2);
           }
         }
         S[i + 1] = sum;

@@ -30,8 +30,10 @@
 // Generation: the radial symmetry of F makes each (v, sigma) row of S a running sum along u.
 // Per slice F is evaluated once on a fine 1D distance grid (step min(sigma / 16, R / 1024),
 // cubic Lagrange interpolation between its points), and each table cell [u_i, u_i+1] is
-// integrated with 4-point Gauss-Legendre (Boost) on ceil(cell / sigma) sub-panels, so
-// that the rule resolves F's edge of width sigma; the cells are summed in double.
+// integrated with 4-point Gauss-Legendre on ceil(cell / sigma) sub-panels, so that the
+// rule resolves F's edge of width sigma; the cells are summed in double. The interpolation
+// and the rule are the kernel's (kernel/path_table_gen.glsl), which `sunglint web` runs on
+// the same fine grids in a browser (docs/web.md).
 // The slices are independent and are computed in parallel, so the bytes do not depend on
 // the number of threads.
 //
@@ -132,6 +134,17 @@ class PathTables {
   kernel_tables::R32Texture3D s_texture() const { return {s_.data(), p_.n_u, p_.n_v, p_.n_sigma}; }
   kd::PathTableInfo kernel_info() const;
   kf::PathTableInfo kernel_info_float() const;
+
+  // ---- generation (kernel/path_table_gen.glsl)
+  // F(j step, sigma) for j = 0 .. ceil(sqrt(2) R / step) + 3, step = min(sigma / 16,
+  // R / 1024): the fine grid slice (sigma > 0, extent R) is integrated from.
+  struct FineGrid {
+    double step = 0;
+    std::vector<double> values;
+  };
+  static FineGrid fine_grid(double sigma, double R);
+  // Sub-panels of a u cell of width hu: ceil(hu / sigma), at least 1.
+  static int cell_panels(double hu, double sigma);
 
   // ---- the grid, for tests and tools
   const PathTableParams& params() const { return p_; }

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -153,6 +154,21 @@ TEST(PathTable, SNodesMatchDirectQuadrature) {
 }
 
 // ---------------------------------------------------------------- the lookups
+
+// The generation's quadrature (kernel/path_table_gen.glsl) is Boost's 4-point Gauss-Legendre
+// rule to the last bit, and its fine grid's cubic passes through the grid's values.
+TEST(PathTable, GenerationRuleIsBoostsGaussLegendre) {
+  using Gauss4 = boost::math::quadrature::gauss<double, 4>;
+  ASSERT_EQ(Gauss4::abscissa().size(), 2u);
+  for (int q = 0; q < 2; ++q) {
+    EXPECT_EQ(kd::kGl4X[q], Gauss4::abscissa()[q]) << q;
+    EXPECT_EQ(kd::kGl4W[q], Gauss4::weights()[q]) << q;
+  }
+  const PathTables::FineGrid g = PathTables::fine_grid(0.1, 1.6);
+  const kd::TableLine line{g.values.data(), static_cast<int>(g.values.size())};
+  for (int j : {0, 1, 17, 500})
+    EXPECT_NEAR(kd::fine_f(line, 0, line.size, g.step, j * g.step), g.values[j], 1e-14) << j;
+}
 
 TEST(PathTable, FLookupErrorOverTheRange) {
   const PathTables& t = table();

@@ -6,16 +6,18 @@
 #include <vector>
 
 #include "base/error.h"
+#include "embedded/display_sources.h"
 #include "gl/dispatch.h"
 #include "image/glare.h"
 
 namespace sg::viewer {
 namespace {
 
+// Every pass: the pipeline's functions (image/display.glsl, shared with the web page) and
+// where its glare passes read (unused by the others).
 const char* kCommon = R"(
 layout(local_size_x = 16, local_size_y = 16) in;
 uniform ivec2 size;
-bool inside(ivec2 p) { return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, size)); }
 )";
 
 // x = linear * 2^exposure (0 where not finite; alpha: a bit per non-finite channel),
@@ -26,19 +28,14 @@ layout(rgba32f, binding = 0) uniform writeonly image2D x_out;
 layout(rgba32f, binding = 1) uniform writeonly image2D b_out;
 uniform float scale;
 uniform float threshold;
+vec3 glare_source(ivec2 q) { return vec3(0.0); }
+float glare_tap(int i) { return 0.0; }
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (!inside(p)) return;
-  vec4 v = texelFetch(linear, p, 0);
-  vec3 x;
-  float flags = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    bool finite = !isnan(v[c]) && !isinf(v[c]);
-    x[c] = finite ? v[c] * scale : 0.0;
-    if (!finite) flags += float(1 << c);
-  }
-  imageStore(x_out, p, vec4(x, flags));
-  imageStore(b_out, p, vec4(max(x - vec3(threshold), vec3(0.0)), 0.0));
+  if (!display_inside(p, size)) return;
+  vec4 x = display_expose(texelFetch(linear, p, 0).rgb, scale);
+  imageStore(x_out, p, x);
+  imageStore(b_out, p, vec4(display_bright(x.rgb, threshold), 0.0));
 }
 )";
 
@@ -53,20 +50,18 @@ uniform int radius;
 uniform ivec2 axis;
 uniform float weight;
 uniform int accumulate;
+vec3 glare_source(ivec2 q) { return imageLoad(src, q).rgb; }
+float glare_tap(int i) { return k[i]; }
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (!inside(p)) return;
-  vec3 s = vec3(0.0);
-  for (int t = -radius; t <= radius; ++t) {
-    ivec2 q = p + t * axis;
-    if (inside(q)) s += k[offset + t + radius] * imageLoad(src, q).rgb;
-  }
+  if (!display_inside(p, size)) return;
+  vec3 s = display_blur(p, size, offset, radius, axis);
   vec3 prev = accumulate != 0 ? imageLoad(dst, p).rgb : vec3(0.0);
   imageStore(dst, p, vec4(accumulate != 0 ? prev + weight * s : s, 0.0));
 }
 )";
 
-// A streak along `dir`: the bilinear scatter of glare.cpp gathered (gpu_display.h).
+// A streak along `dir`: the bilinear scatter of glare.cpp gathered (image/display.glsl).
 const char* kStreak = R"(
 layout(rgba32f, binding = 0) uniform readonly image2D src;
 layout(rgba32f, binding = 1) uniform image2D dst;
@@ -75,26 +70,17 @@ uniform int offset;
 uniform int radius;
 uniform vec2 dir;
 uniform float weight;
-vec3 at(ivec2 q) { return inside(q) ? imageLoad(src, q).rgb : vec3(0.0); }
+vec3 glare_source(ivec2 q) { return imageLoad(src, q).rgb; }
+float glare_tap(int i) { return k[i]; }
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (!inside(p)) return;
-  vec3 s = vec3(0.0);
-  for (int t = -radius; t <= radius; ++t) {
-    vec2 o = float(t) * dir;
-    vec2 fl = floor(o);
-    vec2 f = o - fl;
-    ivec2 q = p - ivec2(fl);
-    vec3 v = (1.0 - f.x) * (1.0 - f.y) * at(q) + f.x * (1.0 - f.y) * at(q - ivec2(1, 0)) +
-             (1.0 - f.x) * f.y * at(q - ivec2(0, 1)) + f.x * f.y * at(q - ivec2(1, 1));
-    s += k[offset + t + radius] * v;
-  }
+  if (!display_inside(p, size)) return;
+  vec3 s = display_streak(p, size, offset, radius, dir);
   imageStore(dst, p, vec4(imageLoad(dst, p).rgb + weight * s, 0.0));
 }
 )";
 
-// x - W b + the glare, the filmic curve (tonemap.cpp, aces_filmic), sRGB (display.cpp),
-// rounded to bytes, stored as byte / 255.
+// x - W b + the glare, the filmic curve, sRGB, rounded to bytes, stored as byte / 255.
 const char* kFinish = R"(
 layout(rgba32f, binding = 0) uniform readonly image2D x_in;
 layout(rgba32f, binding = 1) uniform readonly image2D b_in;
@@ -102,35 +88,22 @@ layout(rgba32f, binding = 2) uniform readonly image2D acc_in;
 layout(rgba32f, binding = 3) uniform writeonly image2D out_image;
 uniform float total_weight;
 uniform int glare;
-float aces(float x) {
-  if (isnan(x)) return 1.0;
-  if (!(x > 0.0)) return 0.0;
-  if (isinf(x)) return 1.0;
-  return clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-float srgb(float x) {
-  x = clamp(x, 0.0, 1.0);
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
-}
+vec3 glare_source(ivec2 q) { return vec3(0.0); }
+float glare_tap(int i) { return 0.0; }
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (!inside(p)) return;
-  vec4 x = imageLoad(x_in, p);
-  vec3 v = x.rgb;
-  if (glare != 0) v = v - total_weight * imageLoad(b_in, p).rgb + imageLoad(acc_in, p).rgb;
-  int flags = int(x.a);
-  vec3 o;
-  for (int c = 0; c < 3; ++c) {
-    float d = (flags & (1 << c)) != 0 ? 1.0 : aces(v[c]);
-    o[c] = floor(255.0 * srgb(d) + 0.5) / 255.0;
-  }
+  if (!display_inside(p, size)) return;
+  vec3 o = display_finish(imageLoad(x_in, p), imageLoad(b_in, p).rgb, imageLoad(acc_in, p).rgb,
+                          total_weight, glare != 0);
   imageStore(out_image, p, vec4(o, 1.0));
 }
 )";
 
 gl::Program compute(const char* name, const char* body) {
-  const gl::ShaderSource s[2] = {{"display_common.glsl", kCommon}, {name, body}};
-  return gl::Program::compute(std::span(s, 2));
+  const gl::ShaderSource s[3] = {{"display_common.glsl", kCommon},
+                                 gl::embedded_source(display_sources(), "image/display.glsl"),
+                                 {name, body}};
+  return gl::Program::compute(std::span(s, 3));
 }
 
 }  // namespace

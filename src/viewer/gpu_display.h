@@ -3,8 +3,9 @@
 // display_srgb8 of the same linear image, in float on the GPU instead of double on the
 // CPU (the bytes agree within 1/255 where a value falls on a rounding boundary).
 //
-// Passes, each one invocation per pixel: exposure and the bright part b = max(x - t, 0)
-// (non-finite values show white and do not glare); each Gaussian of the glare as two 1-D
+// The per-pixel functions are image/display.glsl's, which the web page's fragment shaders
+// share (src/web/). Passes, each one invocation per pixel: exposure and the bright part b = max(x -
+// t, 0) (non-finite values show white and do not glare); each Gaussian of the glare as two 1-D
 // passes (rows, then columns, black outside the image), added to an accumulator with its
 // weight; the star's streaks as a gather: the CPU's bilinear scatter of pixel q at
 // q + t d onto its four neighbours (image/glare.cpp, streak_blur) read backwards, each

@@ -1,10 +1,17 @@
 #!/usr/bin/env python3
-"""Holds the shading kernel's sources (src/kernel/*.glsl) to the subset of GLSL 4.50 that is
-also C++20 (the list is in src/kernel/cpp_prelude.h), then compiles the kernel as a GLSL
-compute shader with glslangValidator, the Khronos reference compiler.
+"""Holds the shading kernel's sources (src/kernel/*.glsl) to the subset of GLSL that is also
+C++20 (the list is in src/kernel/cpp_prelude.h), then compiles the kernel with
+glslangValidator, the Khronos reference compiler, twice: as a GLSL 4.50 compute shader (the GL
+engine) and as a GLSL ES 3.00 fragment shader (WebGL 2: `sunglint web`), each with a main
+that calls every entry point.
+
+glslang does not know WebGL's own restrictions on top of ES 3.00 (the WebGL 2 specification,
+"Differences Between WebGL and OpenGL ES 3.0"; ANGLE enforces them in browsers), so those
+the kernel could break are checked here by pattern: no ternary operator on structs, no names
+beginning with webgl_ or _webgl or holding two consecutive underscores.
 
 Usage: check_subset.py SOURCE_DIR [GLSLANG_VALIDATOR]
-Exit status 0 when every rule holds and the shader compiles; each violation is printed as
+Exit status 0 when every rule holds and both shaders compile; each violation is printed as
 file:line: rule.
 """
 import re
@@ -27,6 +34,9 @@ FORBIDDEN = [
     (r"\.(?:[xyzw]{2,4}|[rgba]{2,4}|[stpq]{2,4})\b(?!\s*\()", "no swizzles beyond one component"),
     (r"\b(in|out|inout)\s+\w+\s+\w+\s*[,)]", "parameters as IN(T), OUT(T), INOUT(T)"),
     (r"\b(uniform|buffer|shared|layout|discard|gl_\w+)\b", "no shader-stage GLSL in the kernel"),
+    (r"\btexelFetch\s*\(\s*waves\b", "the wave buffer is read with wave_texel (ES has no buffers)"),
+    (r"=\s*\{", "constant arrays as SG_ARRAY(T, N, (items)) (ES has no brace initialisers)"),
+    (r"\b(webgl_\w*|_webgl\w*|\w*__\w*)", "a name WebGL reserves (webgl_, _webgl, __)"),
     (r"\b(sample|input|output|filter|common|partition|active|flat|smooth|patch|precise|"
      r"subroutine|coherent|volatile|restrict|readonly|writeonly|resource|invariant|"
      r"centroid|noperspective|attribute|varying|lowp|mediump|highp|precision|superp|"
@@ -69,6 +79,36 @@ def check_file(path, problems):
                 problems.append(f"{where}: a kernel function is marked SG_FN: {raw.strip()}")
 
 
+def check_struct_ternaries(files, problems):
+    """WebGL forbids the ternary operator on structs (ANGLE: "ternary operator is not allowed
+    for structures"): a statement that declares a struct from a ternary, or whose ternary
+    yields a call of a function returning a struct, is reported."""
+    texts = {path: path.read_text() for path in files}
+    structs = set()
+    for text in texts.values():
+        structs.update(re.findall(r"^struct\s+(\w+)", text, flags=re.M))
+    returning = set()
+    for text in texts.values():
+        for kind, name in re.findall(r"^SG_FN\s+(\w+)\s+(\w+)\s*\(", text, flags=re.M):
+            if kind in structs:
+                returning.add(name)
+    names = "|".join(sorted(structs))
+    calls = "|".join(sorted(returning))
+    for path, text in texts.items():
+        code = "\n".join(strip_comments(line) for line in text.splitlines())
+        start = 0
+        for statement in re.split(r"(?<=[;{}])", code):
+            line = code.count("\n", 0, start + len(statement) - len(statement.lstrip())) + 1
+            start += len(statement)
+            if "?" not in statement:
+                continue
+            declares = names and re.search(rf"\b({names})\s+\w+\s*=[^;]*\?", statement)
+            yields = calls and re.search(rf"[?:]\s*({calls})\s*\(", statement)
+            if declares or yields:
+                problems.append(f"{path}:{line}: no ternary operator on structs (WebGL): "
+                                f"{' '.join(statement.split())[:100]}")
+
+
 def expand(source_dir, name, seen):
     """The file with its #include lines replaced by the files, as the GL engine does."""
     out = []
@@ -81,11 +121,18 @@ def expand(source_dir, name, seen):
     return "\n".join(out)
 
 
-# A main that calls every entry point, so that the compiler checks all of the kernel.
-TEST_MAIN = """
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 0) uniform writeonly image2D out_image;
-uniform samplerBuffer waves;
+# Mains that call every entry point, so that the compiler checks all of the kernel: a GL 4.50
+# compute shader, a GLSL ES 3.00 fragment shader.
+CALLS = """
+  w += stratified_pixel(waves, frame, counts, p.x, p.y);
+  w += staa_temporal_pixel(waves, frame, p.x, p.y);
+  w += reference_pixel(waves, frame, ref_params, p.x, p.y).weights;
+  w.x += path_cell_panel(line, 0, 8, 0.5, w.y, 0.25, 1.0) + path_table_chord(w.z, w.w);
+  StaaPath path;
+  StaaResult r = staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, frame, params, p.x,
+                            p.y, path);
+"""
+UNIFORMS = """
 uniform sampler2D table_f;
 uniform sampler2DArray table_s;
 uniform sampler2D fits;
@@ -95,40 +142,64 @@ uniform SampleCounts counts;
 uniform ReferenceParams ref_params;
 uniform PathTableInfo tinfo;
 uniform KernelFitInfo finfo;
+"""
+TEST_MAIN = """
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform writeonly image2D out_image;
+uniform samplerBuffer waves;
+uniform samplerBuffer line;
+""" + UNIFORMS + """
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  vec4 w = point_pixel(waves, frame, p.x, p.y);
-  w += stratified_pixel(waves, frame, counts, p.x, p.y);
-  w += staa_temporal_pixel(waves, frame, p.x, p.y);
-  w += reference_pixel(waves, frame, ref_params, p.x, p.y).weights;
-  StaaPath path;
-  StaaResult r = staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, frame, params, p.x,
-                            p.y, path);
+  vec4 w = point_pixel(waves, frame, p.x, p.y);""" + CALLS + """
   imageStore(out_image, p, w + r.weights);
 }
 """
+TEST_MAIN_ES = """
+uniform sampler2D waves;
+uniform sampler2D line;
+""" + UNIFORMS + """
+out vec4 weights_out;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 w = point_pixel(waves, frame, p.x, p.y);""" + CALLS + """
+  weights_out = w + r.weights;
+}
+"""
+
+
+
+def compile_shader(validator, text, suffix, what, problems):
+    with tempfile.NamedTemporaryFile("w", suffix=suffix, delete=False) as f:
+        f.write(text)
+        shader_path = f.name
+    result = subprocess.run([validator, shader_path], capture_output=True, text=True)
+    Path(shader_path).unlink()
+    if result.returncode != 0:
+        print(f"glslangValidator rejects the kernel as {what}:")
+        print(result.stdout + result.stderr)
+        problems.append(what)
 
 
 def main():
     source_dir = Path(sys.argv[1]) / "src"
     validator = sys.argv[2] if len(sys.argv) > 2 else "glslangValidator"
     problems = []
+    # The preludes map the subset onto a language (macros, ES's stand-ins): outside it.
+    preludes = ("glsl_prelude.glsl", "glsl_es_prelude.glsl")
     files = sorted((source_dir / "kernel").glob("*.glsl"))
     for path in files:
-        check_file(path, problems)
+        if path.name not in preludes:
+            check_file(path, problems)
+    check_struct_ternaries([p for p in files if p.name not in preludes], problems)
     for p in problems:
         print(p)
-    shader = "#version 450\n" + (source_dir / "kernel/glsl_prelude.glsl").read_text() + "\n"
-    shader += expand(source_dir, "kernel/interface.glsl", set()) + "\n"
-    shader += expand(source_dir, "kernel/kernel.glsl", set()) + "\n" + TEST_MAIN
-    with tempfile.NamedTemporaryFile("w", suffix=".comp", delete=False) as f:
-        f.write(shader)
-        shader_path = f.name
-    result = subprocess.run([validator, shader_path], capture_output=True, text=True)
-    if result.returncode != 0:
-        print("glslangValidator rejects the kernel as GLSL 4.50:")
-        print(result.stdout + result.stderr)
-        problems.append("glsl")
+    kernel = expand(source_dir, "kernel/interface.glsl", set()) + "\n"
+    kernel += expand(source_dir, "kernel/kernel.glsl", set()) + "\n"
+    gl = "#version 450\n" + (source_dir / "kernel/glsl_prelude.glsl").read_text() + "\n"
+    compile_shader(validator, gl + kernel + TEST_MAIN, ".comp", "GLSL 4.50", problems)
+    es = "#version 300 es\n" + (source_dir / "kernel/glsl_es_prelude.glsl").read_text() + "\n"
+    compile_shader(validator, es + kernel + TEST_MAIN_ES, ".frag", "GLSL ES 3.00", problems)
     print(f"{len(files)} kernel files checked, {len(problems)} problem(s)")
     return 1 if problems else 0
 

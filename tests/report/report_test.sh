@@ -34,6 +34,10 @@ for f in index.html results.json results.csv results.md chart.umd.min.js report.
   [ -s "$study/$f" ] && pass || fail "missing $study/$f"
 done
 grep -q "report: $study/index.html" <<<"$out" && pass || fail "compare does not say where the report is: $out"
+# The live page of the study's scenes (sunglint web, docs/web.md), linked from each scene.
+[ -s "$study/web/index.html" ] && [ -s "$study/web/data.js" ] && pass || fail "no live page in $study/web"
+grep -q 'href="web/index.html?scene=sunset&amp;method=staa&amp;split=point"' "$study/index.html" && pass ||
+  fail "the report does not link the live page of sunset"
 
 # The page as a reader opens it.
 if shot=$(node "$src/tests/report/check_page.mjs" "$study/index.html" "$work/screenshot.png" \
