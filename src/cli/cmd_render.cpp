@@ -96,6 +96,7 @@ void run_render(RenderArgs& a) {
     check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
     a.flags.finish();
     make_method(a.method, a.flags.options);  // the name and options, before any GL
+    a.flags.check_taken_by({a.method});
     check_engine_runs(a.flags.engine, a.method, a.flags.options);
   });
   const Engine engine = a.flags.engine;

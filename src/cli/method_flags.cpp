@@ -3,6 +3,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "base/error.h"
@@ -24,20 +25,44 @@ void MethodFlags::finish(const std::string& context) {
   }
 }
 
+void MethodFlags::check_taken_by(const std::vector<std::string>& methods,
+                                 const std::string& context) const {
+  for (const Scoped& s : scoped) {
+    if (s.option->count() == 0) continue;
+    bool taken = false;
+    for (const std::string& m : methods) {
+      for (const std::string& t : s.methods)
+        taken = taken || m == t;
+    }
+    if (taken) continue;
+    std::string names, takers;
+    for (const std::string& m : methods)
+      names += (names.empty() ? "" : ", ") + m;
+    for (const std::string& t : s.methods)
+      takers += (takers.empty() ? "" : ", ") + t;
+    const std::string flag = s.option->get_name();
+    const std::string whose = methods.empty()       ? "no method given here"
+                              : methods.size() == 1 ? "method " + names
+                                                    : "any of the methods " + names;
+    throw Error(context + flag + ": not a flag of " + whose + " (it configures " + takers + ")");
+  }
+}
+
 namespace {
 
 // A flag that picks one of named values: CLI11 checks the name, the callback stores it.
 template <class T>
-void choice(CLI::App& app, const std::string& flag, T& field, const std::map<std::string, T>& names,
-            const std::string& help) {
+CLI::Option* choice(CLI::App& app, const std::string& flag, T& field,
+                    const std::map<std::string, T>& names, const std::string& help) {
   std::string current;
   std::vector<std::string> keys;
   for (const auto& [k, v] : names) {
     if (v == field) current = k;
     keys.push_back(k);
   }
-  app.add_option_function<std::string>(
-         flag, [&field, names](const std::string& v) { field = names.at(v); }, help)
+  return app
+      .add_option_function<std::string>(
+          flag, [&field, names](const std::string& v) { field = names.at(v); }, help)
       ->check(CLI::IsMember(keys))
       ->default_str(current);
 }
@@ -45,6 +70,9 @@ void choice(CLI::App& app, const std::string& flag, T& field, const std::map<std
 }  // namespace
 
 static void add_baseline_flags(CLI::App& app, MethodOptions& o);
+
+// Which methods each flag configures (MethodFlags::check_taken_by).
+static void scope_method_flags(const std::vector<const CLI::Option*>& options, MethodFlags& f);
 
 void check_engine_runs(Engine engine, const std::string& name, const MethodOptions& options,
                        const std::string& context) {
@@ -57,6 +85,7 @@ void check_engine_runs(Engine engine, const std::string& name, const MethodOptio
 }
 
 void add_method_flags(CLI::App& app, MethodFlags& f) {
+  const size_t before = std::as_const(app).get_options().size();
   MethodOptions& o = f.options;
   app.add_option("--engine", f.engine_name,
                  std::string("cpu (every method) or gl (OpenGL 4.5 compute shaders: ") +
@@ -196,6 +225,42 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->capture_default_str()
       ->check(integer_in(-1000000, 1000000));
   add_baseline_flags(app, o);
+  const std::vector<const CLI::Option*> all = std::as_const(app).get_options();
+  scope_method_flags({all.begin() + static_cast<long>(before), all.end()}, f);
+}
+
+static void scope_method_flags(const std::vector<const CLI::Option*>& options, MethodFlags& f) {
+  const std::vector<std::string> kernel = {"point", "supersample", "reference", "staa-temporal",
+                                           "staa"};
+  const std::vector<std::string> sampling = {"supersample", "reference"};
+  const std::vector<std::string> staa_both = {"staa", "staa-temporal"};
+  const std::map<std::string, std::vector<std::string>> takers = {
+      {"--samples", sampling},
+      {"--seed", sampling},
+      {"--batches", {"reference"}},
+      {"--adaptive", {"reference"}},
+      {"--quiet-samples", {"reference"}},
+      {"--precision", kernel},
+      {"--intersect-tolerance", kernel},
+      {"--segments", staa_both},
+  };
+  // Every other flag names its method before its dashes' first word: --lean-size (lean),
+  // --taa-alpha (taa), ...; the rest configure staa alone.
+  const std::vector<std::string> prefixed = {"lean", "taa", "microspec", "specaa", "bruneton"};
+  for (const CLI::Option* opt : options) {
+    const std::string name = opt->get_name();
+    if (name == "--engine") continue;
+    std::vector<std::string> methods;
+    if (auto t = takers.find(name); t != takers.end()) {
+      methods = t->second;
+    } else {
+      methods = {"staa"};
+      for (const std::string& p : prefixed) {
+        if (name.rfind("--" + p + "-", 0) == 0) methods = {p};
+      }
+    }
+    f.scoped.push_back({opt, methods});
+  }
 }
 
 static void add_baseline_flags(CLI::App& app, MethodOptions& o) {
@@ -257,6 +322,7 @@ MethodVariant parse_method_variant(const std::string& text, const std::string& f
     throw Error(flag + ": '" + text + "': " + e.what());
   }
   flags.finish(flag + ": '" + text + "': ");
+  flags.check_taken_by({v.name}, flag + ": '" + text + "': ");
   v.options = flags.options;
   v.engine = flags.engine;
   make_method(v.name, v.options);  // validates the name and the options

@@ -34,6 +34,37 @@ TEST(MethodVariant, ErrorsNameTheVariant) {
   EXPECT_THROW(parse_method_variant("  "), Error);
 }
 
+TEST(MethodVariant, FlagsOfOtherMethodsAreRefused) {
+  // Each flag configures some methods; given to another, it would be ignored.
+  const std::pair<const char*, const char*> refused[] = {
+      {"point --samples 4x4x1",
+       "--methods: 'point --samples 4x4x1': --samples: not a flag of method point (it "
+       "configures supersample, reference)"},
+      {"staa --lean-size 256", "--lean-size: not a flag of method staa (it configures lean)"},
+      {"lean --ndf uniform", "--ndf: not a flag of method lean (it configures staa)"},
+      {"supersample --batches 4", "--batches: not a flag of method supersample"},
+      {"staa-temporal --footprint none", "--footprint: not a flag of method staa-temporal"},
+      {"taa --microspec-area approx", "--microspec-area: not a flag of method taa"},
+  };
+  for (const auto& [text, message] : refused) {
+    try {
+      parse_method_variant(text);
+      ADD_FAILURE() << text << " was taken";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  // ... and the methods that take them take them.
+  for (const char* text :
+       {"supersample --samples 4x4x1 --seed 2", "reference --batches 4 --adaptive off",
+        "staa-temporal --segments 2 --precision float", "staa --ndf uniform --footprint none",
+        "point --intersect-tolerance 0", "lean --lean-size 256", "taa --taa-alpha 0.2",
+        "microspec --microspec-area approx", "specaa --specaa-kernel full",
+        "bruneton --bruneton-nmin 2", "point --engine gl"}) {
+    EXPECT_NO_THROW(parse_method_variant(text)) << text;
+  }
+}
+
 TEST(Args, FrameRanges) {
   FrameRange r = parse_frame_range("3-7", "--frames");
   EXPECT_EQ(r.first, 3);
