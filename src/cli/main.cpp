@@ -36,58 +36,10 @@ void announce_path_table_cache(const sg::PathTableCacheResult& r) {
   }
 }
 
-// Edit distance with transpositions (optimal string alignment): "--widht" is 1 from
-// "--width".
-size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
-  for (size_t i = 0; i <= a.size(); ++i)
-    d[i][0] = i;
-  for (size_t j = 0; j <= b.size(); ++j)
-    d[0][j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    for (size_t j = 1; j <= b.size(); ++j) {
-      d[i][j] = std::min(
-          {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-    }
-  }
-  return d[a.size()][b.size()];
-}
-
-// The closest of `names` to `word` when it is near enough to be a slip (at most 2 edits,
-// fewer than a third of the word), else "".
-std::string closest(const std::string& word, const std::vector<std::string>& names) {
-  std::string best;
-  size_t best_d = 3;
-  for (const std::string& n : names) {
-    const size_t d = edit_distance(word, n);
-    if (d < best_d && 3 * d < std::max(word.size(), n.size())) {
-      best = n;
-      best_d = d;
-    }
-  }
-  return best;
-}
-
 std::vector<std::string> subcommand_names(const CLI::App& app) {
   std::vector<std::string> names;
   for (const CLI::App* s : app.get_subcommands([](const CLI::App*) { return true; }))
     names.push_back(s->get_name());
-  return names;
-}
-
-// The long and short flags of `app` and of its parents ("--width", "-m").
-std::vector<std::string> flag_names(const CLI::App* app) {
-  std::vector<std::string> names;
-  for (; app != nullptr; app = app->get_parent()) {
-    for (const CLI::Option* o : app->get_options()) {
-      for (const std::string& l : o->get_lnames())
-        names.push_back("--" + l);
-      for (const std::string& s : o->get_snames())
-        names.push_back("-" + s);
-    }
-  }
   return names;
 }
 
@@ -110,7 +62,7 @@ int parse_error(const CLI::App& app, const CLI::ParseError& e) {
   if (sub == nullptr && !rest.empty() && rest.front().rfind("-", 0) != 0) {
     // Not a subcommand: CLI11 would say "A subcommand is required".
     const std::vector<std::string> subs = subcommand_names(app);
-    const std::string near = closest(rest.front(), subs);
+    const std::string near = sg::closest_name(rest.front(), subs);
     message = "unknown subcommand '" + rest.front() + "'" +
               (near.empty() ? "" : " (did you mean " + near + "?)") + "; the subcommands are " +
               joined(subs);
@@ -118,7 +70,7 @@ int parse_error(const CLI::App& app, const CLI::ParseError& e) {
     message = "give a subcommand: " + joined(subcommand_names(app));
     if (!rest.empty()) {
       const std::string name = rest.front().substr(0, rest.front().find('='));
-      const std::string near = closest(name, flag_names(&app));
+      const std::string near = sg::closest_name(name, sg::flag_names(&app));
       message = "unknown flag '" + name + "'" +
                 (near.empty() ? "" : " (did you mean " + near + "?)") + "; " + message;
     }
@@ -127,7 +79,7 @@ int parse_error(const CLI::App& app, const CLI::ParseError& e) {
                              [](const std::string& a) { return a.size() > 1 && a[0] == '-'; });
     if (flag != rest.end()) {
       const std::string name = flag->substr(0, flag->find('='));
-      const std::string near = closest(name, flag_names(sub ? sub : &app));
+      const std::string near = sg::closest_name(name, sg::flag_names(sub ? sub : &app));
       message =
           "unknown flag '" + name + "'" + (near.empty() ? "" : " (did you mean " + near + "?)");
     } else {

@@ -318,6 +318,15 @@ MethodVariant parse_method_variant(const std::string& text, const std::string& f
   std::vector<std::string> args(words.rbegin(), words.rend() - 1);  // CLI11 wants them reversed
   try {
     app.parse(args);
+  } catch (const CLI::ExtrasError& e) {
+    // A flag no method has: name it, and the one it may be a slip of.
+    for (const std::string& w : app.remaining()) {
+      if (w.size() < 2 || w[0] != '-') continue;
+      const std::string near = closest_name(w, flag_names(&app));
+      throw Error(flag + ": '" + text + "': unknown flag '" + w + "'" +
+                  (near.empty() ? "" : " (did you mean " + near + "?)"));
+    }
+    throw Error(flag + ": '" + text + "': " + e.what());
   } catch (const CLI::ParseError& e) {
     throw Error(flag + ": '" + text + "': " + e.what());
   }

@@ -508,6 +508,9 @@ expect_rc_without "misspelt flag" 2 "sunglint: render: unknown flag '--widht' (d
   "not expected" "$bin" render "$scene" -m point --widht 100 -o "$work/x.exr"
 expect_rc "misspelt flag of bench" 2 "sunglint: bench: unknown flag '--metods' (did you mean --methods?)" \
   "$bin" bench "$scene" --metods point
+expect_rc "misspelt flag of a method variant" 2 \
+  "sunglint: --method: 'staa --ndff uniform': unknown flag '--ndff' (did you mean --ndf?)" \
+  "$bin" compare "$scene" -m "staa --ndff uniform" --out "$work/study"
 expect_rc "misspelt global flag" 2 "unknown flag '--cach-dir' (did you mean --cache-dir?)" \
   "$bin" render "$scene" -m point --cach-dir "$work" -o "$work/x.exr"
 expect_rc "unexpected argument" 2 "sunglint: render: unexpected argument '$scene'" \
