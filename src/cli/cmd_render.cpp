@@ -9,18 +9,21 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/output_path.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/method_flags.h"
 #include "cli/progress.h"
+#include "cli/slurm.h"
 #include "engine/render.h"
 #include "gl_engine/engines.h"
 #include "image/image_io.h"
@@ -40,7 +43,75 @@ struct RenderArgs {
   double exposure = 0;
   bool quiet = false, mkdir = false, display = false, no_glare = false;
   MethodFlags flags;
+  SlurmOptions slurm;  // --slurm: the frames as a job array (docs/cluster.md)
 };
+
+// `render --frames A-B --slurm`: the frames whose file is missing as one Slurm job array,
+// element K rendering frame A + K (a stateful method: one element, the whole range, its
+// history whole); prints the job id and returns.
+void submit_frames(const RenderArgs& a, const FrameRange& range, bool stateful,
+                   const std::function<std::string(int)>& out_path) {
+  namespace fs = std::filesystem;
+  const SlurmOptions& o = a.slurm;
+  require_program("sbatch", "--slurm");
+  const std::string exe = program_path();
+  const std::string folder = fs::path(fs::absolute(out_path(range.first))).parent_path().string();
+  const std::string shared =
+      check_shared_folders({{"--out", folder},
+                            {"the working folder", fs::current_path().string()},
+                            {"the program", exe},
+                            {"the scene", a.scene_path}},
+                           o.partition, o.assume_shared);
+  std::printf("shared folders: %s\n", shared.c_str());
+  std::vector<int> missing;
+  std::error_code ec;
+  for (int f = range.first; f <= range.last; ++f) {
+    if (!fs::exists(out_path(f), ec)) missing.push_back(f - range.first);
+  }
+  if (missing.empty()) {
+    std::printf("every frame of %d-%d is there (%s ...): nothing to submit\n", range.first,
+                range.last, out_path(range.first).c_str());
+    return;
+  }
+  static const std::map<std::string, int> drop{
+      {"--slurm", 0},         {"--partition", 1}, {"--max-parallel", 1},
+      {"--time-per-task", 1}, {"--requeue", 0},   {"--assume-shared", 0},
+      {"--frames", 1},        {"--threads", 1},   {"-j", 1},
+      {"--quiet", 0},         {"-q", 0}};
+  const std::vector<std::string> args = arguments_without(program_arguments(), drop);
+  std::vector<std::string> base{exe};
+  base.insert(base.end(), args.begin() + (args.empty() ? 0 : 1), args.end());
+  const std::string frame =
+      stateful ? "--frames " + std::to_string(range.first) + "-" + std::to_string(range.last)
+               : "--frame \"$((" + std::to_string(range.first) + " + SLURM_ARRAY_TASK_ID))\"";
+  if (stateful) missing = {0};
+  const std::string dir = next_submission_dir((fs::path(folder) / "slurm").string());
+  const int cpus = a.threads > 0 ? a.threads : 1;
+  const std::map<std::string, std::string> v{
+      {"KIND", "render"},
+      {"WHAT", stateful ? "the whole range (a stateful method)"
+                        : "frame " + std::to_string(range.first) + " + K of the range"},
+      {"JOB_NAME", "sunglint-render"},
+      {"ARRAY", array_spec(missing, o.max_parallel)},
+      {"WORK_DIR", fs::current_path().string()},
+      {"LOG_DIR", dir},
+      {"TIME", o.time_per_task.empty() ? "1:00:00" : o.time_per_task},
+      {"CPUS", std::to_string(cpus)},
+      {"PARTITION", o.partition},
+      {"REQUEUE", o.requeue ? "--requeue" : "--no-requeue"},
+      {"RETRIES", std::to_string(o.requeue ? o.retries : 0)},
+      {"TASK_COMMAND", shell_join(base) + " -q -j \"${SLURM_CPUS_PER_TASK:-1}\" " + frame}};
+  const std::string script = (fs::path(dir) / "array.sh").string();
+  write_file_atomic(script, fill_template(slurm_template("slurm-array.sh"), v, "slurm-array.sh"));
+  const std::vector<std::string> sb{"sbatch", "--parsable", script};
+  const std::string id = job_id(run_slurm(sb, "--slurm"), sb);
+  std::printf(
+      "submitted job array %s: %zu of frames %d-%d (%s each)\nfollow: squeue -j %s; "
+      "sacct -j %s; logs and script in %s; run this command again to resubmit the "
+      "frames still missing\n",
+      id.c_str(), stateful ? size_t(range.count()) : missing.size(), range.first, range.last,
+      v.at("TIME").c_str(), id.c_str(), id.c_str(), dir.c_str());
+}
 
 std::string lower_extension(const std::string& path) {
   std::string e = std::filesystem::path(path).extension().string();
@@ -94,6 +165,12 @@ void run_render(RenderArgs& a) {
   check_usage([&] {
     if (sequence) range = parse_frame_range(a.frames, "--frames");
     check_outputs(a, sequence, a.out.empty() ? "" : out_path(range.first));
+    if (a.slurm.submit) {
+      if (!sequence || a.out.empty()) throw Error("--slurm: needs --frames A-B and --out PATTERN");
+      if (!a.video.empty()) {
+        throw Error("--slurm: not with --video (encode the frames once they are rendered)");
+      }
+    }
     a.flags.finish();
     make_method(a.method, a.flags.options);  // the name and options, before any GL
     a.flags.check_taken_by({a.method});
@@ -144,6 +221,8 @@ void run_render(RenderArgs& a) {
     throw UsageError("--variance-out: method " + a.method + " on the " + engine_name(engine) +
                      " engine does not measure its noise (the CPU reference does)");
   }
+
+  if (a.slurm.submit) return submit_frames(a, range, method->stateful(), out_path);
 
   const MethodOptions& opt = a.flags.options;
   SceneModel model(scene);
@@ -260,6 +339,25 @@ void add_render_command(CLI::App& app) {
                 "display pipeline (needs ffmpeg)");
   c->add_flag("--quiet,-q", a->quiet,
               "No progress (default: a bar on a terminal, else a line per frame)");
+  c->add_flag("--slurm", a->slurm.submit,
+              "Submit the --frames range as a Slurm job array, one frame a task (the frames "
+              "whose file is missing; docs/cluster.md); print the job id and return");
+  c->add_option("--partition", a->slurm.partition, "--slurm: the partition");
+  c->add_option("--max-parallel", a->slurm.max_parallel, "--slurm: at most N tasks at once")
+      ->check(integer_in(0, 1000000));
+  c->add_option("--time-per-task", a->slurm.time_per_task,
+                "--slurm: each task's time limit in Slurm's format (default 1:00:00)")
+      ->check([](const std::string& t) {
+        try {
+          check_slurm_time(t);
+        } catch (const Error& e) {
+          return std::string(e.what()).substr(std::string("--time-per-task: ").size());
+        }
+        return std::string();
+      });
+  c->add_flag("--requeue", a->slurm.requeue, "--slurm: requeue a task that fails (twice at most)");
+  c->add_flag("--assume-shared", a->slurm.assume_shared,
+              "--slurm: the folders are on a filesystem the nodes share, whatever its type");
   c->callback([a] { run_render(*a); });
 }
 

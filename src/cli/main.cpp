@@ -17,6 +17,7 @@
 #include "base/error.h"
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/slurm.h"
 #include "gl_engine/program_notice.h"
 #include "shading/path_table.h"
 
@@ -99,6 +100,7 @@ int main(int argc, char** argv) {
       "sunglint: anti-aliased, flicker-free reflections of the sun and moon on moving water\n"
       "Exit codes: 0 success, 1 failed work (unreadable or invalid input, unwritable output),\n"
       "2 usage error (unknown or missing flag, bad flag value)"};
+  sg::set_program_arguments(argc, argv);
   app.require_subcommand(1);
   app.fallthrough();  // --cache-dir may follow the subcommand
   app.set_version_flag("--version", "sunglint 0.1.0");

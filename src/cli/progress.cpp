@@ -45,13 +45,18 @@ double ProgressBar::seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
+double ProgressBar::eta(double f, double secs) const {
+  if (seconds_left_ >= 0) return seconds_left_;
+  return f > 0 ? secs * (1 - f) / f : -1;
+}
+
 void ProgressBar::log_line(const std::string& what, double f) {
   const double secs = seconds();
   last_line_ = secs;
-  std::string eta =
-      f > 0 && f < 1 ? ", about " + format_duration(secs * (1 - f) / f) + " left" : "";
+  const double left = eta(f, secs);
+  const std::string tail = left >= 0 && f < 1 ? ", about " + format_duration(left) + " left" : "";
   std::fprintf(stderr, "%s%s%s %5.1f%%  %s%s\n", label_.c_str(), what.empty() ? "" : " ",
-               what.c_str(), 100 * f, format_duration(secs).c_str(), eta.c_str());
+               what.c_str(), 100 * f, format_duration(secs).c_str(), tail.c_str());
   std::fflush(stderr);
 }
 
@@ -66,9 +71,9 @@ void ProgressBar::update(long done, long total) {
     std::string bar(filled, '#');
     bar.resize(width, '.');
     const double secs = seconds();
-    const double eta = f > 0 ? secs * (1 - f) / f : 0;
+    const double left = eta(f, secs);
     std::fprintf(stderr, "\r%s [%s] %5.1f%%  %s  eta %s   ", label_.c_str(), bar.c_str(), 100 * f,
-                 format_duration(secs).c_str(), format_duration(eta).c_str());
+                 format_duration(secs).c_str(), format_duration(left).c_str());
     std::fflush(stderr);
   } else if (seconds() - last_line_ >= kLogInterval && done < total) {
     log_line("", f);

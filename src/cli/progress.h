@@ -21,16 +21,21 @@ class ProgressBar {
   // A step of the work ended (`what`, e.g. "frame 3"), with `done` of `total` units done.
   void step(const std::string& what, long done, long total);
   void set_label(std::string label) { label_ = std::move(label); }
+  // The time left, when the caller knows better than the share done (compare: from a
+  // pilot's costs and the measured time, report/plan.h); < 0: extrapolate the share.
+  void set_seconds_left(double s) { seconds_left_ = s; }
   void finish();
 
  private:
   double seconds() const;
+  double eta(double fraction, double secs) const;
   void log_line(const std::string& what, double fraction);
 
   std::string label_;
   bool enabled_, tty_, finished_ = false;
   int last_permille_ = -1;
-  double last_line_ = 0;  // seconds, when the last log line was printed
+  double last_line_ = 0;
+  double seconds_left_ = -1;  // seconds, when the last log line was printed
   std::chrono::steady_clock::time_point start_;
 };
 

@@ -51,7 +51,8 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     v.reference.sx = rs.samples.sx;
     v.reference.sy = rs.samples.sy;
     v.reference.nt = rs.samples.st;
-    v.reference.batches = rs.batches;
+    v.reference.batches = rs.kernel_batches();
+    v.reference.first_batch = rs.first_batch();
     v.reference.adaptive = rs.adaptive;
     v.reference.quiet_sx = v.reference.quiet_sy = rs.quiet;
     v.reference.margin = static_cast<float>(rs.margin);

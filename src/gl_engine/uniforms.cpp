@@ -94,6 +94,7 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::ReferencePar
   u.set(n + ".sy", p.sy);
   u.set(n + ".nt", p.nt);
   u.set(n + ".batches", p.batches);
+  u.set(n + ".first_batch", p.first_batch);
   u.set(n + ".adaptive", p.adaptive);
   u.set(n + ".quiet_sx", p.quiet_sx);
   u.set(n + ".quiet_sy", p.quiet_sy);

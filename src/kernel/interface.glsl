@@ -125,7 +125,9 @@ struct ReferenceParams {
   int sx;
   int sy;
   int nt;
-  int batches;  // 2 to kMaxBatches
+  int batches;      // 2 to kMaxBatches (1 for one batch of a study's reference)
+  int first_batch;  // the first batch rendered: its samples are those of batch first_batch of
+                    // a render of all batches (the draws of the batches before are skipped)
   bool adaptive;
   int quiet_sx;
   int quiet_sy;

@@ -41,7 +41,9 @@
 // its spread the estimate of its variance (returned per batch: the host applies the
 // radiances and forms the variance per channel). Random numbers from the stream of
 // (seed, frame, pixel) (rng.glsl) in a fixed order: per batch, per cell in row-major order,
-// per sample: x, y (and t on displaced water). Same inputs, same bytes.
+// per sample: x, y (and t on displaced water). Same inputs, same bytes. `first_batch`
+// renders batches first_batch .. first_batch + batches - 1 of that order (a study's
+// reference renders each batch of a frame as its own unit of work, report/plan.h).
 
 // The gradient and its time derivative at the path's instants t_0 .. t_K.
 struct PathDerivatives {
@@ -539,6 +541,11 @@ SG_FN ReferenceResult reference_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(Refe
   int sx = r.busy ? n.sx : n.quiet_sx;
   int sy = r.busy ? n.sy : n.quiet_sy;
   real per_batch = real(sx) * real(sy) * real(n.nt);
+  // Batches before first_batch: their draws skipped (two outputs per uniform), so that
+  // batch first_batch + b is the same whether rendered alone or with the others.
+  int skip = n.first_batch * sx * sy * n.nt * (f.displaced ? 3 : 2) * 2;
+  for (int s = 0; s < skip; ++s)
+    pcg32_next(rng);
   for (int b = 0; b < n.batches; ++b) {
     vec4 sum = vec4(0.0);
     for (int cy = 0; cy < sy; ++cy) {

@@ -43,6 +43,8 @@ void validate(const MethodOptions& o) {
   };
   require(o.samples.st <= 64, "--samples", "at most 64 time samples (T) per pixel");
   require(o.batches >= 2 && o.batches <= 8, "--batches", "must be in [2, 8]");
+  require(o.only_batch >= -1 && o.only_batch < o.batches, "--batches",
+          "the batch rendered alone must be one of them");
   require(o.quiet_samples >= 1 && o.quiet_samples <= 64, "--quiet-samples", "must be in [1, 64]");
   require(o.staa.segments >= 1 && o.staa.segments <= 32, "--segments", "must be in [1, 32]");
   require(std::isfinite(o.intersect_tolerance) && o.intersect_tolerance >= 0 &&

@@ -140,9 +140,13 @@ struct BrunetonOptions {
 };
 
 struct MethodOptions {
-  SampleCounts samples{8, 8, 8};             // --samples, for reference and supersample
-  bool samples_given = false;                // false: each method's default (reference: its own)
-  int batches = 2;                           // --batches, for reference
+  SampleCounts samples{8, 8, 8};  // --samples, for reference and supersample
+  bool samples_given = false;     // false: each method's default (reference: its own)
+  int batches = 2;                // --batches, for reference
+  // reference: render only this batch of the `batches` (its samples exactly those of a
+  // render of all batches), or all of them (-1). No flag: a study's reference renders
+  // each batch of a frame as its own unit of work (report/plan.h).
+  int only_batch = -1;
   bool adaptive = true;                      // --adaptive on|off, for reference
   int quiet_samples = 1;                     // --quiet-samples N, for reference
   uint64_t seed = 0;                         // --seed: the sampling streams (rng.h)

@@ -29,6 +29,7 @@ ReferenceSettings reference_settings(const MethodOptions& o) {
   ReferenceSettings rs;
   rs.samples = o.samples_given ? o.samples : kReferenceSamples;
   rs.batches = o.batches;
+  rs.only_batch = o.only_batch;
   rs.adaptive = o.adaptive;
   rs.quiet = o.quiet_samples;
   return rs;
@@ -49,6 +50,10 @@ ReferenceMethod::ReferenceMethod(ReferenceSettings settings, Precision precision
     : settings_(settings), precision_(precision), intersect_tolerance_(intersect_tolerance) {
   if (settings_.batches < 2 || settings_.batches > kd::kMaxBatches) {
     throw Error("--batches: must be in [2, " + std::to_string(kd::kMaxBatches) + "]");
+  }
+  if (settings_.only_batch < -1 || settings_.only_batch >= settings_.batches) {
+    throw Error("--batches: batch " + std::to_string(settings_.only_batch) + " is not one of " +
+                std::to_string(settings_.batches));
   }
 }
 
@@ -94,7 +99,8 @@ ReferencePixel ReferenceMethod::pixel(const FrameContext& ctx, int i, int j) con
     n.sx = s.sx;
     n.sy = s.sy;
     n.nt = s.st;
-    n.batches = settings_.batches;
+    n.batches = settings_.kernel_batches();
+    n.first_batch = settings_.first_batch();
     n.adaptive = settings_.adaptive;
     n.quiet_sx = n.quiet_sy = settings_.quiet;
     n.margin = float(settings_.margin);
@@ -109,7 +115,8 @@ ReferencePixel ReferenceMethod::pixel(const FrameContext& ctx, int i, int j) con
     n.sx = s.sx;
     n.sy = s.sy;
     n.nt = s.st;
-    n.batches = settings_.batches;
+    n.batches = settings_.kernel_batches();
+    n.first_batch = settings_.first_batch();
     n.adaptive = settings_.adaptive;
     n.quiet_sx = n.quiet_sy = settings_.quiet;
     n.margin = settings_.margin;

@@ -35,6 +35,10 @@ inline constexpr double kReferencePilotMargin = 2.0;
 struct ReferenceSettings {
   SampleCounts samples = kReferenceSamples;  // busy pixels (all without `adaptive`)
   int batches = kReferenceBatches;
+  int only_batch = -1;  // render only this batch (a study's unit), or all (-1)
+  // The batches the kernel renders, and the first of them.
+  int kernel_batches() const { return only_batch >= 0 ? 1 : batches; }
+  int first_batch() const { return only_batch >= 0 ? only_batch : 0; }
   bool adaptive = true;
   int quiet = 1;  // quiet pixels: quiet x quiet strata of T samples per batch
   double margin = kReferencePilotMargin;

@@ -15,7 +15,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
+#include "base/error.h"
 #include "engine/render.h"
 #include "kernel/kernel_float.h"
 #include "math/rng.h"
@@ -511,6 +513,49 @@ TEST(ReferenceEstimator, DisplacedWaterAgreesWithStratifiedSampling) {
   EXPECT_GT(sum_ref, 1.0);
   // The stratified total's own noise is far below the reference's at these counts.
   EXPECT_NEAR(sum_ref, sum_strat, 5 * std::sqrt(var) + 1e-3 * sum_strat);
+}
+
+// A study's reference renders each batch of a frame alone (ReferenceSettings::only_batch):
+// batch b alone has exactly the samples of batch b in a render of all batches, on flat and
+// displaced water, in double and float, busy and quiet pixels alike.
+TEST(ReferenceEstimator, OneBatchAloneEqualsThatBatchOfTheWhole) {
+  for (const bool displaced : {false, true}) {
+    Scene s = displaced ? testing::displaced_variant(few_waves()) : few_waves();
+    s.width = 40;
+    s.height = 24;
+    const SceneModel m(s);
+    const FrameContext ctx{m, frame_time(s, 2), 5};
+    for (const Precision p : {Precision::float64, Precision::float32}) {
+      ReferenceMethod all(ReferenceSettings{{2, 2, 2}, 3}, p);
+      ReferenceSettings one_rs{{2, 2, 2}, 3};
+      std::vector<std::unique_ptr<ReferenceMethod>> one;
+      for (int b = 0; b < 3; ++b) {
+        one_rs.only_batch = b;
+        one.push_back(std::make_unique<ReferenceMethod>(one_rs, p));
+      }
+      int busy = 0;
+      for (int j = 0; j < s.height; ++j) {
+        for (int i = 0; i < s.width; ++i) {
+          const ReferencePixel whole = all.pixel(ctx, i, j);
+          busy += whole.busy;
+          ASSERT_EQ(whole.batches.size(), 3u);
+          for (int b = 0; b < 3; ++b) {
+            const ReferencePixel alone = one[b]->pixel(ctx, i, j);
+            ASSERT_EQ(alone.batches.size(), 1u);
+            for (int k = 0; k < 4; ++k) {
+              ASSERT_EQ(alone.weights[k], whole.batches[b][k])
+                  << "pixel " << i << "," << j << " batch " << b << " displaced " << displaced;
+            }
+          }
+        }
+      }
+      EXPECT_GT(busy, 0);
+      EXPECT_LT(busy, s.width * s.height);
+    }
+  }
+  ReferenceSettings bad{{2, 2, 1}, 2};
+  bad.only_batch = 2;
+  EXPECT_THROW(ReferenceMethod{bad}, Error);
 }
 
 TEST(ReferenceEstimator, DeterministicAcrossThreadsAndSeeds) {

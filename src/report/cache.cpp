@@ -67,6 +67,10 @@ std::string variance_key(const std::string& frame_key) {
   return frame_key + "\nvariance of the estimate";
 }
 
+std::string reference_batch_key(const std::string& frame_key, int batch) {
+  return frame_key + "batch=" + std::to_string(batch) + "\n";
+}
+
 FrameCache::FrameCache(std::string dir) : dir_(std::move(dir)) {
   std::error_code ec;
   fs::create_directories(dir_, ec);

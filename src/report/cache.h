@@ -45,6 +45,10 @@ std::string frame_key(const Scene& scene, const std::string& label, int frame,
 // (methods/reference.h), stored beside the frame as a frame of its own.
 std::string variance_key(const std::string& frame_key);
 
+// The key of one batch of a reference frame (methods/reference.h, only_batch): a study
+// renders and caches each batch alone, and the frame is their mean.
+std::string reference_batch_key(const std::string& frame_key, int batch);
+
 struct CachedFrame {
   Image image;
   double ms = 0;  // render time recorded when the frame was rendered

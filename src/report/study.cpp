@@ -1,16 +1,23 @@
 #include "report/study.h"
 
+#include <tbb/global_control.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <optional>
 #include <set>
+#include <thread>
+#include <tuple>
 
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "engine/render.h"
+#include "gl_engine/engines.h"
 #include "image/display.h"
 #include "methods/reference.h"
 #include "metrics/metrics.h"
@@ -18,6 +25,7 @@
 #include "report/figures.h"
 #include "report/html.h"
 #include "report/paper.h"
+#include "report/plan.h"
 #include "report/regions.h"
 #include "report/video.h"
 
@@ -48,10 +56,6 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-std::unique_ptr<Method> build(const StudyVariant& v) {
-  return v.make ? v.make() : make_method(v.name, v.options);
-}
-
 // Samples per pixel of the supersampling estimators; 0 for other methods. The reference's
 // are those of its busy pixels: every batch's strata times their samples (its own default
 // when --samples is not given; the pilot's quiet pixels take fewer).
@@ -62,13 +66,6 @@ double samples_per_pixel(const StudyVariant& v) {
   }
   if (v.name == "supersample") return double(v.options.samples.total());
   return 0.0;
-}
-
-// Relative cost of one frame, for the progress bar only: the samples per pixel of the
-// supersampling estimators, and a few for every other method (a few times `point`).
-double cost_weight(const StudyVariant& v) {
-  const double spp = samples_per_pixel(v);
-  return spp > 0 ? spp : 2.0;
 }
 
 struct Sequence {
@@ -95,11 +92,44 @@ std::vector<std::string> unique_slugs(const std::vector<std::string>& labels) {
   return out;
 }
 
+// The variant's method; for a reference, the one that renders batch `batch` alone (-1: all).
+std::unique_ptr<Method> build(const StudyVariant& v, int batch = -1) {
+  if (v.make) return v.make();
+  if (batch < 0) return make_method_on(v.engine, v.name, v.options);
+  MethodOptions o = v.options;
+  o.only_batch = batch;
+  return make_method_on(v.engine, v.name, o);
+}
+
+// The reference's batches (each a unit of the study); 0 for other variants.
+int batch_count(const StudyVariant& v) {
+  return v.name == "reference" && !v.make ? reference_settings(v.options).batches : 0;
+}
+
+// Wall seconds of the report's part of a scene (pictures, videos), for the time left: a
+// cost per pixel of each frame of each column, measured on the 2-core development machine
+// (docs/cluster.md), and a floor for the files.
+double report_seconds(const StudyConfig& c, const Scene& s) {
+  const double columns = 1.0 + double(c.methods.size());
+  const double pixels = double(s.width) * s.height * (c.last_frame - c.first_frame + 1);
+  double per_pixel = 0;
+  if (c.pictures) per_pixel += 0.05e-6;
+  if (c.video) per_pixel += 0.6e-6;
+  return 0.2 + columns * pixels * per_pixel;
+}
+
 class Study {
  public:
   Study(const StudyConfig& c, const StudyProgress& p) : c_(c), progress_(p) {}
 
-  StudyResults run();
+  // Checks the configuration (throws sg::Error naming the option), makes the cache.
+  void check();
+  std::vector<StudyUnit> units(bool missing_only) const;
+  double pilot(std::vector<StudyUnit>& units);
+  int render(const std::vector<StudyUnit>& units,
+             const std::function<void(size_t, double)>& on_unit = {});
+  // Local run: pilot, render and merge scene by scene. merge_only: from the cache alone.
+  StudyResults run(bool merge_only);
 
  private:
   // All variants of a scene, each label once: reference, methods, budgets.
@@ -116,102 +146,279 @@ class Study {
     }
     return out;
   }
-  std::vector<std::string> keys(const Scene& s, const std::string& label, bool stateful) const {
-    std::vector<std::string> k;
-    for (int f = c_.first_frame; f <= c_.last_frame; ++f)
-      k.push_back(frame_key(s, label, f, stateful ? c_.first_frame : -1));
-    return k;
+  const StudyVariant& variant(const std::string& label) const {
+    for (const StudyVariant* v : variants()) {
+      if (canonical_label(v->label) == label) return *v;
+    }
+    throw Error("no variant '" + label + "' in the study");
   }
-  // Frames to render for a variant (for the progress total).
-  int frames_to_render(const Scene& s, const StudyVariant& v) const {
+  bool stateful(const StudyVariant& v) const {
     const std::string label = canonical_label(v.label);
-    const bool stateful = build(v)->stateful();
-    int missing = 0;
-    for (const auto& k : keys(s, label, stateful))
-      missing += cache_->has(label, k) ? 0 : 1;
-    return stateful && missing > 0 ? c_.last_frame - c_.first_frame + 1 : missing;
+    auto it = stateful_.find(label);
+    if (it != stateful_.end()) return it->second;
+    return stateful_[label] = build(v)->stateful();
   }
-  void report(double fraction, const std::string& what) {
-    if (progress_) progress_(std::clamp(fraction, 0.0, 1.0), what);
+  std::string key(const Scene& s, const StudyVariant& v, int frame) const {
+    return frame_key(s, canonical_label(v.label), frame, stateful(v) ? c_.first_frame : -1);
   }
-  Sequence obtain(const SceneModel& model, const StudyVariant& v, const std::string& what);
+  // The cache key of a unit's frame `frame` (its batch's for a reference batch).
+  std::string unit_key(const StudyUnit& u, int frame) const {
+    const Scene& s = c_.scenes[u.scene].scene;
+    const std::string k = key(s, variant(u.variant), frame);
+    return u.batch >= 0 ? reference_batch_key(k, u.batch) : k;
+  }
+  bool complete(const StudyUnit& u) const {
+    for (int f = u.first; f <= u.last; ++f) {
+      if (!cache_->has(u.variant, unit_key(u, f))) return false;
+    }
+    return true;
+  }
+  void report(double fraction, double left, const std::string& what) {
+    // The share done never goes back (a new measure may change the estimate's scale).
+    shown_ = std::max(shown_, std::clamp(fraction, 0.0, 1.0));
+    if (progress_) progress_({shown_, left, what});
+  }
+  // With no estimate (a task of a plan), the share of the units rendered.
+  void report_estimate(const std::string& what, double share = 0) {
+    if (estimate_) {
+      report(estimate_->fraction(), estimate_->seconds_left(), what);
+    } else {
+      report(share, -1, what);
+    }
+  }
+  Sequence load(const SceneModel& model, const StudyVariant& v, int scene) const;
   VariantResult measure(const StudyVariant& v, const Sequence& s, const Sequence& ref,
                         const WaterRegions& w) const;
-  SceneResult run_scene(const StudyScene& sc, const std::string& scene_slug);
+  SceneResult run_scene(int scene, const std::string& scene_slug);
 
   const StudyConfig& c_;
   const StudyProgress& progress_;
   std::optional<FrameCache> cache_;  // created once the configuration is checked
-  double total_weight_ = 0, done_weight_ = 0;
+  mutable std::map<std::string, bool> stateful_;
+  double shown_ = 0;
+  std::optional<TimeEstimate> estimate_;
+  std::vector<std::string> method_labels_;
+  std::vector<std::pair<std::string, std::string>> paper_rows_;
+  // Frames rendered in this run, per scene and variant label (a reference's frame when any
+  // of its batches was); the first load of a label takes them (a budget that is also a
+  // method was rendered once, then found in the cache).
+  mutable std::map<std::pair<int, std::string>, std::set<int>> rendered_;
 };
 
-Sequence Study::obtain(const SceneModel& model, const StudyVariant& v, const std::string& what) {
-  const std::string label = canonical_label(v.label);
-  std::unique_ptr<Method> method = build(v);
-  Sequence s;
-  s.stateful = method->stateful();
-  const bool noise = method->pixel_variance() != nullptr;
-  const int a = c_.first_frame, n = c_.last_frame - c_.first_frame + 1;
-  const std::vector<std::string> k = keys(model.scene, label, s.stateful);
-  s.frames.resize(n);
-  if (noise) s.variance.resize(n);
-  std::vector<double> ms(n, 0.0);
-  std::vector<bool> have(n, false);
-  for (int q = 0; q < n; ++q) {
-    auto f = cache_->load(label, k[q]);
-    if (f && f->image.width == model.width() && f->image.height == model.height() &&
-        f->image.channels == (model.scene.grey() ? 1 : 3)) {
-      s.frames[q] = std::move(f->image);
-      ms[q] = f->ms;
-      have[q] = true;
-    }
-    if (have[q] && noise) {  // a frame without its variance is rendered again
-      auto v = cache_->load(label, variance_key(k[q]));
-      have[q] = v && v->image.same_shape(s.frames[q]);
-      if (have[q]) s.variance[q] = std::move(v->image);
+std::vector<StudyUnit> Study::units(bool missing_only) const {
+  std::vector<StudyUnit> out;
+  for (size_t s = 0; s < c_.scenes.size(); ++s) {
+    const Scene& scene = c_.scenes[s].scene;
+    for (const StudyVariant* v : variants()) {
+      const std::string label = canonical_label(v->label);
+      StudyUnit u;
+      u.scene = static_cast<int>(s);
+      u.variant = label;
+      auto add = [&](int first, int last, int batch) {
+        u.first = first;
+        u.last = last;
+        u.batch = batch;
+        u.id = scene.name + ": " + label +
+               (first == last ? ", frame " + std::to_string(first)
+                              : ", frames " + std::to_string(first) + "-" + std::to_string(last) +
+                                    " (stateful)");
+        if (batch >= 0)
+          u.id += ", batch " + std::to_string(batch + 1) + "/" + std::to_string(batch_count(*v));
+        u.file = fs::path(cache_->path(label, unit_key(u, first))).filename().string();
+        if (!missing_only || !complete(u)) out.push_back(u);
+      };
+      if (const int b = batch_count(*v); b > 0) {
+        for (int f = c_.first_frame; f <= c_.last_frame; ++f) {
+          for (int k = 0; k < b; ++k)
+            add(f, f, k);
+        }
+      } else if (stateful(*v)) {
+        add(c_.first_frame, c_.last_frame, -1);
+      } else {
+        for (int f = c_.first_frame; f <= c_.last_frame; ++f)
+          add(f, f, -1);
+      }
     }
   }
-  const int missing = static_cast<int>(std::count(have.begin(), have.end(), false));
-  const double weight = cost_weight(v);
-  RenderSettings rs;
-  rs.threads = c_.threads;
-  rs.seed = v.options.seed;
-  rs.progress = [&](long done, long total) {
-    report((done_weight_ + weight * double(done) / double(total)) / total_weight_, what);
-  };
-  auto keep = [&](int f, const Image& img, double t) {
-    const int q = f - a;
-    if (q < 0 || q >= n) return;  // frames before the range (warm-up) are not kept
-    if (noise) {                  // before the frame, whose sidecar vouches for both
-      s.variance[q] = *method->pixel_variance();
-      cache_->store(label, variance_key(k[q]), s.variance[q], t);
-    }
-    cache_->store(label, k[q], img, t);
-    s.frames[q] = img;
-    ms[q] = t;
-    ++s.rendered;
-    done_weight_ += weight;
-  };
-  if (s.stateful && missing > 0) {  // history: the whole range again, in order
-    Clock::time_point t0 = Clock::now();
-    render_frames(model, *method, c_.first_frame, c_.last_frame, rs, [&](int f, const Image& img) {
-      const double t = ms_since(t0);
-      keep(f, img, t);
+  return out;
+}
+
+// The tiles of a frame in an order that spreads any prefix over the image: k -> k p mod n,
+// p the integer nearest n / golden ratio that is prime to n.
+std::vector<int> spread_order(int n) {
+  int p = std::max(1, static_cast<int>(std::lround(n * 0.6180339887)));
+  while (std::gcd(p, n) != 1)
+    ++p;
+  std::vector<int> order(n);
+  for (int k = 0; k < n; ++k)
+    order[k] = static_cast<int>((long(k) * p) % n);
+  return order;
+}
+
+double Study::pilot(std::vector<StudyUnit>& units) {
+  const Clock::time_point t_pilot = Clock::now();
+  // One thread: the estimate is in core-seconds (a task's cost on one core).
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  std::map<std::tuple<int, std::string>, double> frame_seconds;
+  for (StudyUnit& u : units) {
+    const auto at = std::make_tuple(u.scene, u.variant);
+    auto it = frame_seconds.find(at);
+    if (it == frame_seconds.end()) {
+      const StudyVariant& v = variant(u.variant);
+      const Scene& scene = c_.scenes[u.scene].scene;
+      report(0, -1, "pilot: " + scene.name + ": " + u.variant);
+      const SceneModel model(scene);
+      std::unique_ptr<Method> method = build(v, u.batch >= 0 ? 0 : -1);
+      Image img = Image::with_channels(model.width(), model.height(), scene.grey() ? 1 : 3);
+      FrameContext ctx{model, frame_time(scene, u.first), v.options.seed};
+      Clock::time_point t0 = Clock::now();
+      method->begin_frame(ctx);
+      const double setup = ms_since(t0) / 1000;
+      constexpr int kTile = 16;
+      constexpr double kTileBudget = 0.04;  // seconds of tiles per variant and scene
+      const int tx = (model.width() + kTile - 1) / kTile, ty = (model.height() + kTile - 1) / kTile;
+      double tiles = 0;
+      long pixels = 0;
+      for (int k : spread_order(tx * ty)) {
+        const int x0 = (k % tx) * kTile, y0 = (k / tx) * kTile;
+        const int x1 = std::min(model.width(), x0 + kTile),
+                  y1 = std::min(model.height(), y0 + kTile);
+        t0 = Clock::now();
+        method->shade_tile(ctx, x0, y0, x1, y1, img);
+        tiles += ms_since(t0) / 1000;
+        pixels += long(x1 - x0) * (y1 - y0);
+        if (tiles >= kTileBudget) break;
+      }
       t0 = Clock::now();
-    });
-  } else {
-    for (int q = 0; q < n; ++q) {
-      if (have[q]) continue;
-      const Clock::time_point t0 = Clock::now();
-      Image img = render_frame(model, *method, a + q, rs);
-      keep(a + q, img, ms_since(t0));
+      method->end_frame(ctx, img);
+      const double finish = ms_since(t0) / 1000;
+      const double all = double(model.width()) * model.height();
+      it = frame_seconds.emplace(at, setup + finish + tiles * all / double(pixels)).first;
     }
+    int frames = u.last - u.first + 1;
+    if (u.last > u.first) frames += warmup_frame_count(*build(variant(u.variant)));
+    u.seconds = it->second * frames;
+  }
+  return ms_since(t_pilot) / 1000;
+}
+
+int Study::render(const std::vector<StudyUnit>& units,
+                  const std::function<void(size_t, double)>& on_unit) {
+  int count = 0;
+  std::unique_ptr<Method> method;  // reused by the units of one scene, variant and batch
+  std::tuple<int, std::string, int> method_of{-1, "", -1};
+  std::optional<SceneModel> model;
+  int model_of = -1;
+  for (size_t k = 0; k < units.size(); ++k) {
+    const StudyUnit& u = units[k];
+    if (complete(u)) continue;
+    const StudyVariant& v = variant(u.variant);
+    const Scene& scene = c_.scenes[u.scene].scene;
+    if (model_of != u.scene) {
+      model.emplace(scene);
+      model_of = u.scene;
+    }
+    if (!method || method_of != std::make_tuple(u.scene, u.variant, u.batch) || u.last > u.first) {
+      method = build(v, u.batch);
+      method_of = {u.scene, u.variant, u.batch};
+    }
+    const std::string what = u.id;
+    report_estimate(what, double(k) / double(units.size()));
+    RenderSettings rs;
+    rs.threads = c_.threads;
+    rs.seed = v.options.seed;
+    const long frames = u.last - u.first + 1 + (u.last > u.first ? warmup_frame_count(*method) : 0);
+    long frames_done = 0;
+    rs.progress = [&](long done, long total) {
+      const double part = (double(frames_done) + double(done) / double(total)) / double(frames);
+      if (estimate_) estimate_->partial(u.seconds * part);
+      report_estimate(what, (double(k) + part) / double(units.size()));
+      if (done == total) ++frames_done;
+    };
+    const Clock::time_point t_unit = Clock::now();
+    auto keep = [&](int f, const Image& img, double ms) {
+      if (f < u.first || f > u.last) return;  // frames before the range (warm-up)
+      cache_->store(u.variant, unit_key(u, f), img, ms);
+      rendered_[{u.scene, u.variant}].insert(f);
+    };
+    if (u.last > u.first) {  // a stateful variant's range, in order, its history whole
+      Clock::time_point t0 = Clock::now();
+      render_frames(*model, *method, u.first, u.last, rs, [&](int f, const Image& img) {
+        keep(f, img, ms_since(t0));
+        t0 = Clock::now();
+      });
+    } else {
+      const Clock::time_point t0 = Clock::now();
+      Image img = render_frame(*model, *method, u.first, rs);
+      keep(u.first, img, ms_since(t0));
+    }
+    const double seconds = ms_since(t_unit) / 1000;
+    if (estimate_) estimate_->done(u.seconds, seconds);
+    ++count;
+    if (on_unit) on_unit(k, seconds);
+  }
+  return count;
+}
+
+Sequence Study::load(const SceneModel& model, const StudyVariant& v, int scene) const {
+  const std::string label = canonical_label(v.label);
+  Sequence s;
+  s.stateful = stateful(v);
+  const int a = c_.first_frame, n = c_.last_frame - c_.first_frame + 1;
+  const int channels = model.scene.grey() ? 1 : 3;
+  const int batches = batch_count(v);
+  auto get = [&](const std::string& k, int f) {
+    auto c = cache_->load(label, k);
+    if (!c) {
+      throw Error(model.scene.name + ": " + label + ", frame " + std::to_string(f) +
+                  ": not in the cache (" + cache_->path(label, k) + ")");
+    }
+    if (c->image.width != model.width() || c->image.height != model.height() ||
+        c->image.channels != channels) {
+      throw Error(cache_->path(label, k) + ": not the size of the study's frames; delete it");
+    }
+    return std::move(*c);
+  };
+  double sum_ms = 0;
+  std::set<int> done;
+  if (auto it = rendered_.find({scene, label}); it != rendered_.end()) {
+    done = std::move(it->second);
+    rendered_.erase(it);
+  }
+  for (int q = 0; q < n; ++q) {
+    const std::string k = key(model.scene, v, a + q);
+    if (batches == 0) {
+      CachedFrame c = get(k, a + q);
+      s.frames.push_back(std::move(c.image));
+      sum_ms += c.ms;
+    } else {
+      // The reference: the mean of its batches, and their spread as the variance of that
+      // mean per pixel and channel, sum (v_b - v)^2 / (B (B - 1)).
+      std::vector<CachedFrame> b;
+      for (int k2 = 0; k2 < batches; ++k2) {
+        b.push_back(get(reference_batch_key(k, k2), a + q));
+        sum_ms += b.back().ms;
+      }
+      Image mean = Image::with_channels(model.width(), model.height(), channels);
+      Image var = Image::with_channels(model.width(), model.height(), channels);
+      for (size_t i = 0; i < mean.data.size(); ++i) {
+        double m = 0;
+        for (const auto& x : b)
+          m += x.image.data[i];
+        m /= batches;
+        double d = 0;
+        for (const auto& x : b)
+          d += (x.image.data[i] - m) * (x.image.data[i] - m);
+        mean.data[i] = static_cast<float>(m);
+        var.data[i] = static_cast<float>(d / (double(batches) * (batches - 1)));
+      }
+      s.frames.push_back(std::move(mean));
+      s.variance.push_back(std::move(var));
+    }
+    s.rendered += done.count(a + q) ? 1 : 0;
   }
   s.cached = n - s.rendered;
-  double sum = 0;
-  for (double t : ms)
-    sum += t;
-  s.ms_per_frame = sum / n;
+  s.ms_per_frame = sum_ms / n;
   return s;
 }
 
@@ -292,7 +499,8 @@ std::vector<double> pixel_trace(const std::vector<Image>& frames, int x, int y) 
   return t;
 }
 
-SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug) {
+SceneResult Study::run_scene(int scene_index, const std::string& scene_slug) {
+  const StudyScene& sc = c_.scenes[scene_index];
   const Scene& scene = sc.scene;
   const SceneModel model(scene);
   SceneResult r;
@@ -306,17 +514,18 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   r.split_distance = w.split_distance;
 
   const std::string tag = scene.name + ": ";
-  const Sequence ref = obtain(model, c_.reference, tag + canonical_label(c_.reference.label));
+  report_estimate(tag + "measures");
+  const Sequence ref = load(model, c_.reference, scene_index);
   r.reference = measure(c_.reference, ref, ref, w);
 
   // Methods: metrics, and the display frames of every variant for pictures and videos.
   std::vector<Sequence> seqs;
   for (const auto& m : c_.methods) {
-    seqs.push_back(obtain(model, m, tag + canonical_label(m.label)));
+    seqs.push_back(load(model, m, scene_index));
     r.methods.push_back(measure(m, seqs.back(), ref, w));
   }
   for (const auto& b : c_.budgets) {
-    const Sequence s = obtain(model, b, tag + canonical_label(b.label));
+    const Sequence s = load(model, b, scene_index);
     r.budgets.push_back(measure(b, s, ref, w));
   }
   std::stable_sort(r.budgets.begin(), r.budgets.end(),
@@ -363,7 +572,7 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   }
 
   if (!c_.pictures && !c_.video) return r;
-  report(done_weight_ / total_weight_, tag + "pictures and video");
+  report_estimate(tag + "pictures and video");
   const int W = scene.width, H = scene.height, n = static_cast<int>(ref.frames.size());
   const int z = std::max(1, c_.zoom);
   const int cw = std::max(1, W / z), ch = std::max(1, H / z);
@@ -481,27 +690,27 @@ SceneResult Study::run_scene(const StudyScene& sc, const std::string& scene_slug
   return r;
 }
 
-StudyResults Study::run() {
+void Study::check() {
+  if (cache_) return;
   if (c_.scenes.empty()) throw Error("compare: give at least one scene file");
   if (c_.methods.empty()) throw Error("--method: give at least one method variant");
   if (c_.out_dir.empty()) throw Error("--out: give the study's folder");
   if (c_.first_frame < 0 || c_.last_frame < c_.first_frame) {
     throw Error("--frames: expected a frame range A-B with 0 <= A <= B");
   }
-  std::vector<std::string> method_labels;
   for (const auto& m : c_.methods)
-    method_labels.push_back(canonical_label(m.label));
-  for (size_t k = 0; k < method_labels.size(); ++k) {
-    if (std::count(method_labels.begin(), method_labels.end(), method_labels[k]) > 1) {
-      throw Error("--method: '" + method_labels[k] + "' is given twice");
+    method_labels_.push_back(canonical_label(m.label));
+  for (size_t k = 0; k < method_labels_.size(); ++k) {
+    if (std::count(method_labels_.begin(), method_labels_.end(), method_labels_[k]) > 1) {
+      throw Error("--method: '" + method_labels_[k] + "' is given twice");
     }
   }
-  if (!c_.equal_cost_target.empty() && std::find(method_labels.begin(), method_labels.end(),
-                                                 c_.equal_cost_target) == method_labels.end()) {
+  if (!c_.equal_cost_target.empty() && std::find(method_labels_.begin(), method_labels_.end(),
+                                                 c_.equal_cost_target) == method_labels_.end()) {
     throw Error("--equal-cost-target: '" + c_.equal_cost_target +
                 "' is not one of the methods (add it with --method)");
   }
-  const auto paper_rows = match_paper_rows(method_labels, c_.paper_rows);
+  paper_rows_ = match_paper_rows(method_labels_, c_.paper_rows);
   for (const auto& s : c_.scenes) {
     if (c_.last_frame >= s.scene.animation.frames) {
       throw Error("--frames: frame " + std::to_string(c_.last_frame) +
@@ -513,13 +722,39 @@ StudyResults Study::run() {
   fs::create_directories(c_.out_dir, ec);
   if (!fs::is_directory(c_.out_dir)) throw Error("--out: cannot create '" + c_.out_dir + "'");
   cache_.emplace(c_.cache_dir.empty() ? (fs::path(c_.out_dir) / "cache").string() : c_.cache_dir);
+}
 
-  // Plan: the work still to do, for the progress bar.
-  for (const auto& s : c_.scenes) {
-    for (const StudyVariant* v : variants())
-      total_weight_ += frames_to_render(s.scene, *v) * cost_weight(*v);
+StudyResults Study::run(bool merge_only) {
+  check();
+  std::vector<StudyUnit> todo = units(true);
+  if (merge_only && !todo.empty()) {
+    std::string list;
+    for (size_t k = 0; k < todo.size() && k < 5; ++k)
+      list += "\n  " + todo[k].id + " (" + todo[k].file + ")";
+    if (todo.size() > 5) list += "\n  ...";
+    throw Error("--merge: " + std::to_string(todo.size()) +
+                " of the study's units are not in the cache " + cache_->dir() + ":" + list +
+                "\n(run the same command again without --merge to render them, or with --slurm to "
+                "submit them)");
   }
-  total_weight_ = std::max(total_weight_, 1e-9);
+  // The pilot, then the time left from its estimates and what is measured.
+  double report_total = 0;
+  std::vector<double> report_of;
+  for (const auto& s : c_.scenes) {
+    report_of.push_back(c_.pictures || c_.video ? report_seconds(c_, s.scene) : 0.2);
+    report_total += report_of.back();
+  }
+  if (!todo.empty() && progress_) {
+    pilot(todo);
+    double total = 0;
+    for (const auto& u : todo)
+      total += u.seconds;
+    const int threads =
+        c_.threads > 0 ? c_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    estimate_.emplace(total, 1.0 / threads, report_total);
+  } else {
+    estimate_.emplace(0, 1.0, report_total);
+  }
 
   StudyResults res;
   StudySettings& st = res.settings;
@@ -529,30 +764,63 @@ StudyResults Study::run() {
   st.last_frame = c_.last_frame;
   st.fps = c_.scenes.front().scene.animation.fps;
   st.reference = canonical_label(c_.reference.label);
-  st.methods = method_labels;
+  st.methods = method_labels_;
   for (const auto& b : c_.budgets)
     st.budgets.push_back(canonical_label(b.label));
   st.equal_cost_target = c_.equal_cost_target;
   st.exposure = c_.display.exposure;
-  st.paper_rows = paper_rows;
+  st.paper_rows = paper_rows_;
   st.command = c_.command;
 
   std::vector<std::string> scene_names;
   for (const auto& s : c_.scenes)
     scene_names.push_back(s.scene.name);
   const std::vector<std::string> scene_slugs = unique_slugs(scene_names);
-  for (size_t k = 0; k < c_.scenes.size(); ++k)
-    res.scenes.push_back(run_scene(c_.scenes[k], scene_slugs[k]));
-  report(1.0, "writing the report");
+  for (size_t k = 0; k < c_.scenes.size(); ++k) {
+    std::vector<StudyUnit> mine;
+    for (const auto& u : todo) {
+      if (u.scene == int(k)) mine.push_back(u);
+    }
+    render(mine);
+    res.scenes.push_back(run_scene(int(k), scene_slugs[k]));
+    estimate_->fixed_done(report_of[k]);
+  }
+  report(1.0, 0, "writing the report");
   write_study_outputs(res, c_.out_dir, c_.html);
   return res;
 }
 
 }  // namespace
 
+std::vector<StudyUnit> study_units(const StudyConfig& config, bool missing_only) {
+  Study s(config, {});
+  s.check();
+  return s.units(missing_only);
+}
+
+double estimate_unit_costs(const StudyConfig& config, std::vector<StudyUnit>& units,
+                           const StudyProgress& progress) {
+  Study s(config, progress);
+  s.check();
+  return s.pilot(units);
+}
+
+int render_units(const StudyConfig& config, const std::vector<StudyUnit>& units,
+                 const StudyProgress& progress,
+                 const std::function<void(size_t unit, double seconds)>& on_unit) {
+  Study s(config, progress);
+  s.check();
+  return s.render(units, on_unit);
+}
+
 StudyResults run_study(const StudyConfig& config, const StudyProgress& progress) {
   Study s(config, progress);
-  return s.run();
+  return s.run(false);
+}
+
+StudyResults merge_study(const StudyConfig& config, const StudyProgress& progress) {
+  Study s(config, progress);
+  return s.run(true);
 }
 
 void write_study_outputs(const StudyResults& r, const std::string& out_dir, bool html) {

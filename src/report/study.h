@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "gl_engine/engines.h"
 #include "image/tonemap.h"
 #include "methods/method.h"
 #include "report/results.h"
@@ -28,7 +29,8 @@ struct StudyVariant {
   std::string label;  // as given; canonicalised for tables and cache keys
   std::string name;   // catalogue name
   MethodOptions options;
-  // Builds the method; empty: make_method(name, options). Tests inject their own.
+  Engine engine = Engine::cpu;
+  // Builds the method; empty: make_method_on(engine, name, options). Tests inject their own.
   std::function<std::unique_ptr<Method>()> make;
 };
 
@@ -61,12 +63,56 @@ struct StudyConfig {
 // the first that is not a supersampling estimator (reference, supersample), else "".
 std::string default_equal_cost_target(const std::vector<StudyVariant>& methods);
 
-// Progress of the whole study: fraction in [0, 1] of the estimated work, and what runs.
-using StudyProgress = std::function<void(double fraction, const std::string& what)>;
+// Progress of the whole study: the estimated share of the work done, the time left (from
+// the pilot's costs and the measured time of the work done; < 0 while unknown) and what
+// runs.
+struct StudyStatus {
+  double fraction = 0;
+  double seconds_left = -1;
+  std::string what;
+};
+using StudyProgress = std::function<void(const StudyStatus&)>;
 
-// Runs the study and writes its outputs into config.out_dir. Throws sg::Error on bad
-// configuration (naming the option) or failed writes.
+// One unit of the study's work (report/plan.h): a frame of a stateless variant, a batch of
+// a frame of the reference, or the whole range of a stateful variant, rendered by one
+// process and stored whole in the frame cache.
+struct StudyUnit {
+  int scene = 0;            // index into StudyConfig::scenes
+  std::string variant;      // canonical label
+  int first = 0, last = 0;  // frames (one, except a stateful variant's range)
+  int batch = -1;           // the reference's batch, or -1
+  std::string id;           // "simple: point, frame 3"
+  std::string file;         // its (first) cache file's name: the unit's identity
+  double seconds = 0;       // estimated cost, core-seconds (estimate_unit_costs)
+};
+
+// Every unit of the study in the order a local run renders them (per scene: the reference's
+// batches frame by frame, each method, each budget not already a method); with
+// `missing_only`, those not complete in the cache. Checks the configuration first (throws
+// sg::Error naming the option).
+std::vector<StudyUnit> study_units(const StudyConfig& config, bool missing_only);
+
+// The pilot: each (scene, variant) with a unit in `units` renders a sample of the tiles of
+// one of its frames on one thread (its per-frame setup whole); the time, extrapolated to
+// the frame, is the estimated cost of each of its units. Returns the pilot's wall seconds.
+double estimate_unit_costs(const StudyConfig& config, std::vector<StudyUnit>& units,
+                           const StudyProgress& progress = {});
+
+// Renders `units` (from study_units of the same configuration) into the frame cache; a unit
+// already complete there is skipped. `on_unit(k, seconds)` follows each unit rendered.
+// Returns the number of units rendered.
+int render_units(const StudyConfig& config, const std::vector<StudyUnit>& units,
+                 const StudyProgress& progress = {},
+                 const std::function<void(size_t unit, double seconds)>& on_unit = {});
+
+// Runs the study and writes its outputs into config.out_dir: the pilot on the missing
+// units, those units, then the measures, pictures and report from the cache. Throws
+// sg::Error on bad configuration (naming the option) or failed writes.
 StudyResults run_study(const StudyConfig& config, const StudyProgress& progress = {});
+
+// The merge: the outputs from a complete cache, rendering nothing; throws sg::Error naming
+// the missing units (and how many) when the cache is not complete.
+StudyResults merge_study(const StudyConfig& config, const StudyProgress& progress = {});
 
 // results.json, results.csv, results.md and (with html) index.html and its assets.
 void write_study_outputs(const StudyResults& results, const std::string& out_dir, bool html);

@@ -130,7 +130,8 @@ TEST_F(StudyTest, CachesResumesAndKeepsStatefulHistoryWhole) {
   // lost frame 3. Exactly those are redone - and all of ema, whose frames need history.
   FrameCache cache(dir_ + "/cache");
   const Scene& sc = c_.scenes[0].scene;
-  fs::remove(cache.path(c_.reference.label, frame_key(sc, c_.reference.label, 2)));
+  fs::remove(
+      cache.path(c_.reference.label, reference_batch_key(frame_key(sc, c_.reference.label, 2), 1)));
   fs::remove(cache.path("point", frame_key(sc, "point", 1)) + ".json");
   fs::remove(cache.path("ema", frame_key(sc, "ema", 3, 0)));
   const StudyResults resumed = run_study(c_);
@@ -161,10 +162,13 @@ TEST_F(StudyTest, ResultsHoldEveryMethodRegionAndTheEqualCostComparison) {
   c_.html = false;
   double last = -1;
   bool monotone = true;
-  const StudyResults r = run_study(c_, [&](double f, const std::string&) {
-    monotone = monotone && f >= last;
-    last = f;
+  bool estimated = false;
+  const StudyResults r = run_study(c_, [&](const StudyStatus& st) {
+    monotone = monotone && st.fraction >= last;
+    last = st.fraction;
+    estimated = estimated || st.seconds_left > 0;
   });
+  EXPECT_TRUE(estimated);
   EXPECT_TRUE(monotone);
   EXPECT_DOUBLE_EQ(last, 1.0);
   const SceneResult& s = r.scenes[0];
@@ -194,7 +198,8 @@ TEST_F(StudyTest, ResultsHoldEveryMethodRegionAndTheEqualCostComparison) {
   EXPECT_TRUE(fs::exists(fs::path(dir_) / "results.json"));
   EXPECT_FALSE(fs::exists(fs::path(dir_) / "index.html"));
   // The reference's noise: measured per region, beside every variant's RMSE, which is
-  // corrected by it; a cached frame without its variance is rendered again.
+  // corrected by it; it is the spread of the reference's batches, each cached alone (a
+  // missing batch is rendered again).
   for (int k = 0; k < 4; ++k) {
     const double se = s.reference.regions[k].reference_se;
     EXPECT_GT(se, 0) << kRegionNames[k];
@@ -207,8 +212,8 @@ TEST_F(StudyTest, ResultsHoldEveryMethodRegionAndTheEqualCostComparison) {
   }
   const FrameCache cache(dir_ + "/cache");
   const std::string key = frame_key(c_.scenes[0].scene, c_.reference.label, 2);
-  ASSERT_TRUE(cache.has(c_.reference.label, variance_key(key)));
-  fs::remove(cache.path(c_.reference.label, variance_key(key)));
+  ASSERT_TRUE(cache.has(c_.reference.label, reference_batch_key(key, 0)));
+  fs::remove(cache.path(c_.reference.label, reference_batch_key(key, 0)));
   const StudyResults again = run_study(c_);
   EXPECT_EQ(again.scenes[0].reference.frames_rendered, 1);
   EXPECT_EQ(again.scenes[0].reference.at(Region::image).reference_se,
@@ -269,7 +274,12 @@ TEST_F(StudyTest, FlickerPixelIsThePointOfLargestTemporalError) {
   std::vector<Image> p, ref;
   for (int f = 0; f < 4; ++f) {
     p.push_back(cache.load("point", frame_key(s, "point", f))->image);
-    ref.push_back(cache.load(c_.reference.label, frame_key(s, c_.reference.label, f))->image);
+    const std::string k = frame_key(s, c_.reference.label, f);
+    Image mean = cache.load(c_.reference.label, reference_batch_key(k, 0))->image;
+    const Image b1 = cache.load(c_.reference.label, reference_batch_key(k, 1))->image;
+    for (size_t q = 0; q < mean.data.size(); ++q)
+      mean.data[q] = float((double(mean.data[q]) + b1.data[q]) / 2);
+    ref.push_back(mean);
   }
   auto te = [&](int i, int j) {
     double e = 0;
@@ -316,7 +326,7 @@ TEST_F(StudyTest, BadConfigurationNamesTheOption) {
 }
 
 TEST(DefaultTarget, StaaThenNonBaselineThenPoint) {
-  auto v = [](const std::string& n) { return StudyVariant{n, n, {}, {}}; };
+  auto v = [](const std::string& n) { return StudyVariant{n, n, {}, {}, {}}; };
   EXPECT_EQ(default_equal_cost_target({v("point"), v("lean"), v("staa")}), "staa");
   EXPECT_EQ(default_equal_cost_target({v("point"), v("supersample"), v("lean")}), "lean");
   EXPECT_EQ(default_equal_cost_target({v("supersample"), v("point")}), "point");
