@@ -1,5 +1,6 @@
 #include "cli/method_flags.h"
 
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -244,22 +245,38 @@ static void scope_method_flags(const std::vector<const CLI::Option*>& options, M
       {"--intersect-tolerance", kernel},
       {"--segments", staa_both},
   };
-  // Every other flag names its method before its dashes' first word: --lean-size (lean),
-  // --taa-alpha (taa), ...; the rest configure staa alone.
+  // staa's own (methods/staa.h).
+  const std::vector<std::string> staa = {"--ndf",
+                                         "--ndf-mean",
+                                         "--kernels",
+                                         "--elongation-threshold",
+                                         "--fallback",
+                                         "--fallback-time",
+                                         "--riemann-cells",
+                                         "--alias-start",
+                                         "--alias-end",
+                                         "--nyquist",
+                                         "--footprint",
+                                         "--curvature-limit",
+                                         "--wave-remainder",
+                                         "--smooth-terms",
+                                         "--smooth-cells"};
+  // The baselines' flags name their method first: --lean-size (lean), --taa-alpha (taa), ...
   const std::vector<std::string> prefixed = {"lean", "taa", "microspec", "specaa", "bruneton"};
   for (const CLI::Option* opt : options) {
     const std::string name = opt->get_name();
-    if (name == "--engine") continue;
+    if (name == "--engine") continue;  // every method's
     std::vector<std::string> methods;
-    if (auto t = takers.find(name); t != takers.end()) {
-      methods = t->second;
-    } else {
-      methods = {"staa"};
-      for (const std::string& p : prefixed) {
-        if (name.rfind("--" + p + "-", 0) == 0) methods = {p};
-      }
+    if (auto t = takers.find(name); t != takers.end()) methods = t->second;
+    if (std::find(staa.begin(), staa.end(), name) != staa.end()) methods = {"staa"};
+    for (const std::string& p : prefixed) {
+      if (name.rfind("--" + p + "-", 0) == 0) methods = {p};
     }
-    f.scoped.push_back({opt, methods});
+    if (methods.empty()) {
+      f.unscoped.push_back(name);  // taken by every method (method_flags_test lists none)
+    } else {
+      f.scoped.push_back({opt, methods});
+    }
   }
 }
 

@@ -25,6 +25,9 @@ struct MethodFlags {
     std::vector<std::string> methods;
   };
   std::vector<Scoped> scoped;
+  // Method flags that add_method_flags does not know the methods of (taken by every method):
+  // a new flag belongs in its table (method_flags_test checks that none is left here).
+  std::vector<std::string> unscoped;
   // `context` prefixes error messages (e.g. the method variant being parsed).
   void finish(const std::string& context = "");
   // Refuses a flag given on the command line that none of `methods` takes: "--samples: not

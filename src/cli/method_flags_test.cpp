@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "base/error.h"
 #include "cli/args.h"
+#include "methods/method.h"
 
 namespace sg {
 namespace {
@@ -62,6 +65,24 @@ TEST(MethodVariant, FlagsOfOtherMethodsAreRefused) {
         "microspec --microspec-area approx", "specaa --specaa-kernel full",
         "bruneton --bruneton-nmin 2", "point --engine gl"}) {
     EXPECT_NO_THROW(parse_method_variant(text)) << text;
+  }
+}
+
+TEST(MethodFlags, EveryFlagNamesTheMethodsItConfigures) {
+  CLI::App app{"test"};
+  MethodFlags f;
+  add_method_flags(app, f);
+  EXPECT_TRUE(f.unscoped.empty()) << "a method flag without its methods: " << f.unscoped.front();
+  EXPECT_GE(f.scoped.size(), 30u);
+  std::vector<std::string> names;
+  for (const auto& m : method_catalog())
+    names.push_back(m.name);
+  for (const MethodFlags::Scoped& s : f.scoped) {
+    ASSERT_FALSE(s.methods.empty()) << s.option->get_name();
+    for (const std::string& m : s.methods) {
+      EXPECT_NE(std::find(names.begin(), names.end(), m), names.end())
+          << s.option->get_name() << ": " << m << " is not a method";
+    }
   }
 }
 
