@@ -26,7 +26,7 @@ void BM_SceneJson(benchmark::State& state) {
   OceanParams p;
   p.waves = static_cast<int>(state.range(0));
   const sg::Scene s =
-      sg::ocean::ocean_scene(sg::ocean::default_template(), sg::ocean::generate(p), "sea");
+      sg::ocean::ocean_scene(sg::ocean::plain_template(), sg::ocean::generate(p), "sea");
   for (auto _ : state)
     benchmark::DoNotOptimize(sg::scene_to_json(s));
   state.SetItemsProcessed(state.iterations() * p.waves);

@@ -1,6 +1,7 @@
 #include "base/output_path.h"
 
 #include <fcntl.h>
+#include <sys/statfs.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -14,12 +15,52 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The kernel's virtual file systems, which hold no files of ours: creating one there fails
+// with an errno that misleads ("No such file or directory" in /proc, whose folder exists).
+const char* virtual_file_system(const fs::path& dir) {
+  struct statfs st {};
+  if (::statfs(dir.c_str(), &st) != 0) return nullptr;
+  switch (static_cast<unsigned long>(st.f_type)) {
+    case 0x9fa0UL:
+      return "proc";
+    case 0x62656572UL:
+      return "sysfs";
+    case 0x1cd1UL:
+      return "devpts";
+    case 0x64626720UL:
+      return "debugfs";
+    case 0x74726163UL:
+      return "tracefs";
+    case 0x27e0ebUL:
+      return "cgroup";
+    case 0x63677270UL:
+      return "cgroup2";
+    case 0x73636673UL:
+      return "securityfs";
+    case 0x6e736673UL:
+      return "nsfs";
+    case 0xcafe4a11UL:
+      return "bpf";
+    default:
+      return nullptr;
+  }
+}
+
 // Whether a new file can be created in `dir`: a probe file is created and removed (the
 // permission bits alone do not say; a read-only mount or a root user change the answer).
+// The reason when it cannot: the system's, or that of a virtual file system.
 std::string probe_writable(const fs::path& dir) {
   const fs::path probe = dir / (".sunglint-probe-" + std::to_string(::getpid()));
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
-  if (fd < 0) return std::strerror(errno);
+  if (fd < 0) {
+    const int err = errno;
+    if (const char* type = virtual_file_system(dir)) {
+      return std::string("it is on the kernel's virtual ") + type +
+             " file system, where no program can create a file (" + std::strerror(err) +
+             "); choose a folder on a disk";
+    }
+    return std::strerror(err);
+  }
   ::close(fd);
   ::unlink(probe.c_str());
   return "";

@@ -68,6 +68,54 @@ CLI::Validator integer_in(long long lo, long long hi) {
       "INT in " + range, "integer_in");
 }
 
+namespace {
+
+// Edit distance with transpositions (optimal string alignment).
+size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i)
+    d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j)
+    d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min(
+          {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+}  // namespace
+
+std::string closest_name(const std::string& word, const std::vector<std::string>& names) {
+  std::string best;
+  size_t best_d = 3;
+  for (const std::string& n : names) {
+    const size_t d = edit_distance(word, n);
+    if (d < best_d && 3 * d < std::max(word.size(), n.size())) {
+      best = n;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+std::vector<std::string> flag_names(const CLI::App* app) {
+  std::vector<std::string> names;
+  for (; app != nullptr; app = app->get_parent()) {
+    for (const CLI::Option* o : app->get_options()) {
+      for (const std::string& l : o->get_lnames())
+        names.push_back("--" + l);
+      for (const std::string& s : o->get_snames())
+        names.push_back("-" + s);
+    }
+  }
+  return names;
+}
+
 FrameRange parse_frame_range(const std::string& text, const std::string& flag) {
   FrameRange r;
   size_t dash = text.find('-', 1);

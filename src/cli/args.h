@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "base/error.h"
 #include "scene/scene.h"
@@ -40,6 +41,13 @@ void check_usage(F&& check) {
 CLI::Validator finite_number();
 CLI::Validator number_in(double lo, double hi);
 CLI::Validator integer_in(long long lo, long long hi);
+
+// The one of `names` that `word` is a slip of ("--widht" of "--width": at most 2 edits,
+// a transposition counting one, and fewer than a third of the longer word), else "".
+std::string closest_name(const std::string& word, const std::vector<std::string>& names);
+
+// The long and short flags of `app` and of its parents ("--width", "-m").
+std::vector<std::string> flag_names(const CLI::App* app);
 
 struct FrameRange {
   int first = 0, last = 0;

@@ -1,10 +1,12 @@
 // `sunglint bench [SCENES...] --methods LIST`: time per frame of each method on each scene,
-// with the reference's throughput (samples and wave evaluations per second) and each
-// method's cost as a ratio to `point` on the same engine, measured in the same run
-// (docs/benchmarks.md). On the CPU engine a frame's time is the wall time of the frame;
-// on the GL engine (`--engine gl`) it is the GPU time of the frame's dispatch from timer
-// queries (the median of the repeats after one warm-up; the upload and read-back are not
-// included), with the wall time of a whole frame beside it.
+// with the sampling methods' throughput (samples per second; wave evaluations per second
+// for supersample) and each method's cost as a ratio to `point` on the same engine,
+// measured in the same run (docs/benchmarks.md). On the CPU engine a frame's time is the
+// wall time of the frame (the fastest of --repeat); on the GL engine (`--engine gl`) it is
+// the GPU time of the frame's dispatch from timer queries, with the wall time of the whole
+// frame around it (upload, dispatch, read-back) beside it, both the medians of the same
+// repeats after one warm-up, so the GPU time never exceeds the frame's. The GL program's
+// compilation happens before the warm-up and is not timed (gl_engine/program_notice.h).
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -18,6 +20,7 @@
 #include "gl_engine/gl_engine.h"
 #include "gl_engine/gl_method.h"
 #include "methods/method.h"
+#include "methods/reference.h"
 #include "methods/stratified.h"
 
 namespace sg {
@@ -38,6 +41,32 @@ std::vector<std::string> split(const std::string& s) {
     if (!item.empty()) out.push_back(item);
   }
   return out;
+}
+
+// The samples a method takes in a frame (point: one per pixel; supersample: its
+// positions and times; reference without --adaptive: every batch's) and, for supersample,
+// the wave evaluations; 0 where it is not a sampling method or the count varies per pixel
+// (the adaptive reference).
+struct Throughput {
+  double samples = 0, wave_evaluations = 0;
+};
+Throughput throughput(const FrameContext& ctx, const std::string& name, const MethodOptions& o) {
+  const double pixels = double(ctx.model.width()) * ctx.model.height();
+  Throughput t;
+  if (name == "point") {
+    t.samples = pixels;
+  } else if (name == "supersample") {
+    const StratifiedSettings st{o.samples, o.samples.st == 1};
+    t.samples = pixels * o.samples.sx * o.samples.sy * (st.time_at_frame ? 1 : o.samples.st);
+    for (int j = 0; j < ctx.model.height(); ++j) {
+      for (int i = 0; i < ctx.model.width(); ++i)
+        t.wave_evaluations += double(stratified_pixel_wave_evaluations(ctx, i, j, st));
+    }
+  } else if (name == "reference") {
+    const ReferenceSettings rs = reference_settings(o);
+    if (!rs.adaptive) t.samples = pixels * rs.batches * double(rs.samples.total());
+  }
+  return t;
 }
 
 void run_bench(BenchArgs& a) {
@@ -64,6 +93,13 @@ void run_bench(BenchArgs& a) {
       }
     }
     if (variants.empty()) throw Error("--methods: give at least one method");
+    // The command's method flags configure the plain names of --methods (a variant with
+    // flags of its own takes only those): each flag must configure one of them.
+    std::vector<std::string> plain;
+    for (const auto& item : split(a.methods)) {
+      if (item.find(' ') == std::string::npos) plain.push_back(item);
+    }
+    a.flags.check_taken_by(plain);
   });
   std::vector<Scene> scenes;
   for (const auto& path : a.scenes) {
@@ -79,6 +115,7 @@ void run_bench(BenchArgs& a) {
   std::printf("|---|---|---|---:|---:|---:|---:|\n");
   for (const Scene& s : scenes) {
     SceneModel model(s);
+    const FrameContext ctx{model, frame_time(s, a.frame), 0};
     double point_ms[2] = {0, 0};  // per engine
     for (const MethodVariant& v : variants) {
       const std::string& n = v.name;
@@ -86,58 +123,42 @@ void run_bench(BenchArgs& a) {
       std::unique_ptr<Method> m;
       check_usage([&] { m = make_method_on(v.engine, n, vo); });
       double best = 1e300;
+      std::string engine = "cpu";
       if (auto* g = dynamic_cast<gl_engine::GlMethod*>(m.get())) {
-        // GPU time of the dispatch; then one whole frame's wall time, for the record.
-        const FrameContext ctx{model, frame_time(s, a.frame), 0};
-        best = g->engine().time_dispatch(ctx, 1, std::max(3, a.repeat));
-        auto t0 = std::chrono::steady_clock::now();
-        render_frame(model, *m, a.frame, rs);
-        const double wall =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                .count();
-        if (n == "point" && point_ms[1] == 0) point_ms[1] = best;
-        char ratio[32] = "";
-        if (point_ms[1] > 0) std::snprintf(ratio, sizeof ratio, "%.2f", best / point_ms[1]);
-        std::printf("| %s | %s | gl (GPU timer; frame %.1f ms) | %.2f | %s | | |\n", s.name.c_str(),
-                    v.label.c_str(), wall, best, ratio);
-        std::fflush(stdout);
-        continue;
-      }
-      // A stateful method is timed on a frame that has history to resolve.
-      if (m->stateful()) render_frame(model, *m, a.frame - 1, rs);
-      for (int r = 0; r < std::max(1, a.repeat); ++r) {
-        if (m->stateful() && r > 0) {
-          m->reset();
-          render_frame(model, *m, a.frame - 1, rs);
-        }
-        auto t0 = std::chrono::steady_clock::now();
-        render_frame(model, *m, a.frame, rs);
-        best = std::min(
-            best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                      .count());
-      }
-      if (n == "point" && point_ms[0] == 0) point_ms[0] = best;
-      std::string sps = "", wps = "";
-      if (n == "supersample") {
-        StratifiedSettings st{vo.samples, n == "supersample" && vo.samples.st == 1};
-        FrameContext ctx{model, frame_time(s, a.frame), 0};
-        long evals = 0;
-        for (int j = 0; j < s.height; ++j) {
-          for (int i = 0; i < s.width; ++i)
-            evals += stratified_pixel_wave_evaluations(ctx, i, j, st);
-        }
-        const double samples = double(s.width) * s.height * vo.samples.sx * vo.samples.sy *
-                               (st.time_at_frame ? 1 : vo.samples.st);
+        // Per frame the GPU time of its dispatch and the wall time of the whole frame
+        // around it (upload, dispatch, read-back); the medians after one warm-up.
+        const gl_engine::GlEngine::FrameTimes t =
+            g->engine().time_frames(ctx, 1, std::max(3, a.repeat));
+        best = t.gpu_ms;
         char buf[64];
-        std::snprintf(buf, sizeof buf, "%.3g", samples / (best / 1000));
-        sps = buf;
-        std::snprintf(buf, sizeof buf, "%.3g", evals / (best / 1000));
-        wps = buf;
+        std::snprintf(buf, sizeof buf, "gl (GPU timer; frame %.1f ms)", t.frame_ms);
+        engine = buf;
+      } else {
+        // A stateful method is timed on a frame that has history to resolve.
+        if (m->stateful()) render_frame(model, *m, a.frame - 1, rs);
+        for (int r = 0; r < std::max(1, a.repeat); ++r) {
+          if (m->stateful() && r > 0) {
+            m->reset();
+            render_frame(model, *m, a.frame - 1, rs);
+          }
+          auto t0 = std::chrono::steady_clock::now();
+          render_frame(model, *m, a.frame, rs);
+          best = std::min(
+              best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                        .count());
+        }
       }
-      char ratio[32] = "";
-      if (point_ms[0] > 0) std::snprintf(ratio, sizeof ratio, "%.2f", best / point_ms[0]);
-      std::printf("| %s | %s | cpu | %.1f | %s | %s | %s |\n", s.name.c_str(), v.label.c_str(),
-                  best, ratio, sps.c_str(), wps.c_str());
+      const int e = v.engine == Engine::gl ? 1 : 0;
+      if (n == "point" && point_ms[e] == 0) point_ms[e] = best;
+      const Throughput tp = throughput(ctx, n, vo);
+      char ratio[32] = "-", sps[32] = "-", wps[32] = "-";
+      if (point_ms[e] > 0) std::snprintf(ratio, sizeof ratio, "%.2f", best / point_ms[e]);
+      if (tp.samples > 0) std::snprintf(sps, sizeof sps, "%.3g", tp.samples / (best / 1000));
+      if (tp.wave_evaluations > 0) {
+        std::snprintf(wps, sizeof wps, "%.3g", tp.wave_evaluations / (best / 1000));
+      }
+      std::printf("| %s | %s | %s | %.2f | %s | %s | %s |\n", s.name.c_str(), v.label.c_str(),
+                  engine.c_str(), best, ratio, sps, wps);
       std::fflush(stdout);
     }
   }

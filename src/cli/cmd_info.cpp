@@ -1,6 +1,7 @@
 // `sunglint info SCENE [--json] [--waves] [--width W] [--height H] [--bands N]`: what a
-// scene holds, and how many of its waves each band of the image resolves at that size
-// (cli/wave_resolution.h).
+// scene holds, what it will look like (where the light and its glitter fall in the frame,
+// the sky, the Fresnel term, the sea; `look`), and how many of its waves each band of the
+// image resolves at that size (cli/wave_resolution.h).
 //
 // The slope statistics are those of the sum of sines averaged over space and time
 // (Podee et al. 2021, Eq. 3, summed over waves): covariance
@@ -13,14 +14,18 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "base/error.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/wave_resolution.h"
+#include "scene/camera.h"
 #include "scene/light.h"
 #include "scene/scene.h"
 #include "scene/waves.h"
+#include "shading/radiance.h"
 
 namespace sg {
 namespace {
@@ -38,6 +43,119 @@ std::string rgb_text(const Rgb& c) {
     std::snprintf(buf, sizeof buf, "[%g, %g, %g]", c.x, c.y, c.z);
   }
   return buf;
+}
+
+bool is_black(const Rgb& c) {
+  return c.x == 0 && c.y == 0 && c.z == 0;
+}
+
+// Where direction `d` from the camera falls in the frame: "at pixel (x, y)", or where
+// outside it.
+struct Placement {
+  bool in_frame = false;
+  double x = 0, y = 0;
+  std::string text;
+};
+Placement place(const CameraModel& cam, const vec3& d, int width, int height) {
+  Placement p;
+  if (!cam.project(d, p.x, p.y)) {
+    p.text = "out of view (more than 90 degrees from where the camera looks)";
+    return p;
+  }
+  char buf[96];
+  if (p.x >= 0 && p.x < width && p.y >= 0 && p.y < height) {
+    p.in_frame = true;
+    std::snprintf(buf, sizeof buf, "in the frame at pixel (%.0f, %.0f)", p.x, p.y);
+  } else {
+    std::snprintf(buf, sizeof buf, "outside the frame (%s%s%s)",
+                  p.y < 0         ? "above it"
+                  : p.y >= height ? "below it"
+                                  : "",
+                  (p.y < 0 || p.y >= height) && (p.x < 0 || p.x >= width) ? ", " : "",
+                  p.x < 0        ? "left of it"
+                  : p.x >= width ? "right of it"
+                                 : "");
+  }
+  p.text = buf;
+  return p;
+}
+
+// What the scene will look like, in words (the `look` lines of `info`) and as JSON.
+struct Look {
+  std::vector<std::string> lines;
+  nlohmann::json json;
+};
+Look look_of(const Scene& s, double elevation) {
+  Look k;
+  const CameraModel cam(s.camera, s.width, s.height);
+  const vec3 L = normalize(s.light.direction);
+  char buf[256];
+  const Placement light = place(cam, L, s.width, s.height);
+  std::snprintf(buf, sizeof buf, "the light %.1f deg %s the horizon, %s%s", std::fabs(elevation),
+                elevation >= 0 ? "above" : "below", light.text.c_str(),
+                s.light.visible ? ", drawn in the sky" : ", not drawn (only its reflection)");
+  k.lines.push_back(buf);
+  // The glitter's centre: the light's mirror image in the water at rest (far away, the
+  // camera's height does not matter).
+  const vec3 mirror(L.x, -L.y, L.z);
+  Placement glitter;
+  double f_glitter = 0;
+  if (elevation > 0) {
+    glitter = place(cam, mirror, s.width, s.height);
+    f_glitter = fresnel(s.surface.fresnel, L.y);
+    std::snprintf(buf, sizeof buf, "its glitter (the light's mirror image) %s",
+                  glitter.text.c_str());
+  } else {
+    std::snprintf(buf, sizeof buf, "no glitter: the light is below the horizon");
+  }
+  k.lines.push_back(buf);
+  std::string sky;
+  if (!s.sky.gradient && is_black(s.sky.zenith)) {
+    sky = "a black sky";
+  } else if (!s.sky.gradient) {
+    sky = "a uniform sky of " + rgb_text(s.sky.zenith);
+  } else {
+    std::snprintf(buf, sizeof buf, "a sky graded from %s at the zenith to %s at the horizon",
+                  rgb_text(s.sky.zenith).c_str(), rgb_text(s.sky.horizon).c_str());
+    sky = buf;
+  }
+  std::string water;
+  if (s.surface.fresnel == FresnelMode::none) {
+    water = "no Fresnel term: the water mirrors all of the light and the sky";
+  } else {
+    std::snprintf(buf, sizeof buf,
+                  "Schlick's Fresnel: the water mirrors %.0f%% looking straight down, %.0f%% "
+                  "of the light at its glitter, all at grazing",
+                  100 * kSchlickR0, 100 * f_glitter);
+    water = buf;
+  }
+  k.lines.push_back(sky);
+  k.lines.push_back(water);
+  const bool only_glints =
+      is_black(s.sky.zenith) && is_black(s.sky.horizon) && is_black(s.surface.sea_radiance);
+  if (only_glints) {
+    k.lines.push_back(
+        "no sky and no sea light: only the glints are lit, a picture is black elsewhere (the "
+        "measurement look; `sunglint ocean` without --template writes the sea as it looks)");
+  } else if (is_black(s.surface.sea_radiance)) {
+    k.lines.push_back("the sea beneath is black: the water shows only what it mirrors");
+  } else {
+    k.lines.push_back("the sea beneath, " + rgb_text(s.surface.sea_radiance) +
+                      ", shows through what the water does not mirror");
+  }
+  auto pixel = [](const Placement& p) {
+    return p.in_frame ? nlohmann::json::array({p.x, p.y}) : nlohmann::json(nullptr);
+  };
+  k.json = {{"light_pixel", pixel(light)},
+            {"light_in_frame", light.in_frame},
+            {"glitter_pixel", pixel(glitter)},
+            {"fresnel_at_glitter", s.surface.fresnel == FresnelMode::none ? 1.0 : f_glitter},
+            {"sky", !s.sky.gradient && is_black(s.sky.zenith) ? "black"
+                    : s.sky.gradient                          ? "gradient"
+                                                              : "uniform"},
+            {"only_glints", only_glints},
+            {"text", k.lines}};
+  return k;
 }
 
 struct InfoArgs {
@@ -84,6 +202,7 @@ void run_info(const InfoArgs& a) {
   }
   const double elevation = degrees(std::asin(clamp(light.L.y, -1.0, 1.0)));
   const double azimuth = degrees(std::atan2(light.L.x, -light.L.z));
+  const Look look = look_of(s, elevation);
   nlohmann::json j = {
       {"name", s.name},
       {"image", {s.width, s.height}},
@@ -109,6 +228,7 @@ void run_info(const InfoArgs& a) {
         {"exponent", s.sky.exponent},
         {"gradient", s.sky.gradient}}},
       {"sea_radiance", rgb_json(s.surface.sea_radiance)},
+      {"look", look.json},
       {"animation",
        {{"t0", s.animation.t0},
         {"fps", s.animation.fps},
@@ -141,6 +261,8 @@ void run_info(const InfoArgs& a) {
   } else {
     std::printf("sky          radiance %s\n", rgb_text(s.sky.zenith).c_str());
   }
+  for (size_t k = 0; k < look.lines.size(); ++k)
+    std::printf("%s %s\n", k == 0 ? "look        " : "            ", look.lines[k].c_str());
   std::printf("animation    %d frames at %g fps from t0 = %g s, shutter %g\n", s.animation.frames,
               s.animation.fps, s.animation.t0, s.animation.shutter);
   if (res.bands.empty()) {

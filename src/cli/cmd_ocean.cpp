@@ -1,7 +1,9 @@
-// `sunglint ocean -o OUT.json [--spectrum ...] [--template FILE]`: a scene whose waves are
-// sampled from a directional wave spectrum (ocean/ocean.h), written as explicit waves so
-// that every renderer reads it. docs/ocean.md describes the spectra, the sampling and
-// every flag's range.
+// `sunglint ocean -o OUT.json [--spectrum ...] [--template FILE] [--geometry flat|displaced]`:
+// a scene whose waves are sampled from a directional wave spectrum (ocean/ocean.h), written
+// as explicit waves so that every renderer reads it. Without a template the scene looks
+// like the sea (ocean::sea_template: a sun, a sky, Fresnel); a template gives its view and
+// look instead (scripts/templates/plain.json: the measurement scenes' black sky). docs/ocean.md
+// describes the spectra, the sampling and every flag's range.
 //
 // Exit codes: 2 for a bad flag value (the message names the flag), 1 when the work fails
 // (an unreadable template, an unwritable output).
@@ -28,7 +30,7 @@ namespace {
 }
 
 struct OceanArgs {
-  std::string out, template_path, name;
+  std::string out, template_path, name, geometry;
   std::string spectrum = "jonswap", spreading = "cos2s";
   std::string wind_speed, wind_direction, fetch, depth, gamma, waves, wavelengths, seed;
   std::string swell_height, swell_period, swell_direction, swell_spread, swell_gamma, swell_waves;
@@ -145,8 +147,16 @@ void run_ocean(const OceanArgs& a) {
   const ocean::OceanParams p = params_of(a);
   const std::filesystem::path out(a.out);
   if (out.extension() != ".json") usage("--out: must name a .json file (got '" + a.out + "')");
-  const Scene templ =
-      a.template_path.empty() ? ocean::default_template() : load_scene(a.template_path);
+  Geometry geometry = Geometry::flat;
+  if (a.given("--geometry")) {
+    if (a.geometry == "displaced") {
+      geometry = Geometry::displaced;
+    } else if (a.geometry != "flat") {
+      usage("--geometry: must be flat or displaced (got '" + a.geometry + "')");
+    }
+  }
+  Scene templ = a.template_path.empty() ? ocean::sea_template() : load_scene(a.template_path);
+  if (a.given("--geometry")) templ.surface.geometry = geometry;
   ocean::Ocean o;
   try {
     o = ocean::generate(p);
@@ -171,6 +181,11 @@ void run_ocean(const OceanArgs& a) {
               4 * std::sqrt(o.variance), a.out.c_str());
   describe(ocean::to_string(p.spectrum).c_str(), o.wind, o.wind_spectrum);
   if (p.swell.enabled) describe("swell", o.swell, o.swell_spectrum);
+  std::printf("  look   %s, %s water; `sunglint info %s` says more%s\n",
+              a.template_path.empty() ? "the default sea (a sun 12 degrees up, a sky, Fresnel)"
+                                      : ("the template's (" + a.template_path + ")").c_str(),
+              scene.surface.geometry == Geometry::flat ? "flat" : "displaced", a.out.c_str(),
+              a.template_path.empty() ? " (--template FILE: another view or look)" : "");
 }
 
 }  // namespace
@@ -187,9 +202,16 @@ void add_ocean_command(CLI::App& app) {
       "towards the camera. See docs/ocean.md.");
   c->add_option("-o,--out", a->out, "Output scene file (.json)")->required();
   c->add_option("--template", a->template_path,
-                "Scene whose camera, light, image, animation and surface settings are kept "
-                "(default: a camera 2.5 m above the sea looking ahead, the sun 12 degrees high "
-                "ahead, 640x360, 60 frames at 30 fps)");
+                "Scene whose camera, light, sky, image, animation and surface settings are kept "
+                "(default: the sea as it looks: a camera 2.5 m above it looking ahead, the sun "
+                "12 degrees high ahead and drawn, a blue sky graded to the horizon, Schlick "
+                "Fresnel, a dark sea; 640x360, 60 frames at 30 fps. "
+                "scripts/templates/plain.json: the measurement scenes' light 1, black sky, "
+                "no Fresnel)");
+  c->add_option("--geometry", a->geometry,
+                "flat (the water at rest, as the methods assume; default) or displaced (the "
+                "waves' heights intersected: slower, the reference's cost grows with the waves); "
+                "overrides the template's");
   c->add_option("--name", a->name, "Scene name (default: the output file's stem)");
   c->add_option("--spectrum", a->spectrum, "jonswap, pierson-moskowitz or tma")
       ->capture_default_str();

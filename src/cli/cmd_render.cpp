@@ -173,6 +173,7 @@ void run_render(RenderArgs& a) {
     }
     a.flags.finish();
     make_method(a.method, a.flags.options);  // the name and options, before any GL
+    a.flags.check_taken_by({a.method});
     check_engine_runs(a.flags.engine, a.method, a.flags.options);
   });
   const Engine engine = a.flags.engine;

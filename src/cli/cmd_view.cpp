@@ -2,10 +2,12 @@
 // on the GL engine; with `--frames N` a scripted run of frames 0 .. N-1 that writes the
 // last one's displayed image (`--screenshot OUT.png`) and exits. Everything the command
 // line asks is checked before the window opens; no file is written when it cannot open.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "base/error.h"
 #include "base/output_path.h"
@@ -14,6 +16,7 @@
 #include "cli/method_flags.h"
 #include "gl_engine/gl_engine.h"
 #include "image/image_io.h"
+#include "methods/method.h"
 #include "scene/scene.h"
 #include "viewer/view_camera.h"
 #include "viewer/viewer.h"
@@ -33,20 +36,44 @@ struct ViewArgs {
   MethodFlags flags;
 };
 
+// Whether the viewer can show `method` with `o`: the GL engine's methods and options only.
+// The GL engine's own message advises --engine cpu, which the viewer lacks: this one
+// points to `render` instead. `flag` names the option that asked for the method.
+void check_viewer_runs(const std::string& method, const MethodOptions& o, const std::string& flag) {
+  const std::string gl = gl_engine::gl_methods();
+  bool listed = false;
+  for (size_t b = 0; b < gl.size();) {
+    const size_t e = std::min(gl.find(", ", b), gl.size());
+    listed = listed || gl.substr(b, e - b) == method;
+    b = e + 2;
+  }
+  make_method(method, o);  // an unknown name or a bad option, named as render names it
+  if (!listed) {
+    throw Error(flag + " " + method + ": the viewer renders on the GL engine, which runs " + gl +
+                " (render " + method + " on the CPU with: sunglint render SCENE -m " + method +
+                " -o FILE)");
+  }
+  if (method == "staa" && o.staa.footprint == FootprintMode::exact) {
+    throw Error(
+        "--footprint exact: not in the viewer (the GL engine lacks it: the swept parallelogram "
+        "is integrated on the host); use --footprint gaussian or none, or render it on the CPU "
+        "with: sunglint render SCENE -m staa --footprint exact -o FILE");
+  }
+  gl_engine::gl_variant(method, o);
+}
+
 void run_view(ViewArgs& a) {
   check_usage([&] {
     a.flags.finish();
     if (a.flags.engine != Engine::gl) {
       throw Error("--engine " + a.flags.engine_name + ": the viewer runs on the GL engine only");
     }
-    gl_engine::gl_variant(a.method, a.flags.options);
-    if (!a.split.empty()) {
-      try {
-        gl_engine::gl_variant(a.split, a.flags.options);
-      } catch (const Error& e) {
-        throw Error("--split: " + std::string(e.what()));
-      }
-    }
+    check_viewer_runs(a.method, a.flags.options, "--method");
+    if (!a.split.empty()) check_viewer_runs(a.split, a.flags.options, "--split");
+    std::vector<std::string> shown = {a.method};
+    if (!a.split.empty()) shown.push_back(a.split);
+    if (a.reference_batches > 0) shown.push_back("reference");
+    a.flags.check_taken_by(shown);
     if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls ||
                           a.reference_batches > 0 || a.reference_difference > 0)) {
       throw Error(

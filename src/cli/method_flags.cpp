@@ -1,8 +1,10 @@
 #include "cli/method_flags.h"
 
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "base/error.h"
@@ -24,20 +26,44 @@ void MethodFlags::finish(const std::string& context) {
   }
 }
 
+void MethodFlags::check_taken_by(const std::vector<std::string>& methods,
+                                 const std::string& context) const {
+  for (const Scoped& s : scoped) {
+    if (s.option->count() == 0) continue;
+    bool taken = false;
+    for (const std::string& m : methods) {
+      for (const std::string& t : s.methods)
+        taken = taken || m == t;
+    }
+    if (taken) continue;
+    std::string names, takers;
+    for (const std::string& m : methods)
+      names += (names.empty() ? "" : ", ") + m;
+    for (const std::string& t : s.methods)
+      takers += (takers.empty() ? "" : ", ") + t;
+    const std::string flag = s.option->get_name();
+    const std::string whose = methods.empty()       ? "no method given here"
+                              : methods.size() == 1 ? "method " + names
+                                                    : "any of the methods " + names;
+    throw Error(context + flag + ": not a flag of " + whose + " (it configures " + takers + ")");
+  }
+}
+
 namespace {
 
 // A flag that picks one of named values: CLI11 checks the name, the callback stores it.
 template <class T>
-void choice(CLI::App& app, const std::string& flag, T& field, const std::map<std::string, T>& names,
-            const std::string& help) {
+CLI::Option* choice(CLI::App& app, const std::string& flag, T& field,
+                    const std::map<std::string, T>& names, const std::string& help) {
   std::string current;
   std::vector<std::string> keys;
   for (const auto& [k, v] : names) {
     if (v == field) current = k;
     keys.push_back(k);
   }
-  app.add_option_function<std::string>(
-         flag, [&field, names](const std::string& v) { field = names.at(v); }, help)
+  return app
+      .add_option_function<std::string>(
+          flag, [&field, names](const std::string& v) { field = names.at(v); }, help)
       ->check(CLI::IsMember(keys))
       ->default_str(current);
 }
@@ -45,6 +71,9 @@ void choice(CLI::App& app, const std::string& flag, T& field, const std::map<std
 }  // namespace
 
 static void add_baseline_flags(CLI::App& app, MethodOptions& o);
+
+// Which methods each flag configures (MethodFlags::check_taken_by).
+static void scope_method_flags(const std::vector<const CLI::Option*>& options, MethodFlags& f);
 
 void check_engine_runs(Engine engine, const std::string& name, const MethodOptions& options,
                        const std::string& context) {
@@ -57,6 +86,7 @@ void check_engine_runs(Engine engine, const std::string& name, const MethodOptio
 }
 
 void add_method_flags(CLI::App& app, MethodFlags& f) {
+  const size_t before = std::as_const(app).get_options().size();
   MethodOptions& o = f.options;
   app.add_option("--engine", f.engine_name,
                  std::string("cpu (every method) or gl (OpenGL 4.5 compute shaders: ") +
@@ -196,6 +226,58 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->capture_default_str()
       ->check(integer_in(-1000000, 1000000));
   add_baseline_flags(app, o);
+  const std::vector<const CLI::Option*> all = std::as_const(app).get_options();
+  scope_method_flags({all.begin() + static_cast<long>(before), all.end()}, f);
+}
+
+static void scope_method_flags(const std::vector<const CLI::Option*>& options, MethodFlags& f) {
+  const std::vector<std::string> kernel = {"point", "supersample", "reference", "staa-temporal",
+                                           "staa"};
+  const std::vector<std::string> sampling = {"supersample", "reference"};
+  const std::vector<std::string> staa_both = {"staa", "staa-temporal"};
+  const std::map<std::string, std::vector<std::string>> takers = {
+      {"--samples", sampling},
+      {"--seed", sampling},
+      {"--batches", {"reference"}},
+      {"--adaptive", {"reference"}},
+      {"--quiet-samples", {"reference"}},
+      {"--precision", kernel},
+      {"--intersect-tolerance", kernel},
+      {"--segments", staa_both},
+  };
+  // staa's own (methods/staa.h).
+  const std::vector<std::string> staa = {"--ndf",
+                                         "--ndf-mean",
+                                         "--kernels",
+                                         "--elongation-threshold",
+                                         "--fallback",
+                                         "--fallback-time",
+                                         "--riemann-cells",
+                                         "--alias-start",
+                                         "--alias-end",
+                                         "--nyquist",
+                                         "--footprint",
+                                         "--curvature-limit",
+                                         "--wave-remainder",
+                                         "--smooth-terms",
+                                         "--smooth-cells"};
+  // The baselines' flags name their method first: --lean-size (lean), --taa-alpha (taa), ...
+  const std::vector<std::string> prefixed = {"lean", "taa", "microspec", "specaa", "bruneton"};
+  for (const CLI::Option* opt : options) {
+    const std::string name = opt->get_name();
+    if (name == "--engine") continue;  // every method's
+    std::vector<std::string> methods;
+    if (auto t = takers.find(name); t != takers.end()) methods = t->second;
+    if (std::find(staa.begin(), staa.end(), name) != staa.end()) methods = {"staa"};
+    for (const std::string& p : prefixed) {
+      if (name.rfind("--" + p + "-", 0) == 0) methods = {p};
+    }
+    if (methods.empty()) {
+      f.unscoped.push_back(name);  // taken by every method (method_flags_test lists none)
+    } else {
+      f.scoped.push_back({opt, methods});
+    }
+  }
 }
 
 static void add_baseline_flags(CLI::App& app, MethodOptions& o) {
@@ -253,10 +335,20 @@ MethodVariant parse_method_variant(const std::string& text, const std::string& f
   std::vector<std::string> args(words.rbegin(), words.rend() - 1);  // CLI11 wants them reversed
   try {
     app.parse(args);
+  } catch (const CLI::ExtrasError& e) {
+    // A flag no method has: name it, and the one it may be a slip of.
+    for (const std::string& w : app.remaining()) {
+      if (w.size() < 2 || w[0] != '-') continue;
+      const std::string near = closest_name(w, flag_names(&app));
+      throw Error(flag + ": '" + text + "': unknown flag '" + w + "'" +
+                  (near.empty() ? "" : " (did you mean " + near + "?)"));
+    }
+    throw Error(flag + ": '" + text + "': " + e.what());
   } catch (const CLI::ParseError& e) {
     throw Error(flag + ": '" + text + "': " + e.what());
   }
   flags.finish(flag + ": '" + text + "': ");
+  flags.check_taken_by({v.name}, flag + ": '" + text + "': ");
   v.options = flags.options;
   v.engine = flags.engine;
   make_method(v.name, v.options);  // validates the name and the options

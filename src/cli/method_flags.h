@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "gl_engine/engines.h"
 #include "methods/options.h"
@@ -17,8 +18,23 @@ struct MethodFlags {
   std::string engine_name = "cpu";  // --engine
   Engine engine = Engine::cpu;      // set by finish()
   MethodOptions options;
+  // The flags that configure some methods only, with those methods (add_method_flags
+  // fills it; --engine configures every method and is not listed).
+  struct Scoped {
+    const CLI::Option* option;
+    std::vector<std::string> methods;
+  };
+  std::vector<Scoped> scoped;
+  // Method flags that add_method_flags does not know the methods of (taken by every method):
+  // a new flag belongs in its table (method_flags_test checks that none is left here).
+  std::vector<std::string> unscoped;
   // `context` prefixes error messages (e.g. the method variant being parsed).
   void finish(const std::string& context = "");
+  // Refuses a flag given on the command line that none of `methods` takes: "--samples: not
+  // a flag of method point (it configures supersample, reference)" (throws sg::Error, a
+  // usage error to the caller).
+  void check_taken_by(const std::vector<std::string>& methods,
+                      const std::string& context = "") const;
 };
 
 void add_method_flags(CLI::App& app, MethodFlags& flags);

@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "base/error.h"
 #include "cli/args.h"
+#include "methods/method.h"
 
 namespace sg {
 namespace {
@@ -32,6 +35,55 @@ TEST(MethodVariant, ErrorsNameTheVariant) {
   EXPECT_THROW(parse_method_variant("nope"), Error);
   EXPECT_THROW(parse_method_variant("point --bogus 1"), Error);
   EXPECT_THROW(parse_method_variant("  "), Error);
+}
+
+TEST(MethodVariant, FlagsOfOtherMethodsAreRefused) {
+  // Each flag configures some methods; given to another, it would be ignored.
+  const std::pair<const char*, const char*> refused[] = {
+      {"point --samples 4x4x1",
+       "--methods: 'point --samples 4x4x1': --samples: not a flag of method point (it "
+       "configures supersample, reference)"},
+      {"staa --lean-size 256", "--lean-size: not a flag of method staa (it configures lean)"},
+      {"lean --ndf uniform", "--ndf: not a flag of method lean (it configures staa)"},
+      {"supersample --batches 4", "--batches: not a flag of method supersample"},
+      {"staa-temporal --footprint none", "--footprint: not a flag of method staa-temporal"},
+      {"taa --microspec-area approx", "--microspec-area: not a flag of method taa"},
+  };
+  for (const auto& [text, message] : refused) {
+    try {
+      parse_method_variant(text);
+      ADD_FAILURE() << text << " was taken";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  // ... and the methods that take them take them.
+  for (const char* text :
+       {"supersample --samples 4x4x1 --seed 2", "reference --batches 4 --adaptive off",
+        "staa-temporal --segments 2 --precision float", "staa --ndf uniform --footprint none",
+        "point --intersect-tolerance 0", "lean --lean-size 256", "taa --taa-alpha 0.2",
+        "microspec --microspec-area approx", "specaa --specaa-kernel full",
+        "bruneton --bruneton-nmin 2", "point --engine gl"}) {
+    EXPECT_NO_THROW(parse_method_variant(text)) << text;
+  }
+}
+
+TEST(MethodFlags, EveryFlagNamesTheMethodsItConfigures) {
+  CLI::App app{"test"};
+  MethodFlags f;
+  add_method_flags(app, f);
+  EXPECT_TRUE(f.unscoped.empty()) << "a method flag without its methods: " << f.unscoped.front();
+  EXPECT_GE(f.scoped.size(), 30u);
+  std::vector<std::string> names;
+  for (const auto& m : method_catalog())
+    names.push_back(m.name);
+  for (const MethodFlags::Scoped& s : f.scoped) {
+    ASSERT_FALSE(s.methods.empty()) << s.option->get_name();
+    for (const std::string& m : s.methods) {
+      EXPECT_NE(std::find(names.begin(), names.end(), m), names.end())
+          << s.option->get_name() << ": " << m << " is not a method";
+    }
+  }
 }
 
 TEST(Args, FrameRanges) {

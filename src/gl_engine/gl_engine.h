@@ -23,6 +23,7 @@
 #include "gl/texture_buffer.h"
 #include "gl/timer.h"
 #include "gl_engine/kernel_program.h"
+#include "gl_engine/program_notice.h"
 #include "methods/method.h"
 #include "methods/options.h"
 #include "shading/kernel_frame.h"
@@ -55,16 +56,27 @@ class GlEngine {
   // pixel; waits for the GPU.
   std::vector<float> read_weights() const;
   const gl::Texture& weights_texture() const { return weights_; }
-  // GPU time of `repeats` dispatches of ctx's frame after `warmup` more, in ms: the median.
-  double time_dispatch(const FrameContext& ctx, int warmup, int repeats);
+  // `repeats` whole frames of ctx after `warmup` dispatches: per frame the GPU time of its
+  // dispatch (timer queries) and the wall time of the whole frame around it (upload,
+  // dispatch, read-back), so that a frame's GPU time never exceeds its wall time; the
+  // medians of each, in ms.
+  struct FrameTimes {
+    double gpu_ms = 0, frame_ms = 0;
+  };
+  FrameTimes time_frames(const FrameContext& ctx, int warmup, int repeats);
   // GPU time of the last dispatch in ms.
   double last_gpu_ms() const { return last_ms_; }
   const gl::Program& program() const { return program_; }
 
  private:
   void upload(const FrameContext& ctx);
+  void bind();
   void run();
+  // Before the first dispatch: one workgroup dispatched and waited for, where a driver that
+  // compiles at first use (llvmpipe) does so, outside any timing (program_notice.h).
+  void prepare();
 
+  std::unique_ptr<ProgramWatch> watch_;  // until the first dispatch; first, to time the link
   GlVariant v_;
   gl::Program program_;
   gl::Texture table_f_, table_s_, fits_;

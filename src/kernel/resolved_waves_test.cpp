@@ -26,7 +26,7 @@ Scene ocean_view(int waves, int width, int height, Geometry geometry) {
   p.waves = waves;
   p.wind_speed = 10;
   p.seed = 7;
-  Scene s = ocean::ocean_scene(ocean::default_template(), ocean::generate(p), "sea");
+  Scene s = ocean::ocean_scene(ocean::plain_template(), ocean::generate(p), "sea");
   s.width = width;
   s.height = height;
   s.surface.geometry = geometry;

@@ -124,7 +124,7 @@ Scene ocean_scene(const Scene& t, const Ocean& ocean, const std::string& name) {
   return s;
 }
 
-Scene default_template() {
+Scene plain_template() {
   Scene s;
   s.name = "ocean";
   s.width = 640;
@@ -145,6 +145,24 @@ Scene default_template() {
   s.animation.fps = 30;
   s.animation.frames = 60;
   s.animation.shutter = 1;
+  return s;
+}
+
+Scene sea_template() {
+  Scene s = plain_template();
+  // Radiances in the picture scenes' units (scenes/sunset.json, scenes/midday.json): the
+  // sun's disk a few hundred times the sky, yellowish at 12 degrees; a blue sky paling
+  // towards the horizon; a dark blue-green sea. Shown at exposure 0 by `render --display`.
+  s.light.radiance = Rgb(620, 540, 400);
+  s.light.visible = true;
+  SkyDesc sky;
+  sky.gradient = true;
+  sky.zenith = Rgb(0.07, 0.15, 0.36);
+  sky.horizon = Rgb(0.52, 0.58, 0.66);
+  sky.exponent = 0.5;
+  s.sky = sky;
+  s.surface.fresnel = FresnelMode::schlick;
+  s.surface.sea_radiance = Rgb(0.004, 0.018, 0.028);
   return s;
 }
 

@@ -84,9 +84,17 @@ Ocean generate(const OceanParams& p);
 // the ocean's waves.
 Scene ocean_scene(const Scene& template_scene, const Ocean& ocean, const std::string& name);
 
-// The default template: the view of the project's shared scenes, a camera 2.5 m above
-// the sea looking 60 m ahead (-z) with a 40 degree field of view, the sun 12 degrees above
-// the horizon straight ahead, 640 x 360, 60 frames at 30 fps, flat water, no Fresnel.
-Scene default_template();
+// The templates' view, that of the project's shared scenes: a camera 2.5 m above the sea
+// looking 60 m ahead (-z) with a 40 degree field of view, the sun 12 degrees above the
+// horizon straight ahead, 640 x 360, 60 frames at 30 fps, flat water.
+//
+// `sunglint ocean`'s default: that view as the sea looks (format /2, as the picture scenes
+// of scenes/): an afternoon sun drawn in the sky, a blue sky graded to a pale horizon,
+// Schlick's Fresnel, a dark blue-green sea beneath.
+Scene sea_template();
+// The measurement look of the shared scenes (format /1): light radiance 1, no sky, no
+// Fresnel, no sea, so that a pixel's value is the fraction of it that mirrors the light
+// (scenes/ocean-*.json, the tests; scripts/templates/plain.json is this template).
+Scene plain_template();
 
 }  // namespace sg::ocean

@@ -80,7 +80,7 @@ TEST(Ocean, SceneFilePassesTheLoader) {
     p.waves = n;
     p.swell.enabled = true;
     const Ocean o = generate(p);
-    const Scene s = ocean_scene(default_template(), o, "sea");
+    const Scene s = ocean_scene(plain_template(), o, "sea");
     const std::string text = scene_to_json(s);
     const Scene back = parse_scene(text, "sea.json");
     ASSERT_EQ(back.surface.waves.size(), static_cast<size_t>(n + p.swell.waves));
@@ -104,8 +104,8 @@ TEST(Ocean, SameParametersSameBytesOtherSeedOtherPhases) {
   OceanParams p;
   p.spreading = SpreadingKind::donelan_banner;
   p.swell.enabled = true;
-  const std::string a = scene_to_json(ocean_scene(default_template(), generate(p), "a"));
-  const std::string b = scene_to_json(ocean_scene(default_template(), generate(p), "a"));
+  const std::string a = scene_to_json(ocean_scene(plain_template(), generate(p), "a"));
+  const std::string b = scene_to_json(ocean_scene(plain_template(), generate(p), "a"));
   EXPECT_EQ(a, b);
   OceanParams q = p;
   q.seed = 1;

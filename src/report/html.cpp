@@ -11,6 +11,8 @@
 #include "report/cache.h"
 #include "report/paper.h"
 #include "report/results.h"
+#include "report/summary.h"
+#include "report/video.h"
 
 namespace sg {
 namespace fs = std::filesystem;
@@ -62,6 +64,24 @@ std::string column_labels(const SceneResult& sc) {
   for (const auto& v : sc.methods)
     o += "<span>" + html_escape(v.label) + "</span>";
   return o + "</div>\n";
+}
+
+// The opening summary, from the results alone (report/summary.h).
+std::string summary_section(const StudyResults& r) {
+  const SummaryText t = summary_text(summarise(r), code);
+  std::ostringstream o;
+  o << "<section id=\"summary\"><h2>Summary</h2>\n";
+  if (!t.overall.empty()) o << "<p class=\"overall\">" << t.overall << "</p>\n";
+  o << "<ul>\n";
+  for (size_t k = 0; k < t.scenes.size() && k < r.scenes.size(); ++k) {
+    o << "<li data-scene=\"" << html_escape(r.scenes[k].name) << "\"><a href=\"#scene-"
+      << file_slug(r.scenes[k].name) << "\">" << html_escape(r.scenes[k].name) << "</a>"
+      << t.scenes[k].substr(r.scenes[k].name.size()) << "</li>\n";
+  }
+  o << "</ul>\n<p class=\"hint\">Whole-image RMSE and temporal error on linear values "
+       "against the reference; equal cost on the supersampling curve of each scene "
+       "(definitions at the end).</p></section>\n";
+  return o.str();
 }
 
 std::string paper_table(const StudyResults& r) {
@@ -229,9 +249,11 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
       << html_escape(sc.name) << "\"></canvas></div>\n";
   }
   if (sc.channels == 3) o << channel_table(sc);
+  o << crops_table(sc);  // first: every column's glints at 2:1, labelled
   if (!sc.grid.empty()) {
-    o << "<h3>Frame " << sc.shown_frame << "</h3>\n<figure class=\"grid\">" << column_labels(sc)
-      << "<img src=\"" << html_escape(sc.grid) << "\" alt=\"" << html_escape(sc.name)
+    o << "<h3>Frame " << sc.shown_frame << ", every column</h3>\n<figure class=\"grid\">"
+      << column_labels(sc) << "<img src=\"" << html_escape(sc.grid) << "\" alt=\""
+      << html_escape(sc.name)
       << ": every method side by side\">\n<figcaption>Rows: the frame after glare and tone "
          "mapping (orange box: the near crop, blue box: the far crop); the near crop zoomed "
          "and its difference to the reference; the far crop zoomed and its difference. "
@@ -240,7 +262,6 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
       << fmt("%.3g", sc.error_range)
       << " at the ends of the scale shown in the reference column).</figcaption></figure>\n";
   }
-  o << crops_table(sc);
   o << flicker_section(sc);
   if (!sc.reference.picture.empty() && !sc.methods.empty()) {
     o << "<h3>Reference against a method</h3>\n<div class=\"slider\"><label>method <select>";
@@ -256,12 +277,21 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
          "reference; drag to move the split.</p></div>\n";
   }
   if (!sc.video.empty()) {
+    const int frames = r.settings.last_frame - r.settings.first_frame + 1;
+    const double fps = playback_fps(r.settings.fps, frames);
     o << "<h3>Frames " << r.settings.first_frame << "&ndash;" << r.settings.last_frame
       << "</h3>\n<figure class=\"video\">" << column_labels(sc) << "<video src=\""
       << html_escape(sc.video)
       << "\" controls autoplay muted loop playsinline preload=\"auto\"></video>"
          "<figcaption>Top: the frames; bottom: the near crop zoomed. Flicker shows as pixels "
-         "that blink from frame to frame.</figcaption></figure>\n";
+         "that blink from frame to frame. "
+      << frames << " frames at " << fmt("%.3g", fps) << " frames per second";
+    if (fps < r.settings.fps) {
+      o << " (" << fmt("%.2g", r.settings.fps / fps) << " times slower than the scene's "
+        << fmt("%g", r.settings.fps) << ", so that the loop lasts " << fmt("%.2g", frames / fps)
+        << " s)";
+    }
+    o << ".</figcaption></figure>\n";
   }
   o << "</section>\n";
   return o.str();
@@ -282,17 +312,21 @@ std::string report_html(const StudyResults& r) {
     o << " " << code(m);
   o << ".</p>\n";
   if (!s.command.empty()) o << "<p class=\"cmd\">" << code(s.command) << "</p>\n";
-  o << "<nav>";
+  o << "<nav><a href=\"#summary\">summary</a> ";
   for (const auto& sc : r.scenes)
     o << "<a href=\"#scene-" << file_slug(sc.name) << "\">" << html_escape(sc.name) << "</a> ";
   o << "<a href=\"#notes\">definitions</a></nav></header>\n<main>\n";
+  o << summary_section(r);
 
   if (studies_a_paper_scene(r)) {
     o << "<section id=\"table1\"><h2>Table 1 of Podee et al. (2021) beside ours</h2>\n"
       << "<p>RMSE, with the ratio to No AA in brackets. The paper measures pictures after "
          "glare and tone mapping against its reference; we measure linear pixel values against "
          "ours. Compare the ratios, not the absolute values.</p>\n"
-      << paper_table(r) << "</section>\n";
+      << paper_table(r);
+    for (const std::string& v : paper_table_verdict(r, code))
+      o << "<p class=\"verdict\">" << v << "</p>\n";
+    o << "</section>\n";
   }
 
   o << "<section id=\"charts\"><h2>Error per method and scene</h2>\n<div class=\"charts\">"
@@ -300,9 +334,9 @@ std::string report_html(const StudyResults& r) {
     << "<div class=\"chart\"><canvas id=\"chart-temporal\"></canvas></div>"
     << "<div class=\"chart\"><canvas id=\"chart-nearfar\"></canvas></div>"
     << "<div class=\"chart\"><canvas id=\"chart-time\"></canvas></div></div>\n"
-    << "<p>The quality&ndash;cost curve of supersampling (RMSE against time per frame, "
-       "both axes logarithmic) is drawn in each scene's section, with each method as a "
-       "point.</p></section>\n";
+    << "<p>Every axis of values is logarithmic: the scenes' errors and times span orders "
+       "of magnitude. The quality&ndash;cost curve of supersampling (RMSE against time per "
+       "frame) is drawn in each scene's section, with each method as a point.</p></section>\n";
 
   for (const auto& sc : r.scenes)
     o << scene_section(sc, r);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -43,6 +44,15 @@ struct PaperComparison {
   std::array<std::optional<double>, 4> ours{}, ours_ratio{};
 };
 std::vector<PaperComparison> compare_with_paper(const StudyResults& r);
+
+// Table 1 in words: where the paper's method (its rows "Ours (uniform)" and "Ours
+// (per-pixel)", the better of the two per scene) has the lowest RMSE in the paper; where it
+// wins and where it loses against the other rows in this study (with both RMSEs); and where
+// the study's equal-cost target, when it is not one of the paper's rows (sunglint's `staa`,
+// the paper's method with the footprint term), wins and loses against every row. Labels go
+// through `code`. Empty when the study renders none of the paper's scenes.
+std::vector<std::string> paper_table_verdict(
+    const StudyResults& r, const std::function<std::string(const std::string&)>& code);
 
 // Whether the study renders one of the paper's four scenes (kPaperScenes, by name): the
 // report shows Table 1 beside it only then.

@@ -9,6 +9,7 @@
 
 #include "base/error.h"
 #include "report/paper.h"
+#include "report/summary.h"
 
 namespace sg {
 using nlohmann::json;
@@ -462,7 +463,18 @@ std::string results_to_markdown(const StudyResults& r, const std::string& prefix
        "and far halves of the water split at the median distance of the water pixels "
        "(docs/report.md).\n\n";
 
-  if (studies_a_paper_scene(r)) write_paper_table_markdown(o, r);
+  const SummaryText summary = summary_text(summarise(r), md_code);
+  o << "### Summary\n\n";
+  if (!summary.overall.empty()) o << summary.overall << "\n\n";
+  for (const std::string& t : summary.scenes)
+    o << "- " << t << "\n";
+  o << "\n";
+  if (studies_a_paper_scene(r)) {
+    write_paper_table_markdown(o, r);
+    o << "\n";
+    for (const std::string& v : paper_table_verdict(r, md_code))
+      o << v << "\n\n";
+  }
 
   for (const SceneResult& sc : r.scenes) {
     o << "\n### " << sc.name << "\n\n";
@@ -602,6 +614,12 @@ std::string results_summary_markdown(const StudyResults& r, const std::string& p
       o << "\n**" << sc.name << "**. "
         << equal_cost_sentence(*sc.equal_cost, md_code(sc.equal_cost->target)) << "\n";
   }
+  const SummaryText summary = summary_text(summarise(r), md_code);
+  o << "\n**Summary.**";
+  if (!summary.overall.empty()) o << " " << summary.overall;
+  o << "\n\n";
+  for (const std::string& t : summary.scenes)
+    o << "- " << t << "\n";
   return o.str();
 }
 

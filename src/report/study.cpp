@@ -679,10 +679,12 @@ SceneResult Study::run_scene(int scene_index, const std::string& scene_slug) {
     fs::create_directories(fs::path(c_.out_dir) / "video");
     r.video = "video/" + scene_slug + ".mp4";
     const std::string video = (fs::path(c_.out_dir) / r.video).string();
+    // Played slower than the scene when its frames would last under 3 s (report/video.h).
+    const double fps = playback_fps(scene.animation.fps, n);
     if (C == 1) {
-      encode_h264(video, VW, VH, scene.animation.fps, frames);
+      encode_h264(video, VW, VH, fps, frames);
     } else {
-      encode_h264_rgb(video, VW, VH, scene.animation.fps, frames);
+      encode_h264_rgb(video, VW, VH, fps, frames);
     }
   }
   return r;

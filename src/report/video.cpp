@@ -1,5 +1,8 @@
 #include "report/video.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -18,6 +21,13 @@
 extern char** environ;
 
 namespace sg {
+
+double playback_fps(double scene_fps, int frames, double min_seconds) {
+  if (frames <= 0 || !(min_seconds > 0)) return scene_fps;
+  // Rounded down to 4 decimals, so that the rate ffmpeg is given ("%.6g") never shortens the
+  // loop below min_seconds.
+  return std::min(scene_fps, std::floor(frames / min_seconds * 1e4) / 1e4);
+}
 namespace {
 
 // Runs `argv` with `input` on its standard input (its standard output discarded when

@@ -13,6 +13,11 @@
 
 namespace sg {
 
+// The frame rate a study's video plays at: the scene's, or slower so that `frames` last at
+// least `min_seconds` (a 10-frame study at 30 fps would loop in a third of a second, too
+// fast to see a pixel flicker): min(fps, frames / min_seconds).
+double playback_fps(double scene_fps, int frames, double min_seconds = 3.0);
+
 // Writes `path` (through a temporary file and a rename). Throws sg::Error when ffmpeg is
 // missing ("ffmpeg: not found ...") or fails.
 void encode_h264(const std::string& path, int width, int height, double fps,

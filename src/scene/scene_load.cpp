@@ -368,8 +368,9 @@ class JsonReader {
     return p;
   }
   size_t position = 0;
-  std::string reason;
-  std::string duplicate;  // the key path of the first duplicate key, if any
+  bool out_of_range = false;  // a number too large for a double (the key path names it)
+  std::string detail;         // the parser's words for a syntax error
+  std::string duplicate;      // the key path of the first duplicate key, if any
 
   bool null() { return value() && dom_.null(); }
   bool boolean(bool v) { return value() && dom_.boolean(v); }
@@ -400,7 +401,12 @@ class JsonReader {
   bool end_array() { return end() && dom_.end_array(); }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
     position = pos;
-    reason = e.id == 406 ? "number out of range" : "";
+    out_of_range = e.id == 406;
+    // "... syntax error while parsing object key - unexpected end of input; expected string
+    // literal": what the parser met and wanted.
+    const std::string what = e.what();
+    const size_t dash = what.find(" - ");
+    detail = dash == std::string::npos ? "" : what.substr(dash + 3);
     return false;
   }
 
@@ -448,8 +454,12 @@ Scene parse_scene(const std::string& text, const std::string& name) {
     }
     const std::string at = line_col(text, check.position > 0 ? check.position - 1 : 0);
     const std::string path = check.path();
-    throw Error(name + ": " + (path.empty() ? "" : path + ": ") +
-                (check.reason.empty() ? "invalid JSON" : check.reason) + " at " + at);
+    if (check.out_of_range) {
+      throw Error(name + ": " + (path.empty() ? "" : path + ": ") + "number out of range at " + at);
+    }
+    // A syntax error: where it is, not a key (the text there may not be the key's at all).
+    throw Error(name + ": " + at + ": invalid JSON" +
+                (check.detail.empty() ? "" : " (" + check.detail + ")"));
   }
   try {
     ObjectReader top(j, "");

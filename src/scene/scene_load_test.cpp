@@ -107,7 +107,7 @@ const BadCase kBad[] = {
      "surface.waves[2].amplitude: duplicate key (JSON object keys must be unique)"},
     {"duplicate_top_key", "name: duplicate key (JSON object keys must be unique)"},
     {"amplitude_infinite", "surface.waves[0].amplitude: number out of range at line 45, column 22"},
-    {"syntax_error", "animation.fps: invalid JSON at line 94, column 10"},
+    {"syntax_error", "line 94, column 10: invalid JSON (unexpected string literal; expected '}')"},
     {"top_level_array", "(top level): must be an object"},
     // Format /2: colour radiances and the sky gradient.
     {"v1_rgb_light",

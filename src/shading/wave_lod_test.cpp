@@ -26,7 +26,7 @@ Scene shuffled_ocean(int waves, double camera_height, int width) {
   p.waves = waves;
   p.wind_speed = 10;
   p.seed = 5;
-  Scene s = ocean::ocean_scene(ocean::default_template(), ocean::generate(p), "sea");
+  Scene s = ocean::ocean_scene(ocean::plain_template(), ocean::generate(p), "sea");
   s.camera.position.y = camera_height;
   s.width = width;
   s.height = width * 9 / 16;

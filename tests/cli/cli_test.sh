@@ -104,7 +104,7 @@ expect_fail "sequence needs a pattern" "exactly one frame number conversion" \
   "$bin" render "$scene" -m point --frames 0-2 --out "$work/a.exr"
 expect_fail "bad frame range" "--frames: expected a frame range A-B" \
   "$bin" render "$scene" -m point --frames 3-1 --out "$work/f_%02d.exr"
-expect_fail "no subcommand" "A subcommand is required" "$bin"
+expect_fail "no subcommand" "give a subcommand: render, diff, info" "$bin"
 expect_fail "lean size" "--lean-size: must be a power of two" \
   "$bin" render "$scene" -m lean --lean-size 1000 --out "$work/a.exr"
 expect_no_file "lean size" "$work/a.exr"
@@ -290,12 +290,45 @@ if "$bin" render "$scene" -m point --engine gl --width 8 -q -o "$work/glprobe.pf
     echo "FAIL gl vs cpu float: $out"
     fails=$((fails + 1))
   fi
-  out=$("$bin" bench "$scene" --methods "point,staa-temporal" --engine gl --width 32 --height 18 2>&1)
-  if [ "$(grep -c '| gl (GPU timer; frame' <<<"$out")" = 2 ] && grep -q '| staa-temporal | gl .* | [0-9.]* | [0-9.]* |' <<<"$out"; then
+  # bench on the GL engine: each frame's GPU time within its wall time (the medians of the
+  # same frames), and the sampling methods' samples per second.
+  out=$("$bin" bench "$scene" --methods "point,staa-temporal,supersample --samples 2x2x1" --engine gl \
+    --width 32 --height 18 2>&1)
+  if [ "$(grep -c '| gl (GPU timer; frame' <<<"$out")" = 3 ] &&
+    grep -q '^| simple | staa-temporal | gl (GPU timer; frame [0-9.]* ms) | [0-9.]* | [0-9.]* | - | - |$' <<<"$out" &&
+    grep -q '^| simple | point | gl (GPU timer; frame [0-9.]* ms) | [0-9.]* | 1.00 | [0-9.e+]* | - |$' <<<"$out" &&
+    grep -q '^| simple | supersample --samples 2x2x1 | gl .* | [0-9.]* | [0-9.]* | [0-9.e+]* | [0-9.e+]* |$' <<<"$out" &&
+    awk -F'|' '/GPU timer/ { split($4, a, "frame "); if ($5 + 0 > a[2] + 0) bad = 1 } END { exit bad }' <<<"$out"; then
     passes=$((passes + 1))
   else
-    echo "FAIL bench --engine gl: $out"
+    echo "FAIL bench --engine gl (a GPU time past its frame's, or an empty column): $out"
     fails=$((fails + 1))
+  fi
+  # The GL program's preparation is announced with its time (SUNGLINT_GL_NOTICE_AFTER=0: every
+  # one; by default those past a second), and the driver's shader cache (Mesa's, in a fresh
+  # folder here) makes a second process's short.
+  gl_prep() {
+    SUNGLINT_GL_NOTICE_AFTER=${notice:-} MESA_SHADER_CACHE_DIR=$work/mesa_cache "$bin" render "$scene" \
+      -m point --engine gl --width 16 -q -o "$work/glprep.pfm" 2>&1
+  }
+  took() { sed -n 's/^sunglint: the GL program of point took \([0-9.]*\) s to prepare$/\1/p' <<<"$1"; }
+  first=$(notice=0 gl_prep) second=$(notice=0 gl_prep) third=$(gl_prep)
+  t1=$(took "$first") t2=$(took "$second")
+  if grep -q "^sunglint: preparing the GL program of point (" <<<"$first" && [ -n "$t1" ] && [ -n "$t2" ] &&
+    ! grep -q "preparing" <<<"$third"; then
+    passes=$((passes + 1))
+  else
+    echo "FAIL GL program preparation not announced, or announced by default when quick: $first / $second / $third"
+    fails=$((fails + 1))
+  fi
+  # Where the first run compiled (0.3 s or more: the driver honours MESA_SHADER_CACHE_DIR),
+  # the second takes it from the cache: at most a third of the time.
+  if [ -n "$t1" ] && [ -n "$t2" ] && awk -v a="$t1" -v b="$t2" 'BEGIN { exit !(a >= 0.3 && b > a / 3) }'; then
+    echo "FAIL the second process prepared the GL program in $t2 s, the first in $t1 s: no cache"
+    fails=$((fails + 1))
+  else
+    passes=$((passes + 1))
+    echo "  GL program preparation: $t1 s, then $t2 s"
   fi
   expect_rc "compare cpu and gl" 0 "point --engine gl" \
     "$bin" compare "$scene" -m point -m "point --engine gl" --frames 0-1 --width 16 --reference 1x1x1 \
@@ -355,9 +388,15 @@ expect_rc "report into a missing folder" 1 "does not exist" \
 # Displaced water with the camera under a crest: every method renders (the writers refuse
 # a non-finite pixel, so exit code 0 means every pixel is finite).
 for m in point reference supersample staa lean taa microspec specaa bruneton; do
+  case $m in
+    reference | supersample) flags=(--samples 2x2x2) ;;
+    lean) flags=(--lean-size 256) ;;
+    taa) flags=(--taa-warmup 2) ;;
+    *) flags=() ;;
+  esac
   expect_rc "under the crests: $m" 0 "-> $work/below_$m.pfm" \
-    "$bin" render "$edge/camera_below_crests.json" -m "$m" --width 48 --samples 2x2x2 \
-    --lean-size 256 --taa-warmup 2 -q -o "$work/below_$m.pfm"
+    "$bin" render "$edge/camera_below_crests.json" -m "$m" --width 48 "${flags[@]}" -q \
+    -o "$work/below_$m.pfm"
 done
 expect_rc "under the crests: finite" 0 "rmse     0" \
   "$bin" diff "$work/below_staa.pfm" "$work/below_staa.pfm"
@@ -422,7 +461,7 @@ expect_rc "threads x" 2 "--threads: must be an integer in [0, 1024] (got 'x')" \
   "$bin" render "$scene" -m point -j x -o "$work/x.exr"
 expect_rc "unknown flag" 2 "--bogus" "$bin" render "$scene" -m point --bogus -o "$work/x.exr"
 expect_rc "missing flag" 2 "--out: required" "$bin" render "$scene" -m point
-expect_rc "no subcommand" 2 "A subcommand is required" "$bin"
+expect_rc "no subcommand" 2 "sunglint: give a subcommand: render, diff, info, bench, compare, report, ocean, view" "$bin"
 expect_rc "unknown method" 2 "--method: unknown method 'nope'" \
   "$bin" render "$scene" -m nope -o "$work/x.exr"
 expect_rc "frame past the animation" 2 "--frame: frame 60 is outside the animation" \
@@ -441,6 +480,87 @@ expect_rc "bad scene is failed work" 1 "surface.waves[3].amplitude: must be >= 0
   "$bin" render "$bad/amplitude_negative.json" -m point -o "$work/x.exr"
 expect_rc "help" 0 "Exit codes" "$bin" --help
 expect_rc "render help" 0 "--mkdir" "$bin" render --help
+
+# The messages a new user meets, each with its text and exit code: "sunglint: " first, the
+# culprit named and the way out said.
+# expect_rc_without NAME RC PATTERN ABSENT CMD...: as expect_rc, and ABSENT not printed.
+expect_rc_without() {
+  local name=$1 want=$2 pattern=$3 absent=$4
+  shift 4
+  local out rc
+  out=$("$@" 2>&1)
+  rc=$?
+  if [ $rc -eq "$want" ] && grep -qF -- "$pattern" <<<"$out" && ! grep -qF -- "$absent" <<<"$out"; then
+    passes=$((passes + 1))
+  else
+    echo "FAIL $name: rc=$rc (wanted $want), wanted '$pattern' without '$absent', got: $out"
+    fails=$((fails + 1))
+  fi
+}
+subs="render, diff, info, bench, compare, report, ocean, view"
+expect_rc "unknown subcommand" 2 "sunglint: unknown subcommand 'frobnicate'; the subcommands are $subs" \
+  "$bin" frobnicate
+expect_rc "misspelt subcommand" 2 "sunglint: unknown subcommand 'rendr' (did you mean render?)" \
+  "$bin" rendr "$scene"
+expect_rc "unknown flag before the subcommand" 2 "sunglint: unknown flag '--frob'; give a subcommand: $subs" \
+  "$bin" --frob
+expect_rc_without "misspelt flag" 2 "sunglint: render: unknown flag '--widht' (did you mean --width?)" \
+  "not expected" "$bin" render "$scene" -m point --widht 100 -o "$work/x.exr"
+expect_rc "misspelt flag of bench" 2 "sunglint: bench: unknown flag '--metods' (did you mean --methods?)" \
+  "$bin" bench "$scene" --metods point
+expect_rc "misspelt flag of a method variant" 2 \
+  "sunglint: --method: 'staa --ndff uniform': unknown flag '--ndff' (did you mean --ndf?)" \
+  "$bin" compare "$scene" -m "staa --ndff uniform" --out "$work/study"
+expect_rc "misspelt global flag" 2 "unknown flag '--cach-dir' (did you mean --cache-dir?)" \
+  "$bin" render "$scene" -m point --cach-dir "$work" -o "$work/x.exr"
+expect_rc "unexpected argument" 2 "sunglint: render: unexpected argument '$scene'" \
+  "$bin" render "$scene" "$scene" -m point -o "$work/x.exr"
+expect_rc "CLI11's error, prefixed" 2 "sunglint: scene is required" "$bin" render -m point -o "$work/x.exr"
+expect_rc "the help of the subcommand" 2 "Run 'sunglint render --help' for more information." \
+  "$bin" render -m point -o "$work/x.exr"
+# Every line of a command-line error is sunglint's (no bare CLI11 line).
+for args in "frobnicate" "render $scene -m point --widht 100" "render -m point" "render $scene -m point --width"; do
+  # shellcheck disable=SC2086
+  lines=$("$bin" $args 2>&1 | grep -cvE "^(sunglint: |Run 'sunglint)")
+  [ "$lines" = 0 ] && passes=$((passes + 1)) || { echo "FAIL '$args': a line without 'sunglint: '"; fails=$((fails + 1)); }
+done
+# The real cause of an unwritable folder: /proc exists, but no file can be made there.
+expect_rc_without "folder on a virtual file system" 1 \
+  "--out: /proc/x.png: cannot write in folder '/proc': it is on the kernel's virtual proc file system" \
+  "'/proc': No such file" "$bin" render "$scene" -m point -o /proc/x.png
+# A JSON syntax error: the file, the line and the column, and no key blamed.
+printf '{\n  "format": "sunglint-scene/1",\n  "image": {\n    "width": 16,\n' >"$work/truncated.json"
+expect_rc_without "truncated scene" 1 \
+  "sunglint: $work/truncated.json: line 5, column 1: invalid JSON (unexpected end of input; expected string literal)" \
+  "image:" "$bin" info "$work/truncated.json"
+printf '{"format": "sunglint-scene/1", "image": {"width": 16 "height": 9}}' >"$work/comma.json"
+expect_rc_without "missing comma" 1 "$work/comma.json: line 1, column 61: invalid JSON (unexpected string literal; expected '}')" \
+  "image.width" "$bin" render "$work/comma.json" -m point -o "$work/x.exr"
+# A flag the method does not take is refused, naming the method (it was ignored).
+expect_rc "flag of another method" 2 \
+  "sunglint: --samples: not a flag of method point (it configures supersample, reference)" \
+  "$bin" render "$scene" -m point --samples 4x4x1 -o "$work/x.exr"
+expect_rc "flag of another method, staa" 2 "--lean-size: not a flag of method staa (it configures lean)" \
+  "$bin" render "$scene" -m staa --lean-size 256 -o "$work/x.exr"
+expect_rc "bench flag of none of its methods" 2 \
+  "--taa-alpha: not a flag of any of the methods point, staa (it configures taa)" \
+  "$bin" bench "$scene" --methods point,staa --taa-alpha 0.5 --width 16 --height 9
+expect_rc "bench flag of one of its methods" 0 "| taa | cpu |" \
+  "$bin" bench "$scene" --methods point,taa --taa-alpha 0.5 --width 16 --height 9
+expect_rc "compare variant with another method's flag" 2 \
+  "--method: 'staa --seed 2': --seed: not a flag of method staa (it configures supersample, reference)" \
+  "$bin" compare "$scene" -m "staa --seed 2" --out "$work/study"
+expect_rc "view with another method's flag" 2 "--samples: not a flag of any of the methods point, staa" \
+  "$bin" view "$scene" -m point --split staa --samples 4x4x1
+expect_no_file "flags of other methods" "$work/x.exr"
+# The viewer has no CPU engine: its message does not send the user to one.
+expect_rc_without "view a method the GL engine lacks" 2 \
+  "--method lean: the viewer renders on the GL engine, which runs point, supersample, reference, staa-temporal, staa (render lean on the CPU with: sunglint render SCENE -m lean -o FILE)" \
+  "--engine cpu" "$bin" view "$scene" -m lean
+expect_rc_without "view --split of a method the GL engine lacks" 2 "--split taa: the viewer renders on the GL engine" \
+  "--engine cpu" "$bin" view "$scene" -m point --split taa
+expect_rc_without "view --footprint exact" 2 "--footprint exact: not in the viewer" "--engine cpu" \
+  "$bin" view "$scene" -m staa --footprint exact
 
 # Progress: on a terminal a bar; in a log one line per frame; none with -q.
 log=$("$bin" render "$scene" -m point --frames 0-2 --width 16 -o "$work/pl_%02d.pfm" 2>&1 >/dev/null)

@@ -2,7 +2,9 @@
 # End-to-end checks of `sunglint ocean` and of the resolution table of `sunglint info`:
 # bad flag values exit with status 2 and a message naming the flag and leave no file,
 # failed work exits with 1, the same arguments write the same bytes, the generated scenes
-# pass the loader, and the shipped spectrum scenes are what scripts/ocean-scenes.sh writes.
+# pass the loader, the default scene looks like the sea (and `info` says what a scene will
+# look like), --geometry sets the water, and the shipped spectrum scenes are what
+# scripts/ocean-scenes.sh writes.
 # Usage: ocean_test.sh SUNGLINT SOURCE_DIR WORK_DIR
 set -u
 bin=$1 src=$2 work=$3
@@ -57,6 +59,7 @@ usage "band without energy" "--wavelengths: the jonswap spectrum has no energy b
 usage "swell flag without swell" "--swell-period: needs --swell-height" --swell-period 10
 usage "swell period range" "--swell-period: must be in [4, 25] s (got 40)" --swell-height 1 --swell-period 40
 usage "seed" "--seed: expected an integer in [0, 2^64) (got '-1')" --seed -1
+usage "geometry" "--geometry: must be flat or displaced (got 'wavy')" --geometry wavy
 expect_rc "output extension" 2 "--out: must name a .json file" "$bin" ocean -o "$work/bad.txt"
 expect_rc "missing template" 1 "missing.json: cannot read" \
   "$bin" ocean -o "$work/t.json" --template "$work/missing.json"
@@ -83,6 +86,44 @@ if grep -q '"vfov_deg": 30.0' "$work/tpl.json"; then ok; else bad "the template'
 if [ "$("$bin" info --json "$work/tpl.json" | grep -c '"name": "tpl"')" = 1 ]; then ok; else
   bad "the scene is not named after its file"
 fi
+
+# Without a template the scene looks like the sea (a sun drawn 12 degrees up, a sky
+# graded to the horizon, Schlick's Fresnel, a sea), and `info` says so; the measurement
+# look (scripts/templates/plain.json) is black but for the glints, and `info` says that.
+expect_rc "the default look" 0 "look   the default sea (a sun 12 degrees up, a sky, Fresnel), flat water" \
+  "$bin" ocean -o "$work/sea.json" --waves 64
+expect_rc "the plain template" 0 "look   the template's ($src/scripts/templates/plain.json)" \
+  "$bin" ocean -o "$work/plain.json" --waves 64 --template "$src/scripts/templates/plain.json"
+for want in '"format": "sunglint-scene/2"' '"fresnel": "schlick"' '"zenith": [' '"visible": true'; do
+  grep -qF "$want" "$work/sea.json" && ok || bad "the default sea lacks $want"
+done
+expect_rc "info: the light" 0 "look         the light 12.0 deg above the horizon, in the frame at pixel (320, 53), drawn in the sky" \
+  "$bin" info "$work/sea.json"
+expect_rc "info: the glitter" 0 "its glitter (the light's mirror image) in the frame at pixel (320, 264)" \
+  "$bin" info "$work/sea.json"
+expect_rc "info: the sky" 0 "a sky graded from [0.07, 0.15, 0.36] at the zenith to [0.52, 0.58, 0.66] at the horizon" \
+  "$bin" info "$work/sea.json"
+expect_rc "info: the Fresnel term" 0 "Schlick's Fresnel: the water mirrors 2% looking straight down, 33% of the light at its glitter" \
+  "$bin" info "$work/sea.json"
+expect_rc "info: the plain look" 0 "a black sky" "$bin" info "$work/plain.json"
+expect_rc "info: only the glints" 0 "no sky and no sea light: only the glints are lit" "$bin" info "$work/plain.json"
+expect_rc "info --json: the look" 0 '"only_glints": false' "$bin" info --json "$work/sea.json"
+# The pictures: the default sea is lit everywhere, the plain one dark but for its glitter.
+mean() { python3 "$src/tests/viewer/png_diff.py" --mean "$1"; }
+for look in sea plain; do
+  "$bin" render "$work/$look.json" -m point --width 64 --display -q -o "$work/$look.png" >/dev/null 2>&1 ||
+    bad "render --display of the $look scene"
+done
+m_sea=$(mean "$work/sea.png") m_plain=$(mean "$work/plain.png")
+if awk -v s="$m_sea" -v p="$m_plain" 'BEGIN { exit !(s > 60 && p < 10) }'; then ok; else
+  bad "--display: the default sea's mean $m_sea (wanted > 60 of 255), the plain one's $m_plain (< 10)"
+fi
+# --geometry: displaced water, with or without a template (it overrides the template's).
+expect_rc "displaced" 0 "displaced water" "$bin" ocean -o "$work/disp.json" --waves 64 --geometry displaced
+expect_rc "displaced, info" 0 "surface      displaced geometry" "$bin" info "$work/disp.json"
+expect_rc "displaced template made flat" 0 "flat water" \
+  "$bin" ocean -o "$work/flat.json" --waves 64 --template "$work/disp.json" --geometry flat
+grep -q '"geometry": "flat"' "$work/flat.json" && ok || bad "--geometry flat did not override the template"
 
 # The resolution table: text and JSON, at the size asked for.
 expect_rc "resolution table" 0 "resolved  transition  aliasing" "$bin" info "$work/a.json"

@@ -1,8 +1,12 @@
 // Opens an HTML page in headless Chromium and checks what a reader would see: the page
 // loads with no console error, no uncaught exception and no failed load; every <img> has
 // decoded pixels, and an <img class="crop"> (the report's crops at 2:1) is shown no
-// smaller than its pixels; every <video> has decoded a frame; every chart canvas belongs
-// to a Chart.js chart (their ids are printed). Saves a full-page screenshot. Exit status 0 when all checks pass.
+// smaller than its pixels; every <video> has decoded a frame and lasts at least 3 s; every
+// chart canvas belongs to a Chart.js chart (their ids are printed) that has data and drew
+// on its canvas, whose datasets all look different (colour, dash, fill, marker), whose
+// axes of time are logarithmic and whose axis labels do not run into each other; a page
+// with scene sections opens with a summary naming each scene. Saves a full-page
+// screenshot. Exit status 0 when all checks pass.
 //
 // Chromium is driven through the Chrome DevTools Protocol over a pipe
 // (--remote-debugging-pipe: JSON messages ending in a NUL byte on file descriptors 3 and
@@ -134,15 +138,82 @@ const pageChecks = `(async () => {
     if (v.error) problems.push('video fails (' + v.error.code + ' ' + v.error.message + '): ' + src);
     else if (v.readyState < 2) problems.push('video has no decoded frame: ' + src);
   }
+  for (const v of videos) {
+    if (v.readyState >= 1 && !(v.duration >= 3)) {
+      problems.push('video lasts ' + v.duration.toFixed(2) + ' s (under 3 s): ' + v.getAttribute('src'));
+    }
+  }
   const canvases = [...document.querySelectorAll('canvas')];
+  let labelsChecked = 0;
   if (canvases.length > 0) {
     if (typeof Chart === 'undefined') problems.push('charts: Chart.js is not loaded');
     else for (const c of canvases) {
-      if (!Chart.getChart(c)) problems.push('canvas without a chart: ' + (c.id || '?'));
+      const chart = Chart.getChart(c);
+      const id = c.id || '?';
+      if (!chart) { problems.push('canvas without a chart: ' + id); continue; }
+      // Data, and pixels drawn.
+      const values = chart.data.datasets.flatMap((d) => d.data).filter((x) =>
+        x !== null && x !== undefined && (typeof x !== 'object' || (x.x !== undefined && x.y !== undefined)));
+      if (values.length === 0) problems.push('chart without data: ' + id);
+      const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let inked = 0;
+      for (let i = 3; i < px.length; i += 4) if (px[i] > 0) ++inked;
+      if (inked < 500) problems.push('chart drew ' + inked + ' pixels: ' + id);
+      // Every dataset looks different from the others.
+      const looks = new Map();
+      for (const d of chart.data.datasets) {
+        const fill = typeof d.backgroundColor === 'string' ? d.backgroundColor :
+          (d.backgroundColor ? 'pattern' : '');
+        const look = JSON.stringify([chart.config.type, d.borderColor || '', fill, d.borderDash || [],
+          d.pointStyle || '']);
+        if (looks.has(look)) problems.push('chart ' + id + ': ' + d.label + ' looks like ' + looks.get(look));
+        else looks.set(look, d.label);
+      }
+      // Time is on logarithmic axes.
+      for (const [key, scale] of Object.entries(chart.scales)) {
+        const title = (scale.options.title && scale.options.title.text) || '';
+        if (/(^|[^a-z])ms([^a-z]|$)/.test(title) && scale.type !== 'logarithmic') {
+          problems.push('chart ' + id + ': the time axis ' + key + ' is ' + scale.type + ', not logarithmic');
+        }
+        // Tick labels: consecutive shown labels at least their size apart (2 px to spare).
+        const font = Chart.helpers.toFont(scale.options.ticks.font);
+        const g = chart.ctx;
+        g.save();
+        g.font = font.string;
+        const shown = [];
+        scale.ticks.forEach((t, i) => {
+          const lines = [].concat(t.label === undefined ? [] : t.label).map(String).filter((x) => x !== '');
+          if (lines.length === 0) return;
+          shown.push({ text: lines.join(' / '), at: scale.getPixelForTick(i),
+            width: Math.max(...lines.map((l) => g.measureText(l).width)), height: lines.length * font.lineHeight });
+        });
+        g.restore();
+        const rotated = (scale.labelRotation || 0) * Math.PI / 180;
+        for (let i = 1; i < shown.length; ++i) {
+          const a = shown[i - 1], b = shown[i];
+          const gap = Math.abs(b.at - a.at);
+          const need = !scale.isHorizontal() ? (a.height + b.height) / 2 :
+            rotated > 0.01 ? font.lineHeight / Math.sin(rotated) : (a.width + b.width) / 2 + 2;
+          ++labelsChecked;
+          if (gap < need - 0.5) {
+            problems.push('chart ' + id + ': axis ' + key + ' labels overlap: "' + a.text + '" and "' +
+              b.text + '" ' + gap.toFixed(1) + ' px apart, need ' + need.toFixed(1));
+          }
+        }
+      }
     }
   }
+  // The summary: first in the page, one item per scene section.
+  const sections = document.querySelectorAll('section[id^="scene-"]').length;
+  const summary = document.getElementById('summary');
+  const summarised = summary ? summary.querySelectorAll('li[data-scene]').length : 0;
+  if (sections > 0) {
+    if (!summary) problems.push('no summary (section#summary)');
+    else if (summarised !== sections) problems.push('the summary covers ' + summarised + ' of ' + sections + ' scenes');
+    else if (document.querySelector('main > section') !== summary) problems.push('the summary is not the first section');
+  }
   return { problems, images: imgs.length, crops, videos: videos.length, charts: canvases.length,
-    chartIds: canvases.map((c) => c.id) };
+    chartIds: canvases.map((c) => c.id), summarised, labelsChecked };
 })()`;
 
 (async () => {
@@ -176,7 +247,7 @@ const pageChecks = `(async () => {
     { expression: pageChecks, awaitPromise: true, returnByValue: true }, sessionId);
   if (r.exceptionDetails) problems.push(`page checks threw: ${r.exceptionDetails.text}`);
   const v = (r.result && r.result.value) ||
-    { problems: [], images: 0, crops: 0, videos: 0, charts: 0, chartIds: [] };
+    { problems: [], images: 0, crops: 0, videos: 0, charts: 0, chartIds: [], summarised: 0, labelsChecked: 0 };
   problems.push(...v.problems);
   // Full-page screenshot: grow the viewport to the content's height (capped).
   const m = await send('Page.getLayoutMetrics', {}, sessionId);
@@ -190,6 +261,7 @@ const pageChecks = `(async () => {
   clearTimeout(timer);
   console.log(`check_page: ${v.images} images, ${v.videos} videos, ${v.charts} charts; screenshot ${screenshot}`);
   console.log(`check_page: ${v.crops} crops; charts ${v.chartIds.join(' ')}`);
+  console.log(`check_page: summary of ${v.summarised} scenes; ${v.labelsChecked} pairs of axis labels apart`);
   if (problems.length > 0) {
     for (const p of problems) console.log(`PROBLEM ${p}`);
     finish(1);

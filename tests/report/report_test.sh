@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The study as a user meets it: `sunglint compare` on two shared scenes at a tiny size
-# writes a report that opens in headless Chromium with no console error, every picture
-# and video decoded, every chart drawn (the flicker plot of each scene among them) and the
-# crops shown at 2:1 pixels, never shrunk (check_page.mjs, which also saves a
-# screenshot); a copy broken on purpose (a missing picture, a missing video, a script
-# error) is caught; bad options fail naming the option; without ffmpeg the error says
-# what to do.
+# The study as a user meets it: `sunglint compare` on two shared scenes and a colour one at
+# a tiny size writes a report that opens in headless Chromium with no console error, a
+# summary of every scene first, every picture and video decoded (each video at least 3 s),
+# every chart drawn (the flicker plot of each scene among them) with its methods told apart,
+# its time axes logarithmic and its labels apart, and the crops shown at 2:1 pixels, never
+# shrunk (check_page.mjs, which also saves a screenshot); a copy broken on purpose (a
+# missing picture, a missing video, a script error, no summary, one colour for every
+# method, a linear time axis, packed labels, a short video) is caught; bad options fail
+# naming the option; without ffmpeg the error says what to do.
 # Usage: report_test.sh SUNGLINT SOURCE_DIR WORK_DIR
 set -u
 bin=$1 src=$2 work=$3
@@ -49,6 +51,9 @@ if shot=$(node "$src/tests/report/check_page.mjs" "$study/index.html" "$work/scr
   grep -q "27 images, 3 videos, 10 charts" <<<"$shot" && pass || fail "unexpected page content: $shot"
   grep -q "18 crops; charts .*chart-flicker-simple.*chart-flicker-high.*chart-flicker-sunset" \
     <<<"$shot" && pass || fail "no crops or flicker charts: $shot"
+  # The summary opens the page, one item per scene; the axis labels were measured apart.
+  grep -q "summary of 3 scenes; [1-9][0-9]* pairs of axis labels apart" <<<"$shot" && pass ||
+    fail "no summary, or no axis labels checked: $shot"
 else
   fail "report page: $shot"
 fi
@@ -73,15 +78,33 @@ rm "$broken/img/simple-grid.png" "$broken/video/high.mp4" "$broken/img/high/poin
 sed -i 's|class="crop" src="img/simple/point-near.png" width="24"|class="crop" src="img/simple/point-near.png" width="12"|' \
   "$broken/index.html"
 echo 'window.undefinedFunction();' >>"$broken/report.js"
+# ... and the summary gone, every method in one colour and dash, the cost chart's time axis
+# linear, the log axes' labels packed (1 to 9 in each decade, a label's room taken as
+# 1 px), a video of 0.1 s.
+sed -i 's|<section id="summary">|<section id="summery">|' "$broken/index.html"
+sed -i "s|^  var methods = results.settings.methods;|  palette = palette.map(function () { return '#0072B2'; }); dashes = [[]];\n&|" \
+  "$broken/report.js"
+sed -i "s|scales: { x: logAxis('ms per frame'), y: logAxis('RMSE') }|scales: { x: { type: 'linear', title: { display: true, text: 'ms per frame' } }, y: logAxis('RMSE') }|" \
+  "$broken/report.js"
+sed -i 's|var need = horizontal ? 44 : 18;|var need = 1;|; s|var mantissaSets = \[\[1, 2, 5\]|var mantissaSets = [[1, 2, 3, 4, 5, 6, 7, 8, 9]|' \
+  "$broken/report.js"
+"$bin" render "$src/scenes/sunset.json" -m point --width 48 --frames 0-2 -q --video "$broken/video/sunset.mp4" \
+  >/dev/null 2>&1 || fail "render --video for the broken copy"
 if bad=$(node "$src/tests/report/check_page.mjs" "$broken/index.html" "$work/broken.png" \
   --chromium "$chromium" 2>&1); then
   fail "a broken report passed the check: $bad"
 else
   for want in "image does not load: img/simple-grid.png" "video/high.mp4" "undefinedFunction" \
-    "image does not load: img/high/point-far.png" "crop shown shrunk: img/simple/point-near.png"; do
+    "image does not load: img/high/point-far.png" "crop shown shrunk: img/simple/point-near.png" \
+    "no summary (section#summary)" "chart chart-rmse: supersample --samples 2x2x1 looks like point" \
+    "chart chart-cost-simple: the time axis x is linear, not logarithmic" "labels overlap" \
+    "video lasts 0.10 s (under 3 s): video/sunset.mp4"; do
     grep -qF "$want" <<<"$bad" && pass || fail "broken report: '$want' not reported: $bad"
   done
 fi
+# The videos last at least 3 s: 3 frames of a 30 fps scene play at 1 frame per second.
+grep -q '3 frames at 1 frames per second (30 times slower than the scene' "$study/index.html" && pass ||
+  fail "the page does not say how the videos play"
 
 # Resume: a second run renders nothing and writes the same results.
 cp "$study/results.json" "$work/first.json"

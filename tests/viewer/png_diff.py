@@ -3,7 +3,8 @@
 
 Usage: png_diff.py [--sum] A.png B.png [X0 X1]   (columns [X0, X1) only)
 With --sum, prints the sum of the absolute differences over all channels instead.
-png_diff.py --peak A.png prints A's largest channel value (0: a black picture).
+png_diff.py --peak A.png prints A's largest channel value (0: a black picture);
+png_diff.py --mean A.png its mean channel value (0 to 255).
 A grey picture counts as three equal channels, so a grey `render --display` compares
 with the viewer's RGB screenshot. Prints the maximum; exits 2 when the sizes differ.
 Standard library only (zlib); handles the non-interlaced 8-bit grey, RGB and RGBA that
@@ -70,6 +71,10 @@ def main():
     args = sys.argv[1:]
     if args[:1] == ["--peak"]:
         print(max(max(row) for row in read_png(args[1])[2]))
+        return
+    if args[:1] == ["--mean"]:
+        rows = read_png(args[1])[2]
+        print(round(sum(sum(row) for row in rows) / sum(len(row) for row in rows), 2))
         return
     total = args[:1] == ["--sum"]
     if total:
