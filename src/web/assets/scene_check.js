@@ -2,9 +2,10 @@
 // JavaScript, for a scene file dropped on the web page: the same rules in the same order,
 // so a malformed file gets the message `sunglint info FILE` prints, word for word (the
 // web test runs both on every scene of tests/scenes/bad/ and compares). That takes a JSON
-// reader of its own: JSON.parse reports neither the key path nor nlohmann's byte position
-// of an error, nor duplicate keys, and accepts nothing but UTF-16; this one reads the file's
-// bytes as nlohmann's lexer does (a UTF-8 BOM skipped, the error at the last byte read).
+// reader of its own: JSON.parse reports neither nlohmann's words for a syntax error nor its
+// byte position, nor the key path of a number out of range, nor duplicate keys, and accepts
+// nothing but UTF-16; this one is a port of nlohmann's lexer and parser that reads the
+// file's bytes as they do (a UTF-8 BOM skipped, the error at the last byte read).
 // Numbers are printed as C++'s ostream prints a double (%g, 6 significant digits).
 //
 // SunglintScene.parse(bytes, name) returns the scene (defaults applied, as sg::Scene) or
@@ -42,91 +43,238 @@ const SunglintScene = (() => {
   }
 
   // ---- JSON, as nlohmann's SAX parser reads it
-  class JsonError extends Error {}
-  function parseJson(bytes) {
-    let pos = 0;
-    if (bytes[0] === 0xef && bytes[1] === 0xbb && bytes[2] === 0xbf) pos = 3;
-    const stack = [];  // {array, index, key, keys}
-    const path = () => {
-      let p = '';
-      for (const f of stack) {
-        if (f.array) p += '[' + f.index + ']';
-        else if (f.key !== '') p += (p === '' ? '' : '.') + f.key;
-      }
-      return p;
-    };
-    const error = (at, reason) => {
-      const e = new JsonError(reason || 'invalid JSON');
-      e.at = at;
-      e.path = path();
-      throw e;
-    };
-    const value = () => { if (stack.length > 0 && stack[stack.length - 1].array) stack[stack.length - 1].index++; };
-    const skipSpace = () => {
-      while (pos < bytes.length && (bytes[pos] === 0x20 || bytes[pos] === 0x09 || bytes[pos] === 0x0a || bytes[pos] === 0x0d)) pos++;
-    };
-    const isDigit = (c) => c >= 0x30 && c <= 0x39;
-    const hex = (c) => (isDigit(c) ? c - 0x30 : (c >= 0x61 && c <= 0x66) ? c - 87 : (c >= 0x41 && c <= 0x46) ? c - 55 : -1);
-    // A token: {type, value, end}; `end` is the index of its last byte (an error there).
-    function token() {
-      skipSpace();
-      const start = pos;
-      if (pos >= bytes.length) return { type: 'eof', end: bytes.length };
-      const c = bytes[pos];
-      if ('{}[]:,'.includes(String.fromCharCode(c))) { pos++; return { type: String.fromCharCode(c), end: start }; }
-      if (c === 0x22) return stringToken();
-      if (c === 0x2d || isDigit(c)) return numberToken();
-      for (const [word, v] of [['true', true], ['false', false], ['null', null]]) {
-        if (c === word.charCodeAt(0)) {
-          for (let k = 0; k < word.length; k++) {
-            if (pos >= bytes.length) error(bytes.length);
-            if (bytes[pos] !== word.charCodeAt(k)) error(pos);
-            pos++;
-          }
-          return { type: 'literal', value: v, end: pos - 1 };
-        }
-      }
-      error(pos);
+  //
+  // A port of nlohmann/json 3.11.2 (the CLI's JSON library): its lexer
+  // (/usr/include/nlohmann/detail/input/lexer.hpp: scan, scan_string, scan_number,
+  // scan_literal, get, unget, reset, get_token_string, token_type_name and the lexer's
+  // error_message strings) and its parser (detail/input/parser.hpp: sax_parse_internal and
+  // exception_message), and of the SAX handler in scene_load.cpp (JsonReader: key paths,
+  // duplicate keys). A syntax error's message is the text nlohmann's parse_error carries
+  // after " - ", as scene_load.cpp's parse_error keeps it: what the lexer met ("unexpected
+  // ','", or the lexer's own error and "last read: '...'") and, mostly, what the parser
+  // wanted ("expected '}'"). Its position is the lexer's count of bytes read (EOF reads
+  // counted, ungets not), as parse_scene turns it into a line and column.
+  const EOF = -1;
+
+  // lexer_base::token_type_name: a token's name in the messages.
+  function tokenTypeName(type) {
+    switch (type) {
+      case 'uninitialized': return '<uninitialized>';
+      case 'literal_true': return 'true literal';
+      case 'literal_false': return 'false literal';
+      case 'literal_null': return 'null literal';
+      case 'value_string': return 'string literal';
+      case 'value_unsigned': case 'value_integer': case 'value_float': return 'number literal';
+      case 'begin_array': return "'['";
+      case 'begin_object': return "'{'";
+      case 'end_array': return "']'";
+      case 'end_object': return "'}'";
+      case 'name_separator': return "':'";
+      case 'value_separator': return "','";
+      case 'parse_error': return '<parse error>';
+      case 'end_of_input': return 'end of input';
+      case 'literal_or_value': return "'[', '{', or a literal";
+      default: return 'unknown token';
     }
-    function stringToken() {
-      pos++;  // the opening quote
+  }
+
+  // The names of the control characters U+0000..U+001F in scan_string's messages, and the
+  // short escapes some of them have.
+  const kControlNames = ['NUL', 'SOH', 'STX', 'ETX', 'EOT', 'ENQ', 'ACK', 'BEL', 'BS', 'HT', 'LF',
+    'VT', 'FF', 'CR', 'SO', 'SI', 'DLE', 'DC1', 'DC2', 'DC3', 'DC4', 'NAK', 'SYN', 'ETB', 'CAN',
+    'EM', 'SUB', 'ESC', 'FS', 'GS', 'RS', 'US'];
+  const kShortEscapes = { 0x08: '\\b', 0x09: '\\t', 0x0a: '\\n', 0x0c: '\\f', 0x0d: '\\r' };
+  const hex4 = (c) => c.toString(16).toUpperCase().padStart(4, '0');  // printf's %.4X
+  const isDigit = (c) => c >= 0x30 && c <= 0x39;
+  const utf8 = new TextDecoder('utf-8', { ignoreBOM: true });  // a BOM kept, bad bytes as U+FFFD
+
+  class Lexer {
+    constructor(bytes) {
+      this.bytes = bytes;
+      this.next = 0;            // the input adapter's next byte
+      this.current = EOF;       // the byte last read
+      this.nextUnget = false;   // get() gives `current` again
+      this.position = 0;        // position.chars_read_total
+      // token_string, the bytes read since reset() (what "last read" shows), is always a run
+      // of the input: get() appends the byte it reads (not EOF), unget() takes it back,
+      // reset() starts it at `current`. So it is kept as where it starts; it ends at the last
+      // byte read. Only strings and numbers reset it: after `"a": 1} x` it is "1} x".
+      this.tokenStart = 0;
+      this.tokenBuffer = [];    // token_buffer: a string's bytes (escapes decoded), a number's text
+      this.errorMessage = '';
+      this.value = undefined;   // the token's value: a string, a number
+    }
+
+    get() {
+      this.position++;
+      if (this.nextUnget) this.nextUnget = false;
+      else this.current = this.next < this.bytes.length ? this.bytes[this.next++] : EOF;
+      return this.current;
+    }
+    unget() {
+      this.nextUnget = true;
+      this.position--;
+    }
+    add(c) { this.tokenBuffer.push(c); }
+    reset() {
+      this.tokenBuffer = [];
+      this.tokenStart = this.position - 1;  // `current`, the byte last read
+    }
+
+    // The bytes read since reset(), control characters as <U+XXXX>, other bytes as they are
+    // (UTF-8 or not: the CLI prints them so, and the terminal or the test reads them as UTF-8).
+    getTokenString() {
+      const end = Math.min(this.position, this.bytes.length);
       const out = [];
-      const next = () => (pos < bytes.length ? bytes[pos++] : (pos++, -1));
-      const at = () => (pos - 1 < bytes.length ? pos - 1 : bytes.length);
-      const codepoint = () => {
-        let v = 0;
-        for (let k = 0; k < 4; k++) {
-          const d = hex(next());
-          if (d < 0) error(at());
-          v = v * 16 + d;
+      for (let k = this.tokenStart; k < end; k++) {
+        const c = this.bytes[k];
+        if (c <= 0x1f) for (const ch of '<U+' + hex4(c) + '>') out.push(ch.charCodeAt(0));
+        else out.push(c);
+      }
+      return utf8.decode(new Uint8Array(out));
+    }
+
+    skipBom() {
+      if (this.get() === 0xef) return this.get() === 0xbb && this.get() === 0xbf;
+      this.unget();
+      return true;
+    }
+    skipWhitespace() {
+      do this.get();
+      while (this.current === 0x20 || this.current === 0x09 || this.current === 0x0a || this.current === 0x0d);
+    }
+
+    scan() {
+      if (this.position === 0 && !this.skipBom()) {
+        this.errorMessage = 'invalid BOM; must be 0xEF 0xBB 0xBF if given';
+        return 'parse_error';
+      }
+      this.skipWhitespace();
+      const c = this.current === EOF ? 'EOF' : String.fromCharCode(this.current);
+      switch (c) {
+        case '[': return 'begin_array';
+        case ']': return 'end_array';
+        case '{': return 'begin_object';
+        case '}': return 'end_object';
+        case ':': return 'name_separator';
+        case ',': return 'value_separator';
+        case 't': return this.scanLiteral('true', 'literal_true', true);
+        case 'f': return this.scanLiteral('false', 'literal_false', false);
+        case 'n': return this.scanLiteral('null', 'literal_null', null);
+        case '"': return this.scanString();
+        case '-': case '0': case '1': case '2': case '3': case '4':
+        case '5': case '6': case '7': case '8': case '9':
+          return this.scanNumber();
+        case '\0': case 'EOF': return 'end_of_input';  // a NUL byte ends the input too
+        default:
+          this.errorMessage = 'invalid literal';
+          return 'parse_error';
+      }
+    }
+
+    scanLiteral(text, type, value) {
+      for (let k = 1; k < text.length; k++) {
+        if (this.get() !== text.charCodeAt(k)) {
+          this.errorMessage = 'invalid literal';
+          return 'parse_error';
         }
-        return v;
-      };
+      }
+      this.value = value;
+      return type;
+    }
+
+    // After `\u`: the 4 hex digits' value, or -1.
+    getCodepoint() {
+      let codepoint = 0;
+      for (let k = 0; k < 4; k++) {
+        const c = this.get();
+        if (c >= 0x30 && c <= 0x39) codepoint = codepoint * 16 + (c - 0x30);
+        else if (c >= 0x41 && c <= 0x46) codepoint = codepoint * 16 + (c - 0x37);
+        else if (c >= 0x61 && c <= 0x66) codepoint = codepoint * 16 + (c - 0x57);
+        else return -1;
+      }
+      return codepoint;
+    }
+
+    // A UTF-8 sequence: `current` and, for each [lo, hi], a next byte in that range.
+    nextByteInRange(ranges) {
+      this.add(this.current);
+      for (const [lo, hi] of ranges) {
+        const c = this.get();
+        if (c >= lo && c <= hi) {
+          this.add(c);
+        } else {
+          this.errorMessage = 'invalid string: ill-formed UTF-8 byte';
+          return false;
+        }
+      }
+      return true;
+    }
+
+    scanString() {
+      this.reset();  // token_string starts at the opening quote
       for (;;) {
-        const c = next();
-        if (c < 0) error(bytes.length);
-        if (c === 0x22) break;
-        if (c === 0x5c) {
-          const e = next();
-          const simple = { 0x22: '"', 0x5c: '\\', 0x2f: '/', 0x62: '\b', 0x66: '\f', 0x6e: '\n', 0x72: '\r', 0x74: '\t' };
-          if (e in simple) { out.push(simple[e]); continue; }
-          if (e !== 0x75) error(at());
-          let cp = codepoint();
-          if (cp >= 0xd800 && cp <= 0xdbff) {
-            if (next() !== 0x5c) error(at());
-            if (next() !== 0x75) error(at());
-            const lo = codepoint();
-            if (!(lo >= 0xdc00 && lo <= 0xdfff)) error(at());
-            cp = 0x10000 + ((cp - 0xd800) << 10) + (lo - 0xdc00);
-          } else if (cp >= 0xdc00 && cp <= 0xdfff) {
-            error(at());
+        const c = this.get();
+        if (c === EOF) {
+          this.errorMessage = 'invalid string: missing closing quote';
+          return 'parse_error';
+        }
+        if (c === 0x22) {  // the closing quote
+          this.value = utf8.decode(new Uint8Array(this.tokenBuffer));
+          return 'value_string';
+        }
+        if (c === 0x5c) {  // a backslash
+          const e = this.get();
+          const simple = { 0x22: 0x22, 0x5c: 0x5c, 0x2f: 0x2f, 0x62: 0x08, 0x66: 0x0c, 0x6e: 0x0a, 0x72: 0x0d, 0x74: 0x09 };
+          if (e in simple) {
+            this.add(simple[e]);
+            continue;
           }
-          out.push(String.fromCodePoint(cp));
+          if (e !== 0x75) {  // not u
+            this.errorMessage = 'invalid string: forbidden character after backslash';
+            return 'parse_error';
+          }
+          const codepoint1 = this.getCodepoint();
+          let codepoint = codepoint1;
+          if (codepoint1 === -1) {
+            this.errorMessage = "invalid string: '\\u' must be followed by 4 hex digits";
+            return 'parse_error';
+          }
+          if (codepoint1 >= 0xd800 && codepoint1 <= 0xdbff) {
+            // a high surrogate: a \u with a low one must follow
+            if (this.get() === 0x5c && this.get() === 0x75) {
+              const codepoint2 = this.getCodepoint();
+              if (codepoint2 === -1) {
+                this.errorMessage = "invalid string: '\\u' must be followed by 4 hex digits";
+                return 'parse_error';
+              }
+              if (codepoint2 >= 0xdc00 && codepoint2 <= 0xdfff) {
+                codepoint = 0x10000 + ((codepoint1 - 0xd800) << 10) + (codepoint2 - 0xdc00);
+              } else {
+                this.errorMessage = 'invalid string: surrogate U+D800..U+DBFF must be followed by U+DC00..U+DFFF';
+                return 'parse_error';
+              }
+            } else {
+              this.errorMessage = 'invalid string: surrogate U+D800..U+DBFF must be followed by U+DC00..U+DFFF';
+              return 'parse_error';
+            }
+          } else if (codepoint1 >= 0xdc00 && codepoint1 <= 0xdfff) {
+            this.errorMessage = 'invalid string: surrogate U+DC00..U+DFFF must follow U+D800..U+DBFF';
+            return 'parse_error';
+          }
+          for (const b of new TextEncoder().encode(String.fromCodePoint(codepoint))) this.add(b);
           continue;
         }
-        if (c < 0x20) error(at());
-        if (c < 0x80) { out.push(String.fromCharCode(c)); continue; }
-        // UTF-8 (RFC 3629): the lead byte's ranges for each continuation byte.
+        if (c <= 0x1f) {
+          this.errorMessage = 'invalid string: control character U+' + hex4(c) + ' (' + kControlNames[c] +
+            ') must be escaped to \\u' + hex4(c) + (c in kShortEscapes ? ' or ' + kShortEscapes[c] : '');
+          return 'parse_error';
+        }
+        if (c <= 0x7f) {
+          this.add(c);
+          continue;
+        }
+        // UTF-8 (RFC 3629): the range of each continuation byte after the lead byte.
         const ranges = c >= 0xc2 && c <= 0xdf ? [[0x80, 0xbf]]
           : c === 0xe0 ? [[0xa0, 0xbf], [0x80, 0xbf]]
           : (c >= 0xe1 && c <= 0xec) || c === 0xee || c === 0xef ? [[0x80, 0xbf], [0x80, 0xbf]]
@@ -134,98 +282,229 @@ const SunglintScene = (() => {
           : c === 0xf0 ? [[0x90, 0xbf], [0x80, 0xbf], [0x80, 0xbf]]
           : c >= 0xf1 && c <= 0xf3 ? [[0x80, 0xbf], [0x80, 0xbf], [0x80, 0xbf]]
           : c === 0xf4 ? [[0x80, 0x8f], [0x80, 0xbf], [0x80, 0xbf]] : null;
-        if (!ranges) error(at());
-        const seq = [c];
-        for (const [lo, hi] of ranges) {
-          const b = next();
-          if (!(b >= lo && b <= hi)) error(at());
-          seq.push(b);
+        if (ranges === null) {  // 80..C1, F5..FF
+          this.errorMessage = 'invalid string: ill-formed UTF-8 byte';
+          return 'parse_error';
         }
-        out.push(new TextDecoder().decode(new Uint8Array(seq)));
+        if (!this.nextByteInRange(ranges)) return 'parse_error';
       }
-      return { type: 'string', value: out.join(''), end: pos - 1 };
     }
-    function numberToken() {
-      const start = pos;
-      const at = () => (pos < bytes.length ? pos : bytes.length);
-      const digits = () => { while (pos < bytes.length && isDigit(bytes[pos])) pos++; };
-      if (bytes[pos] === 0x2d) pos++;
-      if (pos >= bytes.length || !isDigit(bytes[pos])) error(at());
-      if (bytes[pos] === 0x30) pos++; else digits();
-      if (bytes[pos] === 0x2e) {
-        pos++;
-        if (pos >= bytes.length || !isDigit(bytes[pos])) error(at());
-        digits();
+
+    // nlohmann's state machine: minus? (0 | 1-9 digits*) (. digit+)? ([eE] [+-]? digit+)?
+    scanNumber() {
+      this.reset();
+      let type = 'value_unsigned';
+      let c = this.current;
+      this.add(c);
+      if (c === 0x2d) {  // minus
+        type = 'value_integer';
+        c = this.get();
+        if (!isDigit(c)) {
+          this.errorMessage = "invalid number; expected digit after '-'";
+          return 'parse_error';
+        }
+        this.add(c);
       }
-      if (bytes[pos] === 0x65 || bytes[pos] === 0x45) {
-        pos++;
-        if (bytes[pos] === 0x2b || bytes[pos] === 0x2d) pos++;
-        if (pos >= bytes.length || !isDigit(bytes[pos])) error(at());
-        digits();
+      if (c === 0x30) {  // zero: no digits follow
+        c = this.get();
+      } else {
+        while (isDigit(c = this.get())) this.add(c);
       }
-      const text = String.fromCharCode(...bytes.subarray(start, pos));
-      const v = Number(text);
-      if (!Number.isFinite(v)) error(pos - 1, 'number out of range');
-      // An integer is nlohmann's int64 (or a double past its range): -0 is 0.
-      const integer = !/[.eE]/.test(text);
-      return { type: 'number', value: integer && v === 0 ? 0 : v, end: pos - 1 };
-    }
-    function parseValue(t) {
-      if (t.type === '{') {
-        const frame = { array: false, index: 0, key: '', keys: new Set() };
-        stack.push(frame);
-        const obj = {};
-        let k = token();
-        if (k.type === '}') { stack.pop(); value(); return obj; }
-        for (;;) {
-          if (k.type !== 'string') error(k.end);
-          frame.key = k.value;
-          if (frame.keys.has(k.value)) {
-            const e = new JsonError('duplicate');
-            e.duplicate = path();
-            throw e;
+      if (c === 0x2e) {  // .
+        type = 'value_float';
+        this.add(c);
+        c = this.get();
+        if (!isDigit(c)) {
+          this.errorMessage = "invalid number; expected digit after '.'";
+          return 'parse_error';
+        }
+        this.add(c);
+        while (isDigit(c = this.get())) this.add(c);
+      }
+      if (c === 0x65 || c === 0x45) {  // e E
+        type = 'value_float';
+        this.add(c);
+        c = this.get();
+        if (c === 0x2b || c === 0x2d) {  // + -
+          this.add(c);
+          c = this.get();
+          if (!isDigit(c)) {
+            this.errorMessage = 'invalid number; expected digit after exponent sign';
+            return 'parse_error';
           }
-          frame.keys.add(k.value);
-          const colon = token();
-          if (colon.type !== ':') error(colon.end);
-          obj[k.value] = parseValue(token());
-          const sep = token();
-          if (sep.type === '}') break;
-          if (sep.type !== ',') error(sep.end);
-          k = token();
+        } else if (!isDigit(c)) {
+          this.errorMessage = "invalid number; expected '+', '-', or digit after exponent";
+          return 'parse_error';
         }
-        stack.pop();
-        value();
-        return obj;
+        this.add(c);
+        while (isDigit(c = this.get())) this.add(c);
       }
-      if (t.type === '[') {
-        stack.push({ array: true, index: 0, key: '', keys: null });
-        const arr = [];
-        let v = token();
-        if (v.type === ']') { stack.pop(); value(); return arr; }
-        for (;;) {
-          arr.push(parseValue(v));
-          const sep = token();
-          if (sep.type === ']') break;
-          if (sep.type !== ',') error(sep.end);
-          v = token();
-        }
-        stack.pop();
-        value();
-        return arr;
+      this.unget();  // the byte after the number
+      const text = String.fromCharCode(...this.tokenBuffer);
+      this.value = Number(text);
+      // An integer that fits nlohmann's uint64 (or, with a minus, int64) is one (-0 is 0);
+      // any other number is a double, which may overflow.
+      if (type === 'value_unsigned' && text.length <= 20 && BigInt(text) <= 0xffffffffffffffffn) return type;
+      if (type === 'value_integer' && text.length <= 20 && BigInt(text) >= -0x8000000000000000n) {
+        this.value += 0;
+        return type;
       }
-      if (t.type === 'string' || t.type === 'number' || t.type === 'literal') {
-        value();
-        return t.value;
-      }
-      error(t.end);
+      return 'value_float';
     }
-    const root = parseValue(token());
-    const rest = token();
-    if (rest.type !== 'eof') error(rest.end);
+  }
+
+  class JsonError extends Error {}
+  // `bytes` as JSON (a value of objects, arrays, strings, numbers, true, false, null), or a
+  // JsonError: {position, detail} for a syntax error, {position, path, outOfRange} for a
+  // number too large for a double, {duplicate} for a duplicate key (its key path).
+  function parseJson(bytes) {
+    const lexer = new Lexer(bytes);
+
+    // The SAX handler: JsonReader's frames (key paths) and the values built (nlohmann's
+    // json_sax_dom_parser). Objects have no prototype, so that "__proto__" is a key like any.
+    const frames = [];  // {array, index, key, keys, value}
+    let root;
+    const path = () => {
+      let p = '';
+      for (const f of frames) {
+        if (f.array) p += '[' + f.index + ']';
+        else if (f.key !== '') p += (p === '' ? '' : '.') + f.key;
+      }
+      return p;
+    };
+    const put = (v) => {
+      const f = frames[frames.length - 1];
+      if (f === undefined) root = v;
+      else if (f.array) f.value.push(v);
+      else f.value[f.key] = v;
+    };
+    const counted = () => {  // JsonReader::value
+      if (frames.length > 0 && frames[frames.length - 1].array) frames[frames.length - 1].index++;
+    };
+    const scalar = (v) => { counted(); put(v); };
+    const startObject = () => {
+      const o = Object.create(null);
+      put(o);
+      frames.push({ array: false, index: 0, key: '', keys: new Set(), value: o });
+    };
+    const startArray = () => {
+      const a = [];
+      put(a);
+      frames.push({ array: true, index: 0, key: '', keys: null, value: a });
+    };
+    const end = () => { frames.pop(); counted(); };
+    const key = (k) => {
+      const f = frames[frames.length - 1];
+      f.key = k;
+      if (f.keys.has(k)) {
+        const e = new JsonError('duplicate key');
+        e.duplicate = path();
+        throw e;
+      }
+      f.keys.add(k);
+    };
+
+    // The parser (sax_parse and sax_parse_internal), its states and its gotos as they are.
+    let lastToken = 'uninitialized';
+    const getToken = () => (lastToken = lexer.scan());
+    // parser::exception_message, from after " - " on.
+    const syntaxError = (expected) => {
+      let detail = lastToken === 'parse_error'
+        ? lexer.errorMessage + "; last read: '" + lexer.getTokenString() + "'"
+        : 'unexpected ' + tokenTypeName(lastToken);
+      if (expected !== 'uninitialized') detail += '; expected ' + tokenTypeName(expected);
+      const e = new JsonError('invalid JSON');
+      e.position = lexer.position;
+      e.detail = detail;
+      throw e;
+    };
+    const states = [];  // true: in an array, false: in an object
+    let skipToStateEvaluation = false;
+    getToken();
+    for (;;) {
+      if (!skipToStateEvaluation) {
+        switch (lastToken) {
+          case 'begin_object':
+            startObject();
+            if (getToken() === 'end_object') {
+              end();
+              break;
+            }
+            if (lastToken !== 'value_string') syntaxError('value_string');
+            key(lexer.value);
+            if (getToken() !== 'name_separator') syntaxError('name_separator');
+            states.push(false);
+            getToken();
+            continue;
+          case 'begin_array':
+            startArray();
+            if (getToken() === 'end_array') {
+              end();
+              break;
+            }
+            states.push(true);
+            continue;
+          case 'value_float':
+            if (!Number.isFinite(lexer.value)) {
+              const e = new JsonError('number out of range');
+              e.position = lexer.position;
+              e.path = path();
+              e.outOfRange = true;
+              throw e;
+            }
+            scalar(lexer.value);
+            break;
+          case 'literal_false': case 'literal_null': case 'literal_true':
+          case 'value_integer': case 'value_string': case 'value_unsigned':
+            scalar(lexer.value);
+            break;
+          case 'parse_error':
+            syntaxError('uninitialized');  // the lexer's message, nothing expected
+            break;
+          default:
+            syntaxError('literal_or_value');
+        }
+      } else {
+        skipToStateEvaluation = false;
+      }
+
+      // a value read
+      if (states.length === 0) break;
+      if (states[states.length - 1]) {  // in an array
+        if (getToken() === 'value_separator') {
+          getToken();
+          continue;
+        }
+        if (lastToken === 'end_array') {
+          end();
+          states.pop();
+          skipToStateEvaluation = true;
+          continue;
+        }
+        syntaxError('end_array');
+      }
+      // in an object
+      if (getToken() === 'value_separator') {
+        if (getToken() !== 'value_string') syntaxError('value_string');
+        key(lexer.value);
+        if (getToken() !== 'name_separator') syntaxError('name_separator');
+        getToken();
+        continue;
+      }
+      if (lastToken === 'end_object') {
+        end();
+        states.pop();
+        skipToStateEvaluation = true;
+        continue;
+      }
+      syntaxError('end_object');
+    }
+    // strict: nothing but the end of the input after the value
+    if (getToken() !== 'end_of_input') syntaxError('end_of_input');
     return root;
   }
 
+  // scene_load.cpp's line_col: the line and column of byte `at` (bytes, not characters).
   function lineCol(bytes, at) {
     let line = 1, col = 1;
     for (let k = 0; k < at && k < bytes.length; k++) {
@@ -467,11 +746,16 @@ const SunglintScene = (() => {
       j = parseJson(bytes);
     } catch (e) {
       if (!(e instanceof JsonError)) throw e;
-      if (e.duplicate !== undefined) {
+      // As parse_scene tells them apart (a duplicate key by its path, which a duplicate ""
+      // at the top level lacks: the CLI calls that one invalid JSON at line 1, column 1).
+      if (e.duplicate !== undefined && e.duplicate !== '') {
         throw new Error(name + ': ' + e.duplicate + ': duplicate key (JSON object keys must be unique)');
       }
-      const at = lineCol(bytes, e.at);
-      throw new Error(name + ': ' + (e.path === '' ? '' : e.path + ': ') + e.message + ' at ' + at);
+      const position = e.position || 0, detail = e.detail || '', path = e.path || '';
+      const at = lineCol(bytes, position > 0 ? position - 1 : 0);
+      if (e.outOfRange) throw new Error(name + ': ' + (path === '' ? '' : path + ': ') + 'number out of range at ' + at);
+      // A syntax error: where it is, not a key (the text there may not be the key's at all).
+      throw new Error(name + ': ' + at + ': invalid JSON' + (detail === '' ? '' : ' (' + detail + ')'));
     }
     try {
       const top = new ObjectReader(j, '');
