@@ -54,10 +54,20 @@ const extra = {
   'utf8_path.json': '{"\u00e9": tru}', 'utf8_value.json': '{"a": "\u00e9x", "b": tru}',
   'truncated.json': valid.slice(0, 400), 'second_object.json': valid + valid,
   'big_integer.json': valid.replace(/"frames": \d+/, '"frames": 123456789012345678901234567890'),
+  // nlohmann's lexer paths: each message, and what its "last read" shows.
+  'tab_in_string.json': '{"a": "x\ty"}', 'nul_in_key.json': '{"a\u0000": 1}', 'escape_eof.json': '{"a": "\\',
+  'high_then_x.json': '{"a": "\\ud800x"}', 'high_then_short.json': '{"a": "\\ud800\\u12"}',
+  'exponent_sign_alone.json': '{"a": 1e+}', 'minus_eof.json': '-', 'dot_dot.json': '[1.5.3]', 'false_short.json': '[fals]',
+  'array_trailing_comma.json': '[1,]', 'two_values.json': '{} {}', 'object_no_comma.json': '{"a": 1 "b": 2}',
+  'key_number.json': '{1: 2}', 'bom_literal.json': '\ufeff tru', 'nul_after_scene.json': valid + '\u0000 x',
+  'empty_key_duplicate.json': '{"": 1, "": 2}', 'proto_key.json': valid.replace('{', '{"__proto__": 1, '),
+  'deep_array.json': '['.repeat(100000) + ']'.repeat(100000),
 };
 const bytes = { 'bad_utf8.json': Buffer.from([0x7b, 0x22, 0x61, 0x22, 0x3a, 0x20, 0x22, 0xff, 0x22, 0x7d]),
   'overlong_utf8.json': Buffer.from([0x7b, 0x22, 0xc0, 0x80, 0x22, 0x3a, 0x31, 0x7d]),
-  'surrogate_utf8.json': Buffer.from([0x7b, 0x22, 0xed, 0xa0, 0x80, 0x22, 0x3a, 0x31, 0x7d]) };
+  'surrogate_utf8.json': Buffer.from([0x7b, 0x22, 0xed, 0xa0, 0x80, 0x22, 0x3a, 0x31, 0x7d]),
+  'four_byte_utf8.json': Buffer.from([0x7b, 0x22, 0xf0, 0x9f, 0x41, 0x22, 0x3a, 0x31, 0x7d]),
+  'bom_bad.json': Buffer.from([0xef, 0x7b, 0x7d]), 'bom_cut.json': Buffer.from([0xef, 0xbb]) };
 const dir = join(work, 'malformed');
 mkdirSync(dir, { recursive: true });
 for (const [name, text] of Object.entries(extra)) writeFileSync(join(dir, name), text);
