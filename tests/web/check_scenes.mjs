@@ -62,6 +62,9 @@ const extra = {
   'key_number.json': '{1: 2}', 'bom_literal.json': '\ufeff tru', 'nul_after_scene.json': valid + '\u0000 x',
   'empty_key_duplicate.json': '{"": 1, "": 2}', 'proto_key.json': valid.replace('{', '{"__proto__": 1, '),
   'deep_array.json': '['.repeat(100000) + ']'.repeat(100000),
+  // Two unknown keys: the first in byte order is named (nlohmann's objects are std::maps).
+  'unknown_keys_order.json': valid.replace('{', '{"zz": 1, "\ue000": 2, "\u{1f600}": 3, "aa": 4, "10": 5, "9": 6, '),
+  'unknown_keys_utf8.json': valid.replace('{', '{"\u{1f600}": 3, "\ue000": 2, '),
 };
 const bytes = { 'bad_utf8.json': Buffer.from([0x7b, 0x22, 0x61, 0x22, 0x3a, 0x20, 0x22, 0xff, 0x22, 0x7d]),
   'overlong_utf8.json': Buffer.from([0x7b, 0x22, 0xc0, 0x80, 0x22, 0x3a, 0x31, 0x7d]),

@@ -514,6 +514,13 @@ const SunglintScene = (() => {
   }
 
   // ---- the scene's keys (scene_load.cpp's ObjectReader and read_*)
+  // std::string's order: byte by byte (as unsigned), of the keys' UTF-8.
+  const encoder = new TextEncoder();
+  function byteOrder(a, b) {
+    const x = encoder.encode(a), y = encoder.encode(b);
+    for (let k = 0; k < x.length && k < y.length; k++) if (x[k] !== y[k]) return x[k] - y[k];
+    return x.length - y.length;
+  }
   const isObject = (j) => j !== null && typeof j === 'object' && !Array.isArray(j);
   class ObjectReader {
     constructor(j, path) {
@@ -561,8 +568,10 @@ const SunglintScene = (() => {
       return v.map((x, k) => asNumber(x, p + '[' + k + ']'));
     }
     object(key) { return new ObjectReader(this.get(key), this.keyPath(key)); }
+    // The first unknown key in nlohmann's order: its objects are std::maps, keys in byte order.
     finish() {
-      for (const k of Object.keys(this.j)) if (!this.seen.has(k)) fail(this.keyPath(k), 'unknown key');
+      const keys = Object.keys(this.j).sort(byteOrder);
+      for (const k of keys) if (!this.seen.has(k)) fail(this.keyPath(k), 'unknown key');
     }
   }
   function asNumber(v, path) {
