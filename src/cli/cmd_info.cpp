@@ -22,6 +22,7 @@
 #include "cli/commands.h"
 #include "cli/wave_resolution.h"
 #include "scene/camera.h"
+#include "scene/camera_path.h"
 #include "scene/light.h"
 #include "scene/scene.h"
 #include "scene/waves.h"
@@ -239,6 +240,18 @@ void run_info(const InfoArgs& a) {
         {"water_row_first", res.water_row_first},
         {"bands", jbands}}},
   };
+  // A moving camera (format /3): each segment's speed and mean turn rate.
+  const std::vector<CameraSegmentMotion> motion = camera_motion(s.camera);
+  if (!motion.empty()) {
+    nlohmann::json segs = nlohmann::json::array();
+    for (const CameraSegmentMotion& m : motion) {
+      segs.push_back({{"t0", m.t0},
+                      {"t1", m.t1},
+                      {"speed_m_per_s", m.speed},
+                      {"turn_rate_deg_per_s", m.turn_rate_deg}});
+    }
+    j["camera_motion"] = segs;
+  }
   if (a.json) {
     std::printf("%s\n", j.dump(2).c_str());
     return;
@@ -265,6 +278,11 @@ void run_info(const InfoArgs& a) {
     std::printf("%s %s\n", k == 0 ? "look        " : "            ", look.lines[k].c_str());
   std::printf("animation    %d frames at %g fps from t0 = %g s, shutter %g\n", s.animation.frames,
               s.animation.fps, s.animation.t0, s.animation.shutter);
+  for (size_t k = 0; k < motion.size(); ++k) {
+    std::printf("%s %g to %g s: speed %.4g m/s, turn rate %.4g deg/s\n",
+                k == 0 ? "camera      " : "            ", motion[k].t0, motion[k].t1,
+                motion[k].speed, motion[k].turn_rate_deg);
+  }
   if (res.bands.empty()) {
     std::printf("resolution   no row of the image sees the water\n");
   } else {

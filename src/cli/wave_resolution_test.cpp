@@ -26,7 +26,7 @@ Scene top_down(const std::vector<double>& fx, const std::vector<double>& fdiag) 
   for (double f : fdiag)
     waves.push_back(Wave{0.001, vec2(kTwoPi * f / m, kTwoPi * f / m), 1, 0});
   Scene s = testing::small_scene(waves, 90, 90);
-  s.camera = CameraDesc{{0, 10, 0}, {0, 0, 0}, {0, 0, -1}, 2};
+  s.camera = CameraDesc{{0, 10, 0}, {0, 0, 0}, {0, 0, -1}, 2, {}};
   return s;
 }
 

@@ -8,6 +8,9 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <optional>
+
+#include "scene/camera_path.h"
 
 namespace sg {
 
@@ -21,7 +24,12 @@ Image render_frame(const SceneModel& model, Method& method, int frame,
   const int w = model.width(), h = model.height(), t = std::max(1, settings.tile);
   // One channel for a grey scene (its files stay as they were), R, G, B for colour.
   Image img = Image::with_channels(w, h, model.scene.grey() ? 1 : 3);
-  FrameContext ctx{model, frame_time(model.scene, frame), settings.seed};
+  // A moving camera: the frame's model holds the camera at the shutter's end (what the
+  // methods that do not sample time render; the kernel's take the keys over the shutter).
+  const FrameTime ft = frame_time(model.scene, frame);
+  std::optional<SceneModel> moved;
+  if (model.scene.camera.moving()) moved.emplace(frame_model(model.scene, ft));
+  FrameContext ctx{moved ? *moved : model, ft, settings.seed};
   method.begin_frame(ctx);
 
   const int tiles_x = (w + t - 1) / t, tiles_y = (h + t - 1) / t;

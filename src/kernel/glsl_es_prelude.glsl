@@ -18,6 +18,8 @@ precision highp sampler2D;
 precision highp sampler2DArray;
 
 #define real float
+// The page renders fixed cameras only (camera.glsl: camera_at is the frame's camera).
+#define SG_FIXED_CAMERA
 #define IN(T) in T
 #define OUT(T) out T
 #define INOUT(T) inout T

@@ -48,9 +48,24 @@ struct Light {
   bool visible;     // drawn in the sky for camera rays that miss the water
 };
 
+// A camera that moves during the frame's shutter (format /3; camera.glsl): its keys over
+// the shutter, the first at its opening (time -duration) and the last at its end (time
+// 0), with the scene's keys in between; positions and look-at points camera-relative (as
+// Frame.camera, which holds the camera at the shutter's end). count 0: the camera stands
+// still over the shutter, and every ray is Frame.camera's.
+const int kMaxCameraKeys = 8;
+struct CameraKeys {
+  int count;                  // 0, or 2 to kMaxCameraKeys
+  real time[kMaxCameraKeys];  // offsets from the display time, increasing
+  vec3 position[kMaxCameraKeys];
+  vec3 look_at[kMaxCameraKeys];
+  vec3 up;  // the scene's camera.up, unit length
+};
+
 // Everything per frame that is not per wave (the waves are in the wave buffer, waves.glsl).
 struct Frame {
-  Camera camera;
+  Camera camera;  // at the display time (the shutter's end)
+  CameraKeys camera_keys;
   Light light;
   int fresnel;        // 0: none, 1: Schlick (scene spec 4)
   bool displaced;     // geometry "displaced" (else "flat")

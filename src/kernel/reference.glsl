@@ -32,9 +32,11 @@
 //   Sub-intervals with a root pair closer than 2^-24 of their length (a path tangent to
 //   the rim within that) are taken as not crossing: the error is at most that length.
 //
-// Displaced water: the hit point moves with the waves, so each sample is traced at its own
-// time: every spatial stratum takes T samples, each with its own jittered position and
-// its own time stratum (positions not shared between times).
+// Displaced water, or a camera that moves during the shutter (format /3): the hit point
+// moves, so each sample is traced at its own time (the camera's ray at that time), and
+// every pixel takes the full sampling (the pilot below assumes a still camera): every
+// spatial stratum takes T samples, each with its own jittered position and its own time
+// stratum (positions not shared between times).
 //
 // Sampling. B independent batches (B >= 2), each S_x x S_y jittered positions, one per
 // cell of the pixel, each cell with T samples; the pixel's value is the batches' mean and
@@ -542,13 +544,14 @@ SG_FN ReferenceResult reference_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(Refe
   r.weights = vec4(0.0);
   for (int b = 0; b < kMaxBatches; ++b)
     r.batch[b] = vec4(0.0);
-  r.busy = !n.adaptive || reference_pixel_busy(waves, f, n.margin, i, j);
+  bool traced = f.displaced || f.camera_keys.count > 0;  // each sample at its own time
+  r.busy = !n.adaptive || f.camera_keys.count > 0 || reference_pixel_busy(waves, f, n.margin, i, j);
   int sx = r.busy ? n.sx : n.quiet_sx;
   int sy = r.busy ? n.sy : n.quiet_sy;
   real per_batch = real(sx) * real(sy) * real(n.nt);
   // Batches before first_batch: their draws skipped (two outputs per uniform), so that
   // batch first_batch + b is the same whether rendered alone or with the others.
-  int skip = n.first_batch * sx * sy * n.nt * (f.displaced ? 3 : 2) * 2;
+  int skip = n.first_batch * sx * sy * n.nt * (traced ? 3 : 2) * 2;
   for (int s = 0; s < skip; ++s)
     pcg32_next(rng);
   for (int b = 0; b < n.batches; ++b) {
@@ -558,7 +561,7 @@ SG_FN ReferenceResult reference_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(Refe
         for (int q = 0; q < n.nt; ++q) {
           real px = real(i) + (real(cx) + pcg32_uniform(rng)) / real(sx);
           real py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(sy);
-          if (f.displaced) {
+          if (traced) {
             real dt = (real(q) + pcg32_uniform(rng)) / real(n.nt) * f.duration - f.duration;
             sum += sample_weights(waves, f, px, py, dt);
           } else {

@@ -3,7 +3,8 @@
 // and the shutter interval.
 //
 // `point` (the paper's "No AA") takes one ray through the pixel centre at the display
-// time. The stratified estimator takes S_x x S_y jittered positions, one per cell of the
+// time. Every sample's ray is that of the camera at the sample's time (a moving camera,
+// camera.glsl). The stratified estimator takes S_x x S_y jittered positions, one per cell of the
 // pixel square, times T jittered times, one per stratum of the shutter; every position is
 // paired with every time (S_x S_y T samples; unbiased, its error falls with the samples).
 // With `time_at_frame` the T times are replaced by the single display time (supersample
@@ -11,11 +12,13 @@
 // stream of (seed, frame, pixel) (rng.glsl) in a fixed order: the T time jitters, then for
 // each cell in row-major order its x and y jitter. Same inputs, same bytes.
 
-// The weights along the camera ray through image-plane point (px, py), dt from the
-// display time: intersection (flat or displaced), normal, reflection, shading.
+// The weights along the ray through image-plane point (px, py) of the camera at dt from
+// the display time (camera_at: a moving camera's position and basis at that time):
+// intersection (flat or displaced), normal, reflection, shading.
 SG_FN vec4 sample_weights(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, real dt) {
-  vec3 d = normalize(camera_direction(f.camera, px, py));
-  vec3 o = f.camera.position;
+  Camera c = camera_at(f, dt);
+  vec3 d = normalize(camera_direction(c, px, py));
+  vec3 o = c.position;
   RayHit hit;
   if (f.displaced) {
     hit = intersect_displaced(waves, f, o, d, dt);

@@ -23,7 +23,7 @@ namespace {
 
 Scene one_wave_telephoto() {
   Scene s = testing::small_scene({Wave{0.5, {0.0, -0.1}, 6.0, 0.3}}, 48, 27);
-  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -15}, {0, 1, 0}, 1.0};
+  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -15}, {0, 1, 0}, 1.0, {}};
   const double e = std::atan(2.5 / 15);
   s.light = LightDesc{{0, std::sin(e), -std::cos(e)}, 4.0, Rgb(1.0), false};
   return s;

@@ -27,7 +27,7 @@ namespace {
 TEST(Staa, EqualsTheTemporalMethodWhereNothingAliases) {
   // The paper's method (no footprint term): with no aliasing wave, Sec. 3.3 exactly.
   Scene s = testing::small_scene({Wave{0.1, {0.0, -0.5}, 10.0, 0.3}}, 48, 27);
-  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -15}, {0, 1, 0}, 2.0};
+  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -15}, {0, 1, 0}, 2.0, {}};
   s.light = LightDesc{
       {0, std::sin(std::atan(2.5 / 15)), -std::cos(std::atan(2.5 / 15))}, 2.0, Rgb(1.0), false};
   SceneModel m(s);

@@ -2,13 +2,17 @@
 
 #include <cmath>
 
+#include "kernel/kernel_double.h"
+
 namespace sg {
 
 CameraModel::CameraModel(const CameraDesc& desc, int width, int height)
     : position_(desc.position), width_(width), height_(height) {
-  forward_ = normalize(desc.look_at - desc.position);
-  right_ = normalize(cross(forward_, normalize(desc.up)));
-  up_ = cross(right_, forward_);
+  // The basis of the kernel (kernel/camera.glsl), which builds a moving camera's too.
+  const kd::mat3 b = kd::camera_basis(desc.position, desc.look_at, normalize(desc.up));
+  forward_ = b[0];
+  right_ = b[1];
+  up_ = b[2];
   half_h_ = std::tan(radians(desc.vfov_deg) / 2);
   half_w_ = half_h_ * width / height;
 }

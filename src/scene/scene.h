@@ -1,12 +1,13 @@
-// A scene as the file format defines it (docs/scene-format.md, `sunglint-scene/1` and
-// `/2`): the water waves, the camera, the light, sky and sea radiances, and the
+// A scene as the file format defines it (docs/scene-format.md, `sunglint-scene/1`, `/2`
+// and `/3`): the water waves, the camera, the light, sky and sea radiances, and the
 // animation's timing. Values are stored as given (directions not yet normalised); the
 // models built from a scene (waves.h, camera.h, light.h) derive what rendering needs.
 //
 // Radiances are linear RGB triples (Rec. 709 primaries). Format /1 has grey radiances
 // only (three equal channels) and a constant sky; format /2 adds colour and a sky
-// gradient. Every method computes a pixel as weights of the four radiances (light,
-// zenith, horizon, sea; shading/radiance.h), so colour costs nothing in the methods.
+// gradient; format /3 a moving camera (keyframes of position and look-at). Every method computes a
+// pixel as weights of the four radiances (light, zenith, horizon, sea; shading/radiance.h), so
+// colour costs nothing in the methods.
 #pragma once
 
 #include <string>
@@ -26,11 +27,25 @@ struct Wave {
 enum class Geometry { flat, displaced };
 enum class FresnelMode { none, schlick };
 
+// A key of a moving camera (format /3): its position and look-at point at `time` (s, on
+// the scene's clock).
+struct CameraKey {
+  double time = 0;
+  vec3 position{0, 3, 0};
+  vec3 look_at{0, 0, -100};
+};
+
+// A fixed camera (position, look_at), or a moving one: `keyframes` (at least two, times
+// strictly increasing; format /3), between which position and look-at are interpolated
+// linearly (scene/camera_path.h). A moving camera's position and look_at hold its pose at
+// one time: the first key's as loaded, the shutter end's in a frame's model (model.h).
 struct CameraDesc {
   vec3 position{0, 3, 0};
   vec3 look_at{0, 0, -100};
   vec3 up{0, 1, 0};
   double vfov_deg = 40;
+  std::vector<CameraKey> keyframes;
+  bool moving() const { return !keyframes.empty(); }
 };
 
 // A linear RGB radiance; a grey one has three equal channels.
@@ -78,7 +93,8 @@ struct Scene {
 
   // True when every radiance has three equal channels (a grey image renders the scene).
   bool grey() const;
-  // The format the scene needs: 2 with colour or a gradient sky, else 1 (scene_to_json).
+  // The format the scene needs: 3 with camera keyframes, else 2 with colour or a gradient
+  // sky, else 1 (scene_to_json).
   int format_version() const;
 
   // Frame f is displayed at t_f = t0 + f / fps and integrates [t_f - shutter/fps, t_f].

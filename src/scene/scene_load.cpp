@@ -1,8 +1,10 @@
-// Loading `sunglint-scene/1` and `/2` files: parse, check every key against its rule and
-// its physical range (scene_limits.h), reject unknown and duplicate keys. Each rule lives in
-// one place below; docs/scene-format-notes.md lists them with their reasons. Format /2 adds
-// [r, g, b] radiances and the sky gradient (read_radiance, read_sky); a /1 file that uses
-// them is an error naming the key.
+// Loading `sunglint-scene/1`, `/2` and `/3` files: parse, check every key against its rule
+// and its physical range (scene_limits.h), reject unknown and duplicate keys. Each rule lives
+// in one place below; docs/scene-format-notes.md lists them with their reasons. Format /2
+// adds [r, g, b] radiances and the sky gradient (read_radiance, read_sky); format /3 camera
+// keyframes (read_keyframes: each segment between two keys is checked whole, since the
+// interpolated view can meet its look-at point or turn parallel to `up` between keys); a
+// file of an earlier format that uses them is an error naming the key.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -22,6 +24,7 @@ using json = nlohmann::json;
 
 constexpr const char* kFormat = "sunglint-scene/1";
 constexpr const char* kFormat2 = "sunglint-scene/2";
+constexpr const char* kFormat3 = "sunglint-scene/3";
 constexpr int kMaxImageSide = 16384;
 
 // A JSON object being read: remembers which keys were consumed so that the rest can be
@@ -220,26 +223,138 @@ SkyDesc read_sky(ObjectReader o, int version) {
   return sky;
 }
 
-CameraDesc read_camera(ObjectReader o) {
+// A camera position: within kMaxCameraDistance of the origin, above the water at rest.
+void check_position(const vec3& p, const std::string& path) {
+  if (!(norm(p) <= limits::kMaxCameraDistance)) {
+    ObjectReader::fail(path, "must be within " + num(limits::kMaxCameraDistance) +
+                                 " m of the origin (got |position| = " + num(norm(p)) + " m)");
+  }
+  if (!(p.y >= limits::kMinCameraHeight)) {
+    ObjectReader::fail(
+        path, "must be above the water at rest (y >= " + num(limits::kMinCameraHeight) + " m)");
+  }
+}
+
+void check_look_at(const vec3& a, const std::string& path) {
+  if (!(norm(a) <= limits::kMaxLookAtDistance)) {
+    ObjectReader::fail(path, "must be within " + num(limits::kMaxLookAtDistance) +
+                                 " m of the origin (got |look_at| = " + num(norm(a)) + " m)");
+  }
+}
+
+// The smallest value over s in [0, 1] of the quadratic q(s) = a s^2 + b s + c, and where.
+double quadratic_min(double a, double b, double c, double& at) {
+  at = 0;
+  double best = c;
+  if (a + b + c < best) {
+    best = a + b + c;
+    at = 1;
+  }
+  if (a > 0) {
+    const double s = -b / (2 * a);
+    if (s > 0 && s < 1 && a * s * s + b * s + c < best) {
+      best = a * s * s + b * s + c;
+      at = s;
+    }
+  }
+  return best;
+}
+
+// The view vector D(s) = D0 + s (D1 - D0) of the segment between two keys (s in [0, 1];
+// a single key has D1 = D0): where over s it comes closest to zero length and to `up`'s
+// direction, as the squared margins |D|^2 - eps^2 and |D x u|^2 - eps^2 |D|^2 (u the unit
+// up), each a quadratic in s. Negative: the rule fails there.
+struct ViewMargins {
+  double meet, meet_at, parallel, parallel_at;
+};
+ViewMargins view_margins(const vec3& d0, const vec3& d1, const vec3& u) {
+  constexpr double eps = 1e-6;
+  const vec3 e = d1 - d0;
+  ViewMargins m{};
+  m.meet = quadratic_min(dot(e, e), 2 * dot(d0, e), dot(d0, d0) - eps * eps, m.meet_at);
+  const vec3 c0 = cross(d0, u), ce = cross(e, u);
+  m.parallel =
+      quadratic_min(dot(ce, ce) - eps * eps * dot(e, e), 2 * (dot(c0, ce) - eps * eps * dot(d0, e)),
+                    dot(c0, c0) - eps * eps * dot(d0, d0), m.parallel_at);
+  return m;
+}
+
+// `camera.keyframes` (format /3): at least two keys, times finite and strictly increasing,
+// each position and look-at point as a fixed camera's; along every segment the position
+// stays apart from the look-at point and the view apart from `up` (checked over the whole
+// segment: linear interpolation can pass through either between two good keys).
+std::vector<CameraKey> read_keyframes(ObjectReader& o, const vec3& up) {
+  const std::string path = o.key_path("keyframes");
+  const json& keys = o.get("keyframes");
+  require(keys.is_array() && keys.size() >= 2, path,
+          "must be an array of at least 2 keyframes {time, position, look_at}");
+  const vec3 u = normalize(up);
+  std::vector<CameraKey> out;
+  for (size_t k = 0; k < keys.size(); ++k) {
+    const std::string kp = path + "[" + std::to_string(k) + "]";
+    ObjectReader r(keys[k], kp);
+    CameraKey key;
+    key.time = r.number("time");
+    require_in(key.time, -limits::kMaxTime, limits::kMaxTime, r.key_path("time"), "s");
+    if (k > 0 && !(key.time > out.back().time)) {
+      ObjectReader::fail(r.key_path("time"), "must be greater than the previous keyframe's (" +
+                                                 num(out.back().time) + " s), got " +
+                                                 num(key.time) + " s");
+    }
+    key.position = r.vector<3>("position");
+    check_position(key.position, r.key_path("position"));
+    key.look_at = r.vector<3>("look_at");
+    check_look_at(key.look_at, r.key_path("look_at"));
+    r.finish();
+    const vec3 d = key.look_at - key.position;
+    const ViewMargins at_key = view_margins(d, d, u);
+    require(at_key.meet > 0, r.key_path("look_at"), "must differ from " + r.key_path("position"));
+    require(at_key.parallel > 0, kp,
+            "the viewing direction is parallel to camera.up (the camera's basis is undefined)");
+    if (k > 0) {
+      const CameraKey& a = out.back();
+      const ViewMargins m = view_margins(a.look_at - a.position, d, u);
+      const std::string prev = path + "[" + std::to_string(k - 1) + "]";
+      auto when = [&](double s) { return num(a.time + s * (key.time - a.time)); };
+      require(m.meet > 0, prev,
+              "the camera's position meets its look_at point between this keyframe and the "
+              "next (at t = " +
+                  when(m.meet_at) + " s)");
+      require(m.parallel > 0, prev,
+              "the viewing direction turns parallel to camera.up between this keyframe and "
+              "the next (at t = " +
+                  when(m.parallel_at) + " s)");
+    }
+    out.push_back(key);
+  }
+  return out;
+}
+
+CameraDesc read_camera(ObjectReader o, int version) {
   CameraDesc c;
+  if (o.has("keyframes")) {
+    require(version >= 3, o.key_path("keyframes"),
+            std::string("needs \"format\": \"") + kFormat3 + "\"");
+    for (const char* k : {"position", "look_at"}) {
+      require(!o.has(k), o.key_path(k),
+              "not allowed with camera.keyframes (a camera is fixed or keyframed)");
+    }
+    c.up = o.vector<3>("up");
+    require_direction(c.up, o.key_path("up"));
+    c.keyframes = read_keyframes(o, c.up);
+    c.position = c.keyframes.front().position;
+    c.look_at = c.keyframes.front().look_at;
+    c.vfov_deg = o.number("vfov_deg");
+    require_in(c.vfov_deg, limits::kMinVfov, limits::kMaxVfov, o.key_path("vfov_deg"), "degrees");
+    o.finish();
+    return c;
+  }
   c.position = o.vector<3>("position");
   c.look_at = o.vector<3>("look_at");
   c.up = o.vector<3>("up");
   c.vfov_deg = o.number("vfov_deg");
-  if (!(norm(c.position) <= limits::kMaxCameraDistance)) {
-    ObjectReader::fail(o.key_path("position"),
-                       "must be within " + num(limits::kMaxCameraDistance) +
-                           " m of the origin (got |position| = " + num(norm(c.position)) + " m)");
-  }
-  if (!(c.position.y >= limits::kMinCameraHeight)) {
-    ObjectReader::fail(o.key_path("position"), "must be above the water at rest (y >= " +
-                                                   num(limits::kMinCameraHeight) + " m)");
-  }
-  if (!(norm(c.look_at) <= limits::kMaxLookAtDistance)) {
-    ObjectReader::fail(o.key_path("look_at"),
-                       "must be within " + num(limits::kMaxLookAtDistance) +
-                           " m of the origin (got |look_at| = " + num(norm(c.look_at)) + " m)");
-  }
+  check_position(c.position, o.key_path("position"));
+  check_look_at(c.look_at, o.key_path("look_at"));
   require(length(c.look_at - c.position) > 1e-6, o.key_path("look_at"),
           "must differ from camera.position");
   require_direction(c.up, o.key_path("up"));
@@ -464,10 +579,10 @@ Scene parse_scene(const std::string& text, const std::string& name) {
   try {
     ObjectReader top(j, "");
     const std::string format = top.string("format");
-    require(format == kFormat || format == kFormat2, "format",
-            std::string("must be \"") + kFormat + "\" or \"" + kFormat2 + "\" (got \"" + format +
-                "\")");
-    const int version = format == kFormat ? 1 : 2;
+    require(format == kFormat || format == kFormat2 || format == kFormat3, "format",
+            std::string("must be \"") + kFormat + "\", \"" + kFormat2 + "\" or \"" + kFormat3 +
+                "\" (got \"" + format + "\")");
+    const int version = format == kFormat ? 1 : format == kFormat2 ? 2 : 3;
     Scene s;
     s.name = top.has("name") ? top.string("name") : std::filesystem::path(name).stem().string();
     {
@@ -480,7 +595,7 @@ Scene parse_scene(const std::string& text, const std::string& name) {
               "must be an integer in [1, " + std::to_string(kMaxImageSide) + "]");
       img.finish();
     }
-    s.camera = read_camera(top.object("camera"));
+    s.camera = read_camera(top.object("camera"), version);
     s.light = read_light(top.object("light"), version);
     if (top.has("sky")) s.sky = read_sky(top.object("sky"), version);
     s.surface = read_surface(top.object("surface"), version);
@@ -502,6 +617,7 @@ bool Scene::grey() const {
 }
 
 int Scene::format_version() const {
+  if (camera.moving()) return 3;
   return grey() && !sky.gradient ? 1 : 2;
 }
 
@@ -524,15 +640,26 @@ std::string scene_to_json(const Scene& s) {
                      {"angular_frequency", w.angular_frequency},
                      {"phase", w.phase}});
   }
+  const int version = s.format_version();
+  json camera = {{"position", v3(s.camera.position)},
+                 {"look_at", v3(s.camera.look_at)},
+                 {"up", v3(s.camera.up)},
+                 {"vfov_deg", s.camera.vfov_deg}};
+  if (s.camera.moving()) {
+    // A moving camera: its keys (format /3); position and look_at are not written.
+    json keys = json::array();
+    for (const CameraKey& k : s.camera.keyframes) {
+      keys.push_back({{"time", k.time}, {"position", v3(k.position)}, {"look_at", v3(k.look_at)}});
+    }
+    camera = {{"up", v3(s.camera.up)}, {"vfov_deg", s.camera.vfov_deg}, {"keyframes", keys}};
+  }
   json j = {
-      {"format", s.format_version() == 1 ? kFormat : kFormat2},
+      {"format", version == 1   ? kFormat
+                 : version == 2 ? kFormat2
+                                : kFormat3},
       {"name", s.name},
       {"image", {{"width", s.width}, {"height", s.height}}},
-      {"camera",
-       {{"position", v3(s.camera.position)},
-        {"look_at", v3(s.camera.look_at)},
-        {"up", v3(s.camera.up)},
-        {"vfov_deg", s.camera.vfov_deg}}},
+      {"camera", camera},
       {"light",
        {{"direction", v3(s.light.direction)},
         {"angular_radius_deg", s.light.angular_radius_deg},

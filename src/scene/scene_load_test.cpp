@@ -29,7 +29,8 @@ const BadCase kBad[] = {
     {"missing_camera", "camera: missing (required)"},
     {"missing_t0", "animation.t0: missing (required)"},
     {"bad_format",
-     "format: must be \"sunglint-scene/1\" or \"sunglint-scene/2\" (got \"sunglint-scene/3\")"},
+     "format: must be \"sunglint-scene/1\", \"sunglint-scene/2\" or \"sunglint-scene/3\" (got "
+     "\"sunglint-scene/4\")"},
     {"unknown_top_key", "foo: unknown key"},
     {"unknown_camera_key", "camera.fov: unknown key"},
     {"width_string", "image.width: must be a number"},
@@ -130,6 +131,35 @@ const BadCase kBad[] = {
     {"v2_sky_exponent_infinite", "sky.exponent: number out of range at line 43, column 19"},
     {"v2_sky_horizon_negative", "sky.horizon[2]: must be >= 0"},
     {"v2_sky_unknown_key", "sky.color: unknown key"},
+    // Format /3: camera keyframes.
+    {"v2_keyframes", "camera.keyframes: needs \"format\": \"sunglint-scene/3\""},
+    {"v3_keyframes_and_position",
+     "camera.position: not allowed with camera.keyframes (a camera is fixed or keyframed)"},
+    {"v3_keyframes_one",
+     "camera.keyframes: must be an array of at least 2 keyframes {time, position, look_at}"},
+    {"v3_keyframes_not_array",
+     "camera.keyframes: must be an array of at least 2 keyframes {time, position, look_at}"},
+    {"v3_keyframe_unknown_key", "camera.keyframes[1].roll: unknown key"},
+    {"v3_keyframe_time_missing", "camera.keyframes[0].time: missing (required)"},
+    {"v3_keyframe_time_infinite",
+     "camera.keyframes[1].time: number out of range at line 30, column 17"},
+    {"v3_keyframe_time_equal",
+     "camera.keyframes[2].time: must be greater than the previous keyframe's (2 s), got 2 s"},
+    {"v3_keyframe_time_decreasing",
+     "camera.keyframes[2].time: must be greater than the previous keyframe's (2 s), got 1 s"},
+    {"v3_keyframe_below_water",
+     "camera.keyframes[1].position: must be above the water at rest (y >= 0.001 m)"},
+    {"v3_keyframe_look_at_position",
+     "camera.keyframes[1].look_at: must differ from camera.keyframes[1].position"},
+    {"v3_keyframe_up_parallel",
+     "camera.keyframes[1]: the viewing direction is parallel to camera.up (the camera's basis is "
+     "undefined)"},
+    {"v3_segment_meets_look_at",
+     "camera.keyframes[0]: the camera's position meets its look_at point between this keyframe "
+     "and the next (at t = 1 s)"},
+    {"v3_segment_up_parallel",
+     "camera.keyframes[0]: the viewing direction turns parallel to camera.up between this "
+     "keyframe and the next (at t = 1 s)"},
 };
 
 class BadScene : public ::testing::TestWithParam<BadCase> {};

@@ -6,6 +6,7 @@
 
 #include "base/error.h"
 #include "kernel/cpu/wave_sums.h"
+#include "scene/camera_path.h"
 
 namespace sg {
 namespace {
@@ -31,6 +32,46 @@ void fill_light(const LightModel& l, Light& out) {
   out.visible = l.visible;
 }
 
+// A moving camera's keys over the shutter [ft.start, ft.end] (kernel/interface.glsl,
+// CameraKeys): its poses at the shutter's ends and the scene's keys in between, relative to
+// the display time and to the camera's (x, z) at the end (`origin`). count 0 when the pose
+// is the same at every key: the camera stands still over this shutter.
+template <class Keys>
+void fill_camera_keys(const CameraDesc& c, const FrameTime& ft, const vec3& origin, Keys& out) {
+  using R = decltype(out.up.x);
+  using V3 = decltype(out.up);
+  auto v3 = [](const vec3& v) { return V3(R(v.x), R(v.y), R(v.z)); };
+  out = Keys{};
+  out.up = v3(normalize(c.up));
+  if (!c.moving() || !(ft.duration() > 0)) return;
+  std::vector<CameraKey> keys;
+  auto add = [&](double t) {
+    const CameraPoseAt p = camera_pose(c, t);
+    keys.push_back(CameraKey{t, p.position, p.look_at});
+  };
+  add(ft.start);
+  for (const CameraKey& k : c.keyframes) {
+    if (k.time > ft.start && k.time < ft.end) keys.push_back(k);
+  }
+  add(ft.end);
+  bool still = true;
+  for (const CameraKey& k : keys)
+    still = still && k.position == keys[0].position && k.look_at == keys[0].look_at;
+  if (still) return;
+  if (keys.size() > static_cast<size_t>(kd::kMaxCameraKeys)) {
+    throw Error("camera.keyframes: frame " + std::to_string(ft.frame) + "'s shutter holds " +
+                std::to_string(keys.size() - 2) + " keyframes, more than the " +
+                std::to_string(kd::kMaxCameraKeys - 2) + " a frame can take");
+  }
+  const vec3 shift(origin.x, 0, origin.z);
+  out.count = static_cast<int>(keys.size());
+  for (size_t q = 0; q < keys.size(); ++q) {
+    out.time[q] = R(keys[q].time - ft.end);
+    out.position[q] = v3(keys[q].position - shift);
+    out.look_at[q] = v3(keys[q].look_at - shift);
+  }
+}
+
 template <class In>
 void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
            double intersect_tolerance, In& out) {
@@ -44,7 +85,12 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
   }
   auto v3 = [](const vec3& v) { return V3(R(v.x), R(v.y), R(v.z)); };
   Frame& f = out.frame;
-  const CameraModel& c = m.camera;
+  // The camera at the display time; a moving one's from its keys (the frame's model holds
+  // it already, frame_model in scene/camera_path.h; a model of the whole scene does not).
+  const CameraModel c = m.scene.camera.moving()
+                            ? CameraModel(camera_at(m.scene.camera, ft.end), m.width(), m.height())
+                            : m.camera;
+  fill_camera_keys(m.scene.camera, ft, c.position(), f.camera_keys);
   f.camera.position = V3(0, R(c.position().y), 0);
   f.camera.forward = v3(c.forward());
   f.camera.right = v3(c.right());
@@ -175,6 +221,13 @@ kd::Footprint kernel_footprint(const SceneModel& m, const PixelFootprint& fp) {
 kd::Frame widen(const kf::Frame& f) {
   kd::Frame d;
   auto v3 = [](const kf::vec3& v) { return kd::vec3(v); };
+  d.camera_keys.count = f.camera_keys.count;
+  d.camera_keys.up = v3(f.camera_keys.up);
+  for (int k = 0; k < kd::kMaxCameraKeys; ++k) {
+    d.camera_keys.time[k] = f.camera_keys.time[k];
+    d.camera_keys.position[k] = v3(f.camera_keys.position[k]);
+    d.camera_keys.look_at[k] = v3(f.camera_keys.look_at[k]);
+  }
   d.camera.position = v3(f.camera.position);
   d.camera.forward = v3(f.camera.forward);
   d.camera.right = v3(f.camera.right);

@@ -94,7 +94,7 @@ TEST(SpecularAA, FullKernelIsTheVarianceOfTheHalfVectorUnderTheGaussianPixelFilt
   Scene s;
   s.width = 320;
   s.height = 180;
-  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -60}, {0, 1, 0}, 40};
+  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -60}, {0, 1, 0}, 40, {}};
   s.light = LightDesc{{0, 0.207912, -0.978148}, 0.27, Rgb(1.0), false};
   s.surface.waves = {Wave{0.05, {0.3, -1.2}, 3.4, 0.2}, Wave{0.02, {-1.1, -0.7}, 2.1, 1.0}};
   const SceneModel m(s);

@@ -21,7 +21,7 @@ inline Scene small_scene(std::vector<Wave> waves, int width = 64, int height = 3
   s.name = "test";
   s.width = width;
   s.height = height;
-  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -60}, {0, 1, 0}, 40};
+  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -60}, {0, 1, 0}, 40, {}};
   s.light = LightDesc{{0, 0.207912, -0.978148}, 0.27, Rgb(1.0), false};
   s.sky = SkyDesc::constant(Rgb(0));
   s.surface.waves = std::move(waves);

@@ -234,6 +234,12 @@ WebPage write_web_page(const WebPageOptions& o) {
   for (const WebScene& w : o.scenes) {
     const std::string& path = w.path;
     Scene s = load_scene(path);
+    // The page's kernel takes a fixed camera (kernel/glsl_es_prelude.glsl: SG_FIXED_CAMERA).
+    if (s.camera.moving()) {
+      throw Error(path +
+                  ": camera.keyframes: the page renders a fixed camera (a moving one: "
+                  "sunglint render)");
+    }
     set_image_size(s, w.width > 0 ? w.width : s.width, w.height > 0 ? w.height : s.height);
     if (!names.insert(s.name).second) {
       throw Error(path + ": a second scene named '" + s.name +

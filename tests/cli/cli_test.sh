@@ -268,6 +268,25 @@ for f in x.mp4 x.avi x.exr x.png; do expect_no_file "bad video/display flags" "$
 expect_fail "format /1 with colour" "light.radiance: an [r, g, b] radiance needs" \
   "$bin" render "$src/tests/scenes/bad/v1_rgb_light.json" -m point --out "$work/x.exr"
 expect_ok "info colour" "$bin" info "$colour"
+# A moving camera (format /3): info reports each segment's speed and turn rate, in words
+# and in JSON; the pan renders.
+pan=$src/tests/scenes/pan.json
+out=$("$bin" info "$pan" 2>&1)
+if grep -q "^camera       0 to 2 s: speed 1.5 m/s, turn rate 23.15 deg/s" <<<"$out"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL info of a moving camera: $out"
+  fails=$((fails + 1))
+fi
+out=$("$bin" info "$pan" --json 2>&1)
+if grep -q '"speed_m_per_s": 1.5' <<<"$out" && grep -q '"turn_rate_deg_per_s": 23.15' <<<"$out"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL info json of a moving camera: $out"
+  fails=$((fails + 1))
+fi
+expect_ok "render a moving camera" "$bin" render "$pan" -m supersample --samples 2x2x2 --width 32 -q \
+  --out "$work/pan.exr"
 
 # The engines: --engine on render, bench and compare (per variant or for the whole study).
 expect_rc "engine unknown" 2 "--engine: unknown engine 'vulkan' (choose cpu or gl)" \

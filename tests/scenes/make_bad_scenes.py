@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes bad/*.json: one scene per validation rule of sunglint-scene/1 and /2, each derived
-from scenes/simple.json (a /1 file) by one change (the /2 cases first set the format). The expected messages live in
+"""Writes bad/*.json: one scene per validation rule of sunglint-scene/1, /2 and /3, each derived
+from scenes/simple.json (a /1 file) by one change (the /2 and /3 cases first set the format). The expected messages live in
 src/scene/scene_load_test.cpp. Run from this folder: python3 make_bad_scenes.py"""
 import copy, json, os
 
@@ -14,7 +14,7 @@ def case(name, edit):
 
 case("missing_camera", lambda s: s.pop("camera"))
 case("missing_t0", lambda s: s["animation"].pop("t0"))
-case("bad_format", lambda s: s.update(format="sunglint-scene/3"))
+case("bad_format", lambda s: s.update(format="sunglint-scene/4"))
 case("unknown_top_key", lambda s: s.update(foo=1))
 case("unknown_camera_key", lambda s: s["camera"].update(fov=40))
 case("width_string", lambda s: s["image"].update(width="640"))
@@ -101,6 +101,39 @@ case("v2_sky_horizon_negative",
      v2(lambda s: s.update(sky={"zenith": 0.1, "horizon": [0.4, 0.3, -1]})))
 case("v2_sky_unknown_key", v2(lambda s: s.update(sky={"zenith": 0.1, "horizon": 0.4, "color": 1})))
 
+# Format /3: camera keyframes (a pan from simple's camera).
+def v3(keys, **camera):
+    def f(s):
+        s["format"] = "sunglint-scene/3"
+        c = s["camera"]
+        c.pop("position")
+        c.pop("look_at")
+        c["keyframes"] = [{"time": t, "position": p, "look_at": a} for t, p, a in keys]
+        c.update(camera)
+    return f
+
+pan = [(0.0, [0, 2.5, 0], [-10, 0, -60]), (2.0, [0, 2.5, -4], [10, 0, -60])]
+case("v2_keyframes", v2(lambda s: s["camera"].update(keyframes=[])))
+case("v3_keyframes_and_position",
+     v3(pan, position=[0, 2.5, 0]))
+case("v3_keyframes_one", v3(pan[:1]))
+case("v3_keyframes_not_array", v3(pan, keyframes={"time": 0}))
+case("v3_keyframe_unknown_key",
+     lambda s: (v3(pan)(s), s["camera"]["keyframes"][1].update(roll=3)))
+case("v3_keyframe_time_equal", v3(pan + [(2.0, [0, 2.5, -5], [0, 0, -60])]))
+case("v3_keyframe_time_decreasing", v3(pan + [(1.0, [0, 2.5, -5], [0, 0, -60])]))
+case("v3_keyframe_time_missing", lambda s: (v3(pan)(s), s["camera"]["keyframes"][0].pop("time")))
+case("v3_keyframe_below_water", v3([pan[0], (2.0, [0, -1, -4], [10, 0, -60])]))
+case("v3_keyframe_look_at_position", v3([pan[0], (2.0, [0, 2.5, -4], [0, 2.5, -4])]))
+case("v3_keyframe_up_parallel", v3([pan[0], (2.0, [0, 2.5, -4], [0, -10, -4])]))
+# Good keys, but the interpolated camera meets its look-at point (the view vector
+# (0, 0, -10) turns to (0, 0, 10) through zero at t = 1) or looks along `up` (the view
+# (5, -3, 0) turns to (-5, -3, 0) through (0, -3, 0) at t = 1) between them.
+case("v3_segment_meets_look_at",
+     v3([(0.0, [0, 3, 0], [0, 3, -10]), (2.0, [0, 3, -10], [0, 3, 0])]))
+case("v3_segment_up_parallel",
+     v3([(0.0, [0, 3, 0], [5, 0, 0]), (2.0, [0, 3, 0], [-5, 0, 0])]))
+
 os.makedirs("bad", exist_ok=True)
 for name, s in cases.items():
     with open(f"bad/{name}.json", "w") as f:
@@ -123,3 +156,7 @@ gradient["format"] = "sunglint-scene/2"
 gradient["sky"] = {"zenith": [0.05, 0.1, 0.3], "horizon": 0.4, "exponent": 12345}
 with open("bad/v2_sky_exponent_infinite.json", "w") as f:
     f.write(json.dumps(gradient, indent=1).replace("12345", "1e999", 1))
+moving = copy.deepcopy(base)
+v3([(0.0, [0, 2.5, 0], [-10, 0, -60]), (12345.0, [0, 2.5, -4], [10, 0, -60])])(moving)
+with open("bad/v3_keyframe_time_infinite.json", "w") as f:
+    f.write(json.dumps(moving, indent=1).replace("12345.0", "1e999", 1))

@@ -80,6 +80,7 @@ const SunglintHost = (() => {
       'frame.camera.position': [0, cam.position[1], 0], 'frame.camera.forward': cam.forward,
       'frame.camera.right': cam.right, 'frame.camera.up': cam.up, 'frame.camera.half_w': cam.halfW,
       'frame.camera.half_h': cam.halfH, 'frame.camera.width': width, 'frame.camera.height': height,
+      'frame.camera_keys.count': 0, 'frame.camera_keys.up': cam.up, // a fixed camera: no keys
       'frame.light.L': light.L, 'frame.light.e1': light.e1, 'frame.light.e2': light.e2,
       'frame.light.radius': light.radius, 'frame.light.cos_radius': Math.cos(light.radius),
       'frame.light.sin_radius': Math.sin(light.radius), 'frame.light.tan_radius': Math.tan(light.radius),
@@ -91,6 +92,11 @@ const SunglintHost = (() => {
       'frame.slope_bound': slopeBound, 'frame.intersect_tolerance': variant.intersect_tolerance,
       'frame.duration': duration, 'frame.segments': K, 'frame.frame': frame, 'frame.seed': variant.seed,
     };
+    for (let q = 0; q < 8; ++q) { // kMaxCameraKeys (kernel/interface.glsl), unused with count 0
+      u[`frame.camera_keys.time[${q}]`] = 0;
+      u[`frame.camera_keys.position[${q}]`] = [0, 0, 0];
+      u[`frame.camera_keys.look_at[${q}]`] = [0, 0, 0];
+    }
     // The waves sorted by |k| (ties in file order), then the sums from each position on.
     const k = waves.map((w) => Math.hypot(w.wave_vector[0], w.wave_vector[1]));
     const order = waves.map((_, i) => i).sort((p, q) => k[p] - k[q] || p - q);

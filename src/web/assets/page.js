@@ -255,6 +255,9 @@
       if (!file) return;
       try {
         const s = SunglintScene.parse(new Uint8Array(await file.arrayBuffer()), file.name);
+        if (s.camera.keyframes) {
+          throw new Error(file.name + ': camera.keyframes: the page renders a fixed camera (a moving one: sunglint render)');
+        }
         state.scenes.push(s);
         $('scene').add(new Option(s.name + ' (dropped)', String(state.scenes.length - 1)));
         selectScene(state.scenes.length - 1);

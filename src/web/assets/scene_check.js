@@ -20,7 +20,8 @@ const SunglintScene = (() => {
     minVfov: 1e-3, maxVfov: 179, minDirectionLength: 1e-12, maxDirectionLength: 1e12,
     minLightRadius: 1e-3, maxLightRadius: 89, maxRadiance: 1e10, maxSceneFileBytes: 64 * 1024 * 1024,
   };
-  const kFormat = 'sunglint-scene/1', kFormat2 = 'sunglint-scene/2', kMaxImageSide = 16384;
+  const kFormat = 'sunglint-scene/1', kFormat2 = 'sunglint-scene/2', kFormat3 = 'sunglint-scene/3';
+  const kMaxImageSide = 16384;
   const kTwoPi = 6.283185307179586;
 
   class SceneError extends Error {}
@@ -641,20 +642,98 @@ const SunglintScene = (() => {
     o.finish();
     return sky;
   }
-  function readCamera(o) {
+  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  function checkPosition(p, path) {
+    if (!(hypot3(p) <= limits.maxCameraDistance)) {
+      fail(path, 'must be within ' + num(limits.maxCameraDistance) +
+        ' m of the origin (got |position| = ' + num(hypot3(p)) + ' m)');
+    }
+    if (!(p[1] >= limits.minCameraHeight)) {
+      fail(path, 'must be above the water at rest (y >= ' + num(limits.minCameraHeight) + ' m)');
+    }
+  }
+  function checkLookAt(a, path) {
+    if (!(hypot3(a) <= limits.maxLookAtDistance)) {
+      fail(path, 'must be within ' + num(limits.maxLookAtDistance) +
+        ' m of the origin (got |look_at| = ' + num(hypot3(a)) + ' m)');
+    }
+  }
+  // scene_load.cpp's quadratic_min and view_margins.
+  function quadraticMin(a, b, c) {
+    let at = 0, best = c;
+    if (a + b + c < best) { best = a + b + c; at = 1; }
+    if (a > 0) {
+      const s = -b / (2 * a);
+      if (s > 0 && s < 1 && a * s * s + b * s + c < best) { best = a * s * s + b * s + c; at = s; }
+    }
+    return [best, at];
+  }
+  function viewMargins(d0, d1, u) {
+    const eps = 1e-6, e = sub(d1, d0);
+    const [meet, meetAt] = quadraticMin(dot(e, e), 2 * dot(d0, e), dot(d0, d0) - eps * eps);
+    const c0 = cross(d0, u), ce = cross(e, u);
+    const [parallel, parallelAt] = quadraticMin(dot(ce, ce) - eps * eps * dot(e, e),
+      2 * (dot(c0, ce) - eps * eps * dot(d0, e)), dot(c0, c0) - eps * eps * dot(d0, d0));
+    return { meet, meetAt, parallel, parallelAt };
+  }
+  function readKeyframes(o, up) {
+    const path = o.keyPath('keyframes');
+    const keys = o.get('keyframes');
+    require(Array.isArray(keys) && keys.length >= 2, path,
+      'must be an array of at least 2 keyframes {time, position, look_at}');
+    const u = normalize(up);
+    const out = [];
+    for (let k = 0; k < keys.length; k++) {
+      const kp = path + '[' + k + ']';
+      const r = new ObjectReader(keys[k], kp);
+      const key = { time: r.number('time') };
+      requireIn(key.time, -limits.maxTime, limits.maxTime, r.keyPath('time'), 's');
+      if (k > 0 && !(key.time > out[k - 1].time)) {
+        fail(r.keyPath('time'), "must be greater than the previous keyframe's (" + num(out[k - 1].time) +
+          ' s), got ' + num(key.time) + ' s');
+      }
+      key.position = r.vector('position', 3);
+      checkPosition(key.position, r.keyPath('position'));
+      key.look_at = r.vector('look_at', 3);
+      checkLookAt(key.look_at, r.keyPath('look_at'));
+      r.finish();
+      const d = sub(key.look_at, key.position);
+      const atKey = viewMargins(d, d, u);
+      require(atKey.meet > 0, r.keyPath('look_at'), 'must differ from ' + r.keyPath('position'));
+      require(atKey.parallel > 0, kp, "the viewing direction is parallel to camera.up (the camera's basis is undefined)");
+      if (k > 0) {
+        const a = out[k - 1];
+        const m = viewMargins(sub(a.look_at, a.position), d, u);
+        const prev = path + '[' + (k - 1) + ']';
+        const when = (s) => num(a.time + s * (key.time - a.time));
+        require(m.meet > 0, prev, "the camera's position meets its look_at point between this keyframe and the next (at t = " +
+          when(m.meetAt) + ' s)');
+        require(m.parallel > 0, prev, 'the viewing direction turns parallel to camera.up between this keyframe and the next (at t = ' +
+          when(m.parallelAt) + ' s)');
+      }
+      out.push(key);
+    }
+    return out;
+  }
+  function readCamera(o, version) {
+    if (o.has('keyframes')) {
+      require(version >= 3, o.keyPath('keyframes'), 'needs "format": "' + kFormat3 + '"');
+      for (const k of ['position', 'look_at']) {
+        require(!o.has(k), o.keyPath(k), 'not allowed with camera.keyframes (a camera is fixed or keyframed)');
+      }
+      const up = o.vector('up', 3);
+      requireDirection(up, o.keyPath('up'));
+      const keyframes = readKeyframes(o, up);
+      const c = { position: keyframes[0].position, look_at: keyframes[0].look_at, up, keyframes };
+      c.vfov_deg = o.number('vfov_deg');
+      requireIn(c.vfov_deg, limits.minVfov, limits.maxVfov, o.keyPath('vfov_deg'), 'degrees');
+      o.finish();
+      return c;
+    }
     const c = { position: o.vector('position', 3), look_at: o.vector('look_at', 3), up: o.vector('up', 3) };
     c.vfov_deg = o.number('vfov_deg');
-    if (!(hypot3(c.position) <= limits.maxCameraDistance)) {
-      fail(o.keyPath('position'), 'must be within ' + num(limits.maxCameraDistance) +
-        ' m of the origin (got |position| = ' + num(hypot3(c.position)) + ' m)');
-    }
-    if (!(c.position[1] >= limits.minCameraHeight)) {
-      fail(o.keyPath('position'), 'must be above the water at rest (y >= ' + num(limits.minCameraHeight) + ' m)');
-    }
-    if (!(hypot3(c.look_at) <= limits.maxLookAtDistance)) {
-      fail(o.keyPath('look_at'), 'must be within ' + num(limits.maxLookAtDistance) +
-        ' m of the origin (got |look_at| = ' + num(hypot3(c.look_at)) + ' m)');
-    }
+    checkPosition(c.position, o.keyPath('position'));
+    checkLookAt(c.look_at, o.keyPath('look_at'));
     require(len(sub(c.look_at, c.position)) > 1e-6, o.keyPath('look_at'), 'must differ from camera.position');
     requireDirection(c.up, o.keyPath('up'));
     require(len(cross(normalize(sub(c.look_at, c.position)), normalize(c.up))) > 1e-6, o.keyPath('up'),
@@ -769,9 +848,9 @@ const SunglintScene = (() => {
     try {
       const top = new ObjectReader(j, '');
       const format = top.string('format');
-      require(format === kFormat || format === kFormat2, 'format',
-        'must be "' + kFormat + '" or "' + kFormat2 + '" (got "' + format + '")');
-      const version = format === kFormat ? 1 : 2;
+      require(format === kFormat || format === kFormat2 || format === kFormat3, 'format',
+        'must be "' + kFormat + '", "' + kFormat2 + '" or "' + kFormat3 + '" (got "' + format + '")');
+      const version = format === kFormat ? 1 : format === kFormat2 ? 2 : 3;
       const s = {};
       s.name = top.has('name') ? top.string('name') : stem(name);
       {
@@ -782,7 +861,7 @@ const SunglintScene = (() => {
         require(s.height >= 1 && s.height <= kMaxImageSide, 'image.height', 'must be an integer in [1, ' + kMaxImageSide + ']');
         img.finish();
       }
-      s.camera = readCamera(top.object('camera'));
+      s.camera = readCamera(top.object('camera'), version);
       s.light = readLight(top.object('light'), version);
       s.sky = top.has('sky') ? readSky(top.object('sky'), version)
         : { zenith: [0, 0, 0], horizon: [0, 0, 0], exponent: 0.5, gradient: false };
