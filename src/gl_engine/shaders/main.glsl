@@ -4,9 +4,22 @@
 // (light, sky zenith, sky horizon, sea) in an RGBA32F image, row 0 at the top. The frame's
 // data are uniforms of the kernel's own structs (kernel/interface.glsl), the waves a buffer
 // texture, the tables textures read with texelFetch.
+//
+// The reference runs in passes (gl_engine/gl_engine.cpp): pass 0 runs the pilot into
+// busy_image and clears the weights; each later pass adds the samples [ref_range.x,
+// ref_range.y) of every pixel, divided by the pixel's sample count, to the weights. A pass
+// of a few samples keeps each invocation's loop iterations far below llvmpipe's limit of
+// 65535 per invocation, past which it ends every loop (docs/reference-renderer.md).
 layout(local_size_x = 8, local_size_y = 8) in;
 
+#if defined(SG_METHOD_REFERENCE)
+layout(rgba32f, binding = 0) uniform image2D weights_out;
+layout(rgba32f, binding = 5) uniform image2D busy_image;
+uniform int ref_pass;
+uniform ivec2 ref_range;
+#else
 layout(rgba32f, binding = 0) uniform writeonly image2D weights_out;
+#endif
 layout(binding = 1) uniform samplerBuffer waves;
 layout(binding = 2) uniform sampler2D table_f;
 layout(binding = 3) uniform sampler2DArray table_s;
@@ -35,7 +48,17 @@ void main() {
 #elif defined(SG_METHOD_STRATIFIED)
   w = stratified_pixel(waves, frame, counts, p.x, p.y);
 #elif defined(SG_METHOD_REFERENCE)
-  w = reference_pixel(waves, frame, ref_params, p.x, p.y).weights;
+  if (ref_pass == 0) {
+    bool busy =
+        !ref_params.adaptive || reference_pixel_busy(waves, frame, ref_params.margin, p.x, p.y);
+    imageStore(busy_image, p, vec4(busy ? 1.0 : 0.0));
+  } else {
+    bool busy = imageLoad(busy_image, p).x != 0.0;
+    vec4 sum =
+        reference_samples(waves, frame, ref_params, busy, p.x, p.y, ref_range.x, ref_range.y);
+    int count = ref_params.batches * reference_batch_samples(ref_params, busy);
+    w = imageLoad(weights_out, p) + sum / real(count);
+  }
 #elif defined(SG_METHOD_STAA_TEMPORAL)
   w = staa_temporal_pixel(waves, frame, p.x, p.y);
 #elif defined(SG_METHOD_STAA)
