@@ -34,10 +34,10 @@ int not_power_of_two(int n) {
 
 }  // namespace
 
-int reference_pass_samples(int waves, int segments, bool displaced) {
+int pass_samples(int waves, int segments, bool displaced) {
   const long per_sample = displaced ? 48L * (waves + 1) + 300
                                     : long(waves + 1) * (segments + 2) + 300L * segments + 100;
-  return int(std::clamp<long>(kReferencePassIterations / per_sample, 1, 1 << 20));
+  return int(std::clamp<long>(kPassIterations / per_sample, 1, 1 << 20));
 }
 
 const char* gl_methods() {
@@ -152,13 +152,16 @@ void GlEngine::upload(const FrameContext& ctx) {
   UniformWriter u(program_);
   u.set("image_size", kf::ivec2(w, h));
   set_uniforms(u, "frame", inputs_->frame);
-  if (v_.entry == KernelEntry::stratified) set_uniforms(u, "counts", v_.counts);
+  if (v_.entry == KernelEntry::stratified) {
+    set_uniforms(u, "counts", v_.counts);
+    u.set("pass_range", kf::ivec2(0, 0));
+    pass_samples_ = pass_samples(inputs_->frame.wave_count, 0, inputs_->frame.displaced);
+  }
   if (v_.entry == KernelEntry::reference) {
     set_uniforms(u, "ref_params", v_.reference);
     u.set("ref_pass", 0);
-    u.set("ref_range", kf::ivec2(0, 0));
-    pass_samples_ =
-        reference_pass_samples(inputs_->frame.wave_count, segments, inputs_->frame.displaced);
+    u.set("pass_range", kf::ivec2(0, 0));
+    pass_samples_ = pass_samples(inputs_->frame.wave_count, segments, inputs_->frame.displaced);
   }
   if (v_.entry == KernelEntry::staa) {
     set_uniforms(u, "params", v_.params);
@@ -168,12 +171,12 @@ void GlEngine::upload(const FrameContext& ctx) {
 }
 
 void GlEngine::bind() {
-  if (v_.entry == KernelEntry::reference) {
+  if (v_.entry == KernelEntry::reference || v_.entry == KernelEntry::stratified) {
     weights_.bind_image(0, GL_READ_WRITE);
-    busy_.bind_image(5, GL_READ_WRITE);
   } else {
     weights_.bind_image(0, GL_WRITE_ONLY);
   }
+  if (v_.entry == KernelEntry::reference) busy_.bind_image(5, GL_READ_WRITE);
   waves_.bind(1);
   if (v_.entry == KernelEntry::staa) {
     table_f_.bind_texture(2);
@@ -184,20 +187,26 @@ void GlEngine::bind() {
 
 void GlEngine::run() {
   bind();
-  if (v_.entry != KernelEntry::reference) {
+  if (v_.entry != KernelEntry::reference && v_.entry != KernelEntry::stratified) {
     gl::dispatch_2d(program_, width_, height_);
     return;
   }
-  // The pilot (and the weights cleared), then the samples in passes of pass_samples_ per
-  // pixel, each pass adding to the weights (shaders/main.glsl).
-  const kf::ReferenceParams& n = v_.reference;
-  const int total = n.batches * std::max(n.sx * n.sy, n.quiet_sx * n.quiet_sy) * n.nt;
-  program_.set("ref_pass", 0);
-  gl::dispatch_2d(program_, width_, height_);
-  program_.set("ref_pass", 1);
+  // The samples in passes of pass_samples_ per pixel, each adding to the weights
+  // (shaders/main.glsl); the reference's first pass runs the pilot (and clears the weights).
+  int total = 0;
+  if (v_.entry == KernelEntry::reference) {
+    const kf::ReferenceParams& n = v_.reference;
+    total = n.batches * std::max(n.sx * n.sy, n.quiet_sx * n.quiet_sy) * n.nt;
+    program_.set("ref_pass", 0);
+    gl::dispatch_2d(program_, width_, height_);
+    program_.set("ref_pass", 1);
+  } else {
+    const kf::SampleCounts& n = v_.counts;
+    total = n.sx * n.sy * (n.time_at_frame ? 1 : n.nt);
+  }
   for (int begin = 0; begin < total; begin += pass_samples_) {
     gl::barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    program_.set("ref_range", glm::ivec2(begin, std::min(total, begin + pass_samples_)));
+    program_.set("pass_range", glm::ivec2(begin, std::min(total, begin + pass_samples_)));
     gl::dispatch_2d(program_, width_, height_);
   }
 }

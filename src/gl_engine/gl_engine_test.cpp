@@ -64,8 +64,8 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     gl_engine::set_uniforms(probe, "frame", in.frame);
     gl_engine::set_uniforms(probe, "counts", v.counts);
     gl_engine::set_uniforms(probe, "ref_params", v.reference);
-    probe.set("ref_pass", 0);  // the reference's passes (GlEngine::run)
-    probe.set("ref_range", kf::ivec2(0, 0));
+    probe.set("ref_pass", 0);  // the sampling methods' passes (GlEngine::run)
+    probe.set("pass_range", kf::ivec2(0, 0));
     gl_engine::set_uniforms(probe, "params", v.params);
     gl_engine::set_uniforms(probe, "tinfo", kf::PathTableInfo{});
     gl_engine::set_uniforms(probe, "finfo", kf::KernelFitInfo{});
