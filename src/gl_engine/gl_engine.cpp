@@ -34,6 +34,12 @@ int not_power_of_two(int n) {
 
 }  // namespace
 
+int pass_samples(int waves, int segments, bool displaced) {
+  const long per_sample = displaced ? 48L * (waves + 1) + 300
+                                    : long(waves + 1) * (segments + 2) + 300L * segments + 100;
+  return int(std::clamp<long>(kPassIterations / per_sample, 1, 1 << 20));
+}
+
 const char* gl_methods() {
   return "point, supersample, reference, staa-temporal, staa";
 }
@@ -126,6 +132,8 @@ void GlEngine::upload(const FrameContext& ctx) {
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);
+    if (v_.entry == KernelEntry::reference)
+      busy_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);
     width_ = w;
     height_ = h;
   }
@@ -144,8 +152,17 @@ void GlEngine::upload(const FrameContext& ctx) {
   UniformWriter u(program_);
   u.set("image_size", kf::ivec2(w, h));
   set_uniforms(u, "frame", inputs_->frame);
-  if (v_.entry == KernelEntry::stratified) set_uniforms(u, "counts", v_.counts);
-  if (v_.entry == KernelEntry::reference) set_uniforms(u, "ref_params", v_.reference);
+  if (v_.entry == KernelEntry::stratified) {
+    set_uniforms(u, "counts", v_.counts);
+    u.set("pass_range", kf::ivec2(0, 0));
+    pass_samples_ = pass_samples(inputs_->frame.wave_count, 0, inputs_->frame.displaced);
+  }
+  if (v_.entry == KernelEntry::reference) {
+    set_uniforms(u, "ref_params", v_.reference);
+    u.set("ref_pass", 0);
+    u.set("pass_range", kf::ivec2(0, 0));
+    pass_samples_ = pass_samples(inputs_->frame.wave_count, segments, inputs_->frame.displaced);
+  }
   if (v_.entry == KernelEntry::staa) {
     set_uniforms(u, "params", v_.params);
     set_uniforms(u, "tinfo", tinfo_);
@@ -154,7 +171,12 @@ void GlEngine::upload(const FrameContext& ctx) {
 }
 
 void GlEngine::bind() {
-  weights_.bind_image(0, GL_WRITE_ONLY);
+  if (v_.entry == KernelEntry::reference || v_.entry == KernelEntry::stratified) {
+    weights_.bind_image(0, GL_READ_WRITE);
+  } else {
+    weights_.bind_image(0, GL_WRITE_ONLY);
+  }
+  if (v_.entry == KernelEntry::reference) busy_.bind_image(5, GL_READ_WRITE);
   waves_.bind(1);
   if (v_.entry == KernelEntry::staa) {
     table_f_.bind_texture(2);
@@ -165,7 +187,28 @@ void GlEngine::bind() {
 
 void GlEngine::run() {
   bind();
-  gl::dispatch_2d(program_, width_, height_);
+  if (v_.entry != KernelEntry::reference && v_.entry != KernelEntry::stratified) {
+    gl::dispatch_2d(program_, width_, height_);
+    return;
+  }
+  // The samples in passes of pass_samples_ per pixel, each adding to the weights
+  // (shaders/main.glsl); the reference's first pass runs the pilot (and clears the weights).
+  int total = 0;
+  if (v_.entry == KernelEntry::reference) {
+    const kf::ReferenceParams& n = v_.reference;
+    total = n.batches * std::max(n.sx * n.sy, n.quiet_sx * n.quiet_sy) * n.nt;
+    program_.set("ref_pass", 0);
+    gl::dispatch_2d(program_, width_, height_);
+    program_.set("ref_pass", 1);
+  } else {
+    const kf::SampleCounts& n = v_.counts;
+    total = n.sx * n.sy * (n.time_at_frame ? 1 : n.nt);
+  }
+  for (int begin = 0; begin < total; begin += pass_samples_) {
+    gl::barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    program_.set("pass_range", glm::ivec2(begin, std::min(total, begin + pass_samples_)));
+    gl::dispatch_2d(program_, width_, height_);
+  }
 }
 
 void GlEngine::prepare() {

@@ -9,8 +9,10 @@
 // Per frame, on the host: the kernel's inputs in float (shading/kernel_frame.h: the phases
 // reduced in double at the frame's time, camera-relative, the waves sorted), uploaded as
 // the wave buffer texture and the kernel's structs as uniforms (gl_engine/uniforms.h); one
-// dispatch; the weights stay in an RGBA32F image on the GPU until read back. The tables
-// (path tables, kernel fits) are uploaded once, as textures. Needs a current GL context.
+// dispatch (the sampling methods: passes of a few samples each, see pass_samples; the
+// reference's first pass runs its pilot); the weights stay in an RGBA32F image on the GPU until
+// read back. The tables (path tables, kernel fits) are uploaded once, as textures. Needs a current
+// GL context.
 #pragma once
 
 #include <memory>
@@ -44,6 +46,17 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& options);
 
 // The methods the GL engine runs, for messages and help.
 const char* gl_methods();
+
+// The samples per pixel of one pass of the GL engine's `reference` and `supersample` for a
+// frame of `waves` waves, K path sub-intervals (the reference on flat water; 0 otherwise),
+// flat or displaced water: chosen so that an invocation's loop iterations stay near
+// kPassIterations, far below llvmpipe's 65535 per invocation, past which llvmpipe ends
+// every loop of the invocation and the samples after that point are lost (the GL
+// reference's bias of issue 22, docs/reference-renderer.md). The estimate per sample is the
+// wave sums (waves x (K + 2) on flat water, waves x 48 march and refinement steps on
+// displaced water) plus the crossing search (300 per sub-interval).
+inline constexpr int kPassIterations = 8000;
+int pass_samples(int waves, int segments, bool displaced);
 
 class GlEngine {
  public:
@@ -84,6 +97,8 @@ class GlEngine {
   kf::KernelFitInfo finfo_{};
   gl::TextureBuffer waves_;
   gl::Texture weights_;
+  gl::Texture busy_;      // the reference's pilot: 1 where a pixel is busy
+  int pass_samples_ = 1;  // the reference's samples per pixel per pass, this frame
   gl::GpuTimer timer_;
   int width_ = 0, height_ = 0;
   double last_ms_ = 0;

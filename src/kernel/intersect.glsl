@@ -10,8 +10,9 @@
 // double, 1e-4 m in float, where positions of ~100 m carry 1e-5 m of rounding). The
 // bracketed root is refined by the Illinois variant of regula falsi (Dowell and Jarratt
 // 1971) to |f| <= root_tolerance (1e-9 m in double, 1e-5 m in float) or a bracket at
-// rounding width. The march stops after kMaxMarchSteps steps (a graze along the whole
-// slab at the smallest step), as a miss.
+// rounding width. A descending ray that reaches the slab's floor unbracketed (f > 0 there
+// by rounding only) hits there. The march stops after kMaxMarchSteps steps (a graze along
+// the whole slab at the smallest step), as a miss.
 //
 // The waves a pixel cannot see in the geometry (Frame.intersect_tolerance = tau > 0).
 // Leaving out the waves j >= n (the shortest: the wave buffer is sorted by |k|) changes
@@ -205,6 +206,17 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
     }
     s = next;
     fs = fn;
+  }
+  if (d.y < 0.0 && s >= m.s_exit) {
+    // The march reached the slab's floor going down, where the ray is at or below the
+    // lowest the surface can be: f(s_exit) <= 0, positive only by rounding (a slab of zero
+    // thickness when the tolerance leaves out every wave, a trough touching the floor). The
+    // crossing is there; before, such rays missed the water and saw the sky (a 1-wave sea
+    // seen from 191 m: kernel/resolved_waves_test.cpp).
+    r.hit = true;
+    r.s = m.s_exit;
+    r.point = o + m.s_exit * d;
+    r.point.y = r.point.y - height_above_first(waves, f, m.n, o, d, m.s_exit, dt);
   }
   return r;
 }

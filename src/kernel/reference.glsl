@@ -537,40 +537,71 @@ SG_FN bool reference_pixel_busy(IN(WaveBuffer) waves, IN(Frame) f, real margin, 
   return dmin < chord + reach || ymin < reach;
 }
 
+// Whether the pixel takes the full strata: every pixel when the pilot is off, and when the
+// camera moves (the pilot's rays are those of one instant); else the pilot's choice.
+SG_FN bool reference_busy(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferenceParams) n, int i, int j) {
+  return !n.adaptive || f.camera_keys.count > 0 || reference_pixel_busy(waves, f, n.margin, i, j);
+}
+
+// The strata of a pixel per batch: S_x x S_y when busy, quiet_sx x quiet_sy otherwise.
+SG_FN ivec2 reference_strata(IN(ReferenceParams) n, bool busy) {
+  return busy ? ivec2(n.sx, n.sy) : ivec2(n.quiet_sx, n.quiet_sy);
+}
+
+// The samples of one batch of a pixel (T per stratum).
+SG_FN int reference_batch_samples(IN(ReferenceParams) n, bool busy) {
+  ivec2 c = reference_strata(n, busy);
+  return c.x * c.y * n.nt;
+}
+
+// The sum of the weights of samples [begin, end) of pixel (i, j), in the order of the
+// rendered batches' samples (batch, then cell in row-major order, then time stratum; the
+// batches first_batch onwards). The stream is advanced to the first sample's draws (two
+// uniforms per sample, three on displaced water, two outputs each), so that any split of
+// the samples into ranges gives the same samples as one range: the GL engine renders a
+// pixel in several passes of a few samples each (gl_engine/gl_engine.cpp: llvmpipe ends
+// every loop of an invocation after 65535 iterations in all, docs/reference-renderer.md).
+SG_FN vec4 reference_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferenceParams) n, bool busy,
+                             int i, int j, int begin, int end) {
+  ivec2 strata = reference_strata(n, busy);
+  int sx = strata.x;
+  int sy = strata.y;
+  int per_batch = sx * sy * n.nt;
+  int last = min(end, n.batches * per_batch);
+  vec4 sum = vec4(0.0);
+  if (begin >= last) return sum;
+  Pcg32 rng = pixel_rng(f.seed, f.frame, i, j);
+  bool traced = f.displaced || f.camera_keys.count > 0;  // each sample at its own time
+  int draws = (traced ? 3 : 2) * 2;
+  pcg32_advance(rng, uint(n.first_batch * per_batch + begin) * uint(draws));
+  for (int s = begin; s < last; ++s) {
+    int q = s % n.nt;
+    int cell = (s / n.nt) % (sx * sy);
+    int cx = cell % sx;
+    int cy = cell / sx;
+    real px = real(i) + (real(cx) + pcg32_uniform(rng)) / real(sx);
+    real py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(sy);
+    if (traced) {
+      real dt = (real(q) + pcg32_uniform(rng)) / real(n.nt) * f.duration - f.duration;
+      sum += sample_weights(waves, f, px, py, dt);
+    } else {
+      sum += exact_time_sample(waves, f, px, py);
+    }
+  }
+  return sum;
+}
+
 SG_FN ReferenceResult reference_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferenceParams) n,
                                       int i, int j) {
-  Pcg32 rng = pixel_rng(f.seed, f.frame, i, j);
   ReferenceResult r;
   r.weights = vec4(0.0);
   for (int b = 0; b < kMaxBatches; ++b)
     r.batch[b] = vec4(0.0);
-  bool traced = f.displaced || f.camera_keys.count > 0;  // each sample at its own time
-  r.busy = !n.adaptive || f.camera_keys.count > 0 || reference_pixel_busy(waves, f, n.margin, i, j);
-  int sx = r.busy ? n.sx : n.quiet_sx;
-  int sy = r.busy ? n.sy : n.quiet_sy;
-  real per_batch = real(sx) * real(sy) * real(n.nt);
-  // Batches before first_batch: their draws skipped (two outputs per uniform), so that
-  // batch first_batch + b is the same whether rendered alone or with the others.
-  int skip = n.first_batch * sx * sy * n.nt * (traced ? 3 : 2) * 2;
-  for (int s = 0; s < skip; ++s)
-    pcg32_next(rng);
+  r.busy = reference_busy(waves, f, n, i, j);
+  int per_batch = reference_batch_samples(n, r.busy);
   for (int b = 0; b < n.batches; ++b) {
-    vec4 sum = vec4(0.0);
-    for (int cy = 0; cy < sy; ++cy) {
-      for (int cx = 0; cx < sx; ++cx) {
-        for (int q = 0; q < n.nt; ++q) {
-          real px = real(i) + (real(cx) + pcg32_uniform(rng)) / real(sx);
-          real py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(sy);
-          if (traced) {
-            real dt = (real(q) + pcg32_uniform(rng)) / real(n.nt) * f.duration - f.duration;
-            sum += sample_weights(waves, f, px, py, dt);
-          } else {
-            sum += exact_time_sample(waves, f, px, py);
-          }
-        }
-      }
-    }
-    r.batch[b] = sum / per_batch;
+    r.batch[b] = reference_samples(waves, f, n, r.busy, i, j, b * per_batch, (b + 1) * per_batch) /
+                 real(per_batch);
     r.weights += r.batch[b];
   }
   r.weights = r.weights / real(n.batches);

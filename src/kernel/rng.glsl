@@ -52,6 +52,28 @@ SG_FN uint pcg32_next(INOUT(Pcg32) g) {
   return (xorshifted >> rot) | (xorshifted << ((0u - rot) & 31u));
 }
 
+// The stream moved `delta` outputs ahead, as `delta` calls of pcg32_next would, in at most
+// 32 steps (Brown 1994, "Random number generation with arbitrary strides": the LCG's
+// affine map squared per bit of delta). The reference's passes start mid-stream with it
+// (reference.glsl): a loop of one step per skipped output would cost a GPU's time and,
+// on llvmpipe, its loop budget (docs/reference-renderer.md).
+SG_FN void pcg32_advance(INOUT(Pcg32) g, uint delta) {
+  uvec2 acc_mult = uvec2(1u, 0u);
+  uvec2 acc_plus = uvec2(0u, 0u);
+  uvec2 cur_mult = uvec2(0x4c957f2du, 0x5851f42du);
+  uvec2 cur_plus = g.inc;
+  for (int bit = 0; bit < 32 && delta != 0u; ++bit) {
+    if ((delta & 1u) != 0u) {
+      acc_mult = u64_mul(acc_mult, cur_mult);
+      acc_plus = u64_add(u64_mul(acc_plus, cur_mult), cur_plus);
+    }
+    cur_plus = u64_mul(u64_add(cur_mult, uvec2(1u, 0u)), cur_plus);
+    cur_mult = u64_mul(cur_mult, cur_mult);
+    delta = delta >> 1u;
+  }
+  g.state = u64_add(u64_mul(acc_mult, g.state), acc_plus);
+}
+
 SG_FN Pcg32 pcg32_make(uvec2 seed, uvec2 stream) {
   Pcg32 g;
   g.state = uvec2(0u, 0u);

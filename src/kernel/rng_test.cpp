@@ -46,5 +46,27 @@ TEST(KernelRng, PixelStreamsAreTheHostsBitForBit) {
   }
 }
 
+TEST(KernelRng, AdvanceEqualsThatManyDraws) {
+  // pcg32_advance(n) leaves the stream where n calls of pcg32_next would (the reference's
+  // passes start mid-stream with it), for n of every size up to 2^32 - 1.
+  for (uint32_t n : {0u, 1u, 2u, 3u, 7u, 64u, 1000u, 4097u, 65535u, 123457u}) {
+    kd::Pcg32 a = kd::pixel_rng(words(99), 3, 5, 8);
+    kd::Pcg32 b = a;
+    kd::pcg32_advance(a, n);
+    for (uint32_t k = 0; k < n; ++k)
+      kd::pcg32_next(b);
+    ASSERT_EQ(joined(a.state), joined(b.state)) << n;
+    ASSERT_EQ(kd::pcg32_next(a), kd::pcg32_next(b)) << n;
+  }
+  // Advancing in two steps equals one step of the sum (a wrap of 2^32 included).
+  kd::Pcg32 a = kd::pixel_rng(words(1), 0, 0, 0), b = a;
+  kd::pcg32_advance(a, 0xfffffff0u);
+  kd::pcg32_advance(a, 0x20u);
+  kd::pcg32_advance(b, 0x10u);
+  for (int k = 0; k < 4; ++k)
+    kd::pcg32_advance(b, 0x40000000u);
+  EXPECT_EQ(joined(a.state), joined(b.state));
+}
+
 }  // namespace
 }  // namespace sg

@@ -53,19 +53,46 @@ SG_FN SampleTimes draw_sample_times(INOUT(Pcg32) rng, IN(Frame) f, IN(SampleCoun
   return t;
 }
 
-SG_FN vec4 stratified_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts) n, int i, int j) {
+// The samples of a pixel: S_x S_y cells, each with the T sample times (one at the display
+// time when time_at_frame).
+SG_FN int stratified_sample_count(IN(SampleCounts) n) {
+  return n.sx * n.sy * (n.time_at_frame ? 1 : n.nt);
+}
+
+// The sum of the weights of samples [begin, end) of pixel (i, j), sample c T + q being cell
+// c (row-major) at time q. The stream: the T times first, then two uniforms per cell (x, y),
+// advanced to the first cell's draws, so that any split of the samples into ranges gives
+// the same samples as one range: the GL engine renders a pixel in passes of a few samples
+// (llvmpipe ends every loop of an invocation after 65535 iterations in all,
+// docs/gpu.md).
+SG_FN vec4 stratified_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts) n, int i, int j,
+                              int begin, int end) {
   Pcg32 rng = pixel_rng(f.seed, f.frame, i, j);
   SampleTimes times = draw_sample_times(rng, f, n);
+  int nt = times.count;
+  int last = min(end, n.sx * n.sy * nt);
   vec4 sum = vec4(0.0);
-  for (int cy = 0; cy < n.sy; ++cy) {
-    for (int cx = 0; cx < n.sx; ++cx) {
-      real px = real(i) + (real(cx) + pcg32_uniform(rng)) / real(n.sx);
-      real py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(n.sy);
-      for (int q = 0; q < times.count; ++q)
-        sum += sample_weights(waves, f, px, py, times.dt[q]);
+  if (begin >= last) return sum;
+  pcg32_advance(rng, uint(begin / nt) * 4u);
+  real px = 0.0;
+  real py = 0.0;
+  for (int s = begin; s < last; ++s) {
+    int q = s % nt;
+    if (s == begin || q == 0) {
+      int cell = s / nt;
+      int cx = cell % n.sx;
+      int cy = cell / n.sx;
+      px = real(i) + (real(cx) + pcg32_uniform(rng)) / real(n.sx);
+      py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(n.sy);
     }
+    sum += sample_weights(waves, f, px, py, times.dt[q]);
   }
-  return sum / (real(times.count) * real(n.sx) * real(n.sy));
+  return sum;
+}
+
+SG_FN vec4 stratified_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts) n, int i, int j) {
+  int count = stratified_sample_count(n);
+  return stratified_samples(waves, f, n, i, j, 0, count) / real(count);
 }
 
 // `staa-temporal`: the temporal method of Sec. 3.3 for every pixel: the point at the pixel

@@ -24,6 +24,12 @@
 
 namespace sg {
 
+// The revision of the reference estimator, part of every frame cache key (report/cache.h):
+// raise it whenever the reference's images change, on either engine, so that a study never
+// takes a cached frame of the estimator of before. 2: the GL engine renders the reference
+// in passes (before, llvmpipe's loop limit dropped samples: docs/reference-renderer.md).
+inline constexpr int kReferenceRevision = 2;
+
 // The reference's defaults (docs/reference-renderer.md: the measured noise and cost).
 inline constexpr SampleCounts kReferenceSamples{8, 8, 1};
 inline constexpr int kReferenceBatches = 2;

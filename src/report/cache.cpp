@@ -52,13 +52,19 @@ std::string file_slug(const std::string& label) {
   return out.empty() ? "method" : out;
 }
 
-std::string frame_key(const Scene& scene, const std::string& label, int frame, int history_from) {
-  // The renderer: the shading kernel's sources (both engines) and the revision of the
-  // host-side methods (bumped when their pictures change).
-  std::string key = "sunglint-frame/1\nrenderer=" + gl_engine::kernel_fingerprint() + "/" +
-                    std::to_string(kHostMethodsRevision) + "\nsize=" + std::to_string(scene.width) +
-                    "x" + std::to_string(scene.height) + "\nframe=" + std::to_string(frame) +
-                    "\nmethod=" + canonical_label(label) + "\n";
+std::string renderer_version(int reference_revision) {
+  return gl_engine::kernel_fingerprint() + "/" + std::to_string(kHostMethodsRevision) +
+         "/reference-" + std::to_string(reference_revision);
+}
+
+std::string frame_key(const Scene& scene, const std::string& label, int frame, int history_from,
+                      const std::string& renderer) {
+  // The renderer: the shading kernel's sources (both engines), the revision of the
+  // host-side methods (bumped when their pictures change) and the reference's.
+  std::string key =
+      "sunglint-frame/1\nrenderer=" + (renderer.empty() ? renderer_version() : renderer) +
+      "\nsize=" + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+      "\nframe=" + std::to_string(frame) + "\nmethod=" + canonical_label(label) + "\n";
   if (history_from >= 0) key += "history_from=" + std::to_string(history_from) + "\n";
   return key + "scene=" + scene_to_json(scene) + "\n";
 }

@@ -13,8 +13,11 @@
 // only when its sidecar exists and holds the same key text (which also rules out hash
 // collisions); anything else is rendered again.
 //
-// The key does not hold the renderer's version: after changing a method's code, delete
-// its files (CACHE/<slug>-*) or the whole cache.
+// The key also holds the renderer's version (renderer_version): the shading kernel's
+// fingerprint, the host-side methods' revision and the reference estimator's revision
+// (methods/reference.h), so that a changed kernel or a fixed estimator never serves frames
+// of before. A change of a method outside these still needs its files (CACHE/<slug>-*)
+// deleted by hand.
 #pragma once
 
 #include "base/fnv1a.h"
@@ -25,6 +28,7 @@
 #include <string_view>
 
 #include "image/image.h"
+#include "methods/reference.h"
 #include "scene/scene.h"
 
 namespace sg {
@@ -37,9 +41,14 @@ std::string canonical_label(const std::string& label);
 // 48 characters ("supersample --samples 6x6x1" -> "supersample-samples-6x6x1").
 std::string file_slug(const std::string& label);
 
+// The renderer's version as keys hold it: "<kernel fingerprint>/<host methods' revision>/
+// reference-<reference revision>"; the current one by default.
+std::string renderer_version(int reference_revision = kReferenceRevision);
+
 // The key text of one frame (see the header). history_from < 0: stateless method.
+// `renderer`: the renderer_version() to key on (empty: the current one).
 std::string frame_key(const Scene& scene, const std::string& label, int frame,
-                      int history_from = -1);
+                      int history_from = -1, const std::string& renderer = {});
 
 // The key of a frame's companion image: the per-pixel variance of a reference's estimate
 // (methods/reference.h), stored beside the frame as a frame of its own.

@@ -44,6 +44,16 @@ TEST(FrameKey, ChangesWithSceneFrameSizeAndSamplesOnly) {
   const std::string fp = gl_engine::kernel_fingerprint();
   EXPECT_EQ(fp.size(), 16u);
   EXPECT_NE(base.find("renderer=" + fp + "/"), std::string::npos);
+  // And the reference estimator's revision: a fixed estimator (another revision) gives
+  // every frame another key and file, so no frame of the estimator of before is served.
+  EXPECT_NE(base.find("renderer=" + renderer_version() + "\n"), std::string::npos);
+  EXPECT_NE(renderer_version().find("/reference-" + std::to_string(kReferenceRevision)),
+            std::string::npos);
+  const std::string before = renderer_version(kReferenceRevision - 1);
+  EXPECT_NE(before, renderer_version());
+  EXPECT_EQ(frame_key(s, ref, 3, -1, renderer_version()), base);
+  EXPECT_NE(frame_key(s, ref, 3, -1, before), base);
+  EXPECT_NE(frame_key(s, "point", 3, -1, before), frame_key(s, "point", 3));
   // Stateful methods: the first frame of the history is part of the key.
   EXPECT_NE(frame_key(s, ref, 3, 0), base);
   EXPECT_NE(frame_key(s, ref, 3, 0), frame_key(s, ref, 3, 1));

@@ -20,7 +20,8 @@ namespace sg::testing {
 
 class RandomScenes {
  public:
-  explicit RandomScenes(uint64_t seed) : rng_(seed, 11) {}
+  explicit RandomScenes(uint64_t seed, int max_waves = 12)
+      : rng_(seed, 11), max_waves_(max_waves) {}
 
   // The next valid scene, `width` x `height`, and in `frame` a frame of its animation.
   Scene next(int width, int height, int& frame) {
@@ -57,14 +58,18 @@ class RandomScenes {
     s.width = width;
     s.height = height;
     // Waves: mostly a sea (5 cm to 500 m), sometimes anything the ranges allow.
-    const int n = chance(0.05) ? 0 : 1 + static_cast<int>(u() * 12);
+    int n = chance(0.05) ? 0 : 1 + static_cast<int>(u() * 12);
+    if (max_waves_ > 12 && n > 0)
+      n = std::min(max_waves_, static_cast<int>(logu(1.0, max_waves_ + 1.0)));
     const bool wild = chance(0.3);
+    // Many waves share a sea's slope: each one's steepness scaled by sqrt(12 / n) past 12.
+    const double steep_scale = n > 12 ? std::sqrt(12.0 / n) : 1.0;
     for (int k = 0; k < n; ++k) {
       Wave w;
       const double lambda = wild ? logu(L::kMinWavelength, L::kMaxWavelength) : logu(0.05, 500.0);
       const double kk = kTwoPi / lambda;
       const double steep = chance(0.2) ? L::kMaxSteepness * u() : 0.1 * u() * u();
-      w.amplitude = steep / kk;
+      w.amplitude = steep_scale * steep / kk;
       const double dir = kTwoPi * u();
       w.wave_vector = vec2(kk * std::cos(dir), kk * std::sin(dir));
       w.angular_frequency =
@@ -124,6 +129,7 @@ class RandomScenes {
   }
 
   Pcg32 rng_;
+  int max_waves_;
   int rejected_ = 0;
 };
 
