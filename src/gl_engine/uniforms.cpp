@@ -45,10 +45,10 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::Frame& f) {
   u.set(k + "count", f.camera_keys.count);
   u.set(k + "up", f.camera_keys.up);
   for (int q = 0; q < kf::kMaxCameraKeys; ++q) {
-    const std::string at = "[" + std::to_string(q) + "]";
-    u.set(k + "time" + at, f.camera_keys.time[q]);
-    u.set(k + "position" + at, f.camera_keys.position[q]);
-    u.set(k + "look_at" + at, f.camera_keys.look_at[q]);
+    const std::string at = std::to_string(q) + "]";
+    u.set(k + "time[" + at, f.camera_keys.time[q]);
+    u.set(k + "position[" + at, f.camera_keys.position[q]);
+    u.set(k + "look_at[" + at, f.camera_keys.look_at[q]);
   }
   u.set(l + "L", f.light.L);
   u.set(l + "e1", f.light.e1);
