@@ -1,5 +1,5 @@
 // Property: the GL engine renders what the CPU engine renders, on every kind of scene, not
-// only the shared ones (issue 22: the GL reference was biased on scenes the shared ones
+// only the shared ones (the GL reference was once biased on scenes the shared ones
 // never exercise). Random valid scenes (testing/random_scene.h, the finite-pixel test's
 // generator, here with 1 to 512 waves: side and back light, grazing and overhead sun,
 // Fresnel, sky gradients, colour, displaced water, low and far cameras, wild times) at

@@ -52,7 +52,7 @@ const char* gl_methods();
 // flat or displaced water: chosen so that an invocation's loop iterations stay near
 // kPassIterations, far below llvmpipe's 65535 per invocation, past which llvmpipe ends
 // every loop of the invocation and the samples after that point are lost (the GL
-// reference's bias of issue 22, docs/reference-renderer.md). The estimate per sample is the
+// reference's former bias, docs/reference-renderer.md). The estimate per sample is the
 // wave sums (waves x (K + 2) on flat water, waves x 48 march and refinement steps on
 // displaced water) plus the crossing search (300 per sub-interval).
 inline constexpr int kPassIterations = 8000;

@@ -258,7 +258,7 @@ double image_mean(const Image& im) {
 }
 
 TEST_F(GlEngineTest, GlReferenceMeanMatchesTheCpuOffTheSharedScenes) {
-  // The scenes on which the GL reference was biased (issue 22: llvmpipe ended the loops of
+  // The scenes on which the GL reference was biased (llvmpipe ended the loops of
   // a pixel's invocation after 65535 iterations, so its busy pixels lost their later
   // samples; tests/scenes/gl-reference/): the sun 60 degrees to the side over 64 waves,
   // and Schlick Fresnel under a constant sky with sea and sun. The GL reference's image

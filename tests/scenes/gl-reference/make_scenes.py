@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the scenes on which the GL engine's reference once disagreed with the CPU's
-(issue 22, docs/reference-renderer.md: "Float crossings"): small flat seas, lit from the
+(docs/reference-renderer.md: "Float crossings"): small flat seas, lit from the
 side or under a Schlick-Fresnel sky, that the shared scenes of scenes/ (sun straight
 ahead, no sky) never exercised. gl_engine_test renders them with both engines and checks
 the image means agree within 4 standard errors. Deterministic; run from this folder:
