@@ -61,16 +61,17 @@ sanitize-test:
 	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L '^(unit|gl|slow)$$' \
 	  -LE '^cli$$'
 
-# The scene loader under libFuzzer (clang, fuzz/scene_fuzz.cpp) for FUZZ_SECONDS, from a seed
-# corpus of the shipped, bad and edge scenes; new inputs go to build-fuzz/corpus, findings
-# to build-fuzz/artifacts (the run fails on one).
+# The scene loader under libFuzzer (clang, fuzz/scene_fuzz.cpp; line tables only, -g1, as
+# the sanitizer build) for FUZZ_SECONDS, from a seed corpus of the shipped, bad and edge
+# scenes; new inputs go to build-fuzz/corpus, findings to build-fuzz/artifacts (the run
+# fails on one).
 FUZZ_SECONDS ?= 60
 fuzz: fuzz-build fuzz-run
 
 fuzz-build: deps
 	cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	  -DCMAKE_CXX_COMPILER=clang++ -DSUNGLINT_FUZZ=ON -DSUNGLINT_BUILD_TESTS=OFF \
-	  -DSUNGLINT_BUILD_BENCH=OFF
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO='-O2 -g1 -DNDEBUG' -DCMAKE_CXX_COMPILER=clang++ \
+	  -DSUNGLINT_FUZZ=ON -DSUNGLINT_BUILD_TESTS=OFF -DSUNGLINT_BUILD_BENCH=OFF
 	cmake --build build-fuzz -j $(JOBS) --target scene_fuzz
 
 fuzz-run:
