@@ -11,6 +11,7 @@
 #include "engine/render.h"
 #include "methods/method.h"
 #include "metrics/metrics.h"
+#include "testing/render_range.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -41,14 +42,7 @@ Scene channel_scene(const Scene& colour, int c) {
 }
 
 std::vector<Image> render(const Scene& s, const std::string& method, int first, int last) {
-  MethodOptions o;
-  o.samples = SampleCounts{2, 2, 2};
-  const SceneModel model(s);
-  auto m = make_method(method, o);
-  std::vector<Image> frames;
-  render_frames(model, *m, first, last, RenderSettings{},
-                [&](int, const Image& img) { frames.push_back(img); });
-  return frames;
+  return testing::render_range(s, method, first, last);
 }
 
 TEST(Colour, EveryMethodRendersEachChannelAsTheGreySceneOfThatChannel) {

@@ -12,20 +12,14 @@
 
 #include "engine/render.h"
 #include "methods/method.h"
+#include "testing/render_range.h"
 #include "testing/testing.h"
 
 namespace sg {
 namespace {
 
 std::vector<Image> render(const Scene& s, const std::string& method, int first, int last) {
-  MethodOptions o;
-  o.samples = SampleCounts{2, 2, 2};
-  const SceneModel model(s);
-  auto m = make_method(method, o);
-  std::vector<Image> frames;
-  render_frames(model, *m, first, last, RenderSettings{},
-                [&](int, const Image& img) { frames.push_back(img); });
-  return frames;
+  return testing::render_range(s, method, first, last);
 }
 
 // A /2 file's text with its format set to /3.
