@@ -22,8 +22,8 @@
 // llvmpipe on both cores); a random scene can cost minutes (a displaced 447-wave sea seen
 // at a graze marches up to 2e6 steps a ray), so the count stays where the default seed's
 // scenes are cheap. A longer run: SG_AGREE_SCENES=N SG_AGREE_SEED=S
-// build/tests/engine_agreement_test (docs/gpu.md records one). Failing scenes are written
-// to test_out/engine_agreement/.
+// build/tests/engine_agreement_test (docs/gpu.md records one); SG_AGREE_ONLY=K renders the
+// K-th scene alone. Failing scenes are written to test_out/engine_agreement/.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -96,7 +96,9 @@ Image render_one(const SceneModel& model, Method& m, int frame, uint64_t seed) {
 TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   const char* env_n = std::getenv("SG_AGREE_SCENES");
   const char* env_seed = std::getenv("SG_AGREE_SEED");
+  const char* env_only = std::getenv("SG_AGREE_ONLY");
   const int scenes = env_n ? std::atoi(env_n) : kScenes;
+  const int only = env_only ? std::atoi(env_only) : -1;
   testing::RandomScenes gen(env_seed ? std::strtoull(env_seed, nullptr, 10) : 20261203, 512);
   const std::string dump = sg::testing::binary_dir() + "/test_out/engine_agreement";
   std::filesystem::remove_all(dump);
@@ -126,6 +128,7 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   for (int k = 0; k < scenes; ++k) {
     int frame = 0;
     const Scene s = gen.next(24, 16, frame);
+    if (only >= 0 && k != only) continue;
     const SceneModel model(s);
     const std::string where =
         "random scene " + std::to_string(k) + " frame " + std::to_string(frame) + " (" +

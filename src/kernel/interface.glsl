@@ -164,10 +164,12 @@ struct StaaPath {
 
 // The result of a pixel, with what tests and diagnostics look at.
 // `staa`'s smooth terms over the pixel's normals (smooth_terms.glsl): the expectations of
-// F 1{above}, F z 1{above} and 1{above}, with z the sky's zenith weight at r.y.
+// F 1{above}, F z 1{above}, F h 1{above} and 1{above}, with z and h the sky's zenith and
+// horizon shares at r.y (z + h = 1, each summed for its own digits).
 struct SmoothTerms {
   real f_above;
   real f_zenith;
+  real f_horizon;
   real above;
 };
 

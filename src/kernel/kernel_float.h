@@ -23,6 +23,8 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
 // (vectorised when the buffer carries arrays, else the kernel's loops).
 real float_erfc(real x);
 real float_normal_quantile(real p);
+real float_exp_minus_one(real u);
+vec2 float_sky_shares(const Frame& f, real y);
 SmoothTerms float_smooth_terms(const Frame& f, vec2 mu, mat2 cov, vec3 v);
 real float_light_pixel_coverage(const Camera& c, const Light& l, int i, int j);
 real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);

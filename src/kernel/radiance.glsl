@@ -32,12 +32,24 @@ SG_FN vec4 sea_weights() {
   return vec4(0.0, 0.0, 0.0, 1.0);
 }
 
+// The sky's (zenith, horizon) shares in a direction of height y (scene format: zenith
+// max(y, 0)^exponent, horizon the rest), each to its precision's rounding: with
+// u = exponent ln y, the zenith e^u and the horizon -(e^u - 1) (special.glsl:
+// exp_minus_one). 1 - pow(y, e) would cancel where e |ln y| is small (a flat exponent or
+// a high direction): a last-bit difference between two engines' pow became a relative
+// difference of e |ln y| / 2^-24 in the horizon's share.
+SG_FN vec2 sky_shares(IN(Frame) f, real dir_y) {
+  if (!(dir_y > 0.0)) return vec2(0.0, 1.0);
+  real u = f.sky_exponent * log(min(dir_y, 1.0));
+  return vec2(exp(u), -exp_minus_one(u));
+}
+
 // The sky in a direction of height dir_y: zenith max(dir_y, 0)^exponent, horizon the
 // rest. A constant sky (zenith == horizon) puts its whole weight on the horizon.
 SG_FN vec4 sky_weights(IN(Frame) f, real dir_y) {
   if (!f.sky_gradient) return vec4(0.0, 0.0, 1.0, 0.0);
-  real z = dir_y > 0.0 ? pow(dir_y, f.sky_exponent) : 0.0;
-  return vec4(0.0, z, 1.0 - z, 0.0);
+  vec2 zh = sky_shares(f, dir_y);
+  return vec4(0.0, zh.x, zh.y, 0.0);
 }
 
 // A camera ray with unit direction `dir` that hits no water.

@@ -31,16 +31,19 @@ const real kGh5WP = 0.22207592200561265;
 const real kGh5WQ = 0.011257411327720691;
 const real kGh3 = 1.7320508075688772;  // sqrt(3); weights 1/6, 2/3, 1/6
 
-// The integrand at NDF-plane point s: vec2(F, F z), with z = 0 where r points below the
-// horizon (the rule's nodes all lie above it, or far enough from it not to matter).
-SG_FN vec2 smooth_integrand(IN(Frame) f, vec2 s, vec3 v) {
+// The integrand at NDF-plane point s: vec3(F, F z, F h), with z the sky's zenith share
+// and h its horizon share (radiance.glsl: sky_shares; z = 0 and h = 1 where r points
+// below the horizon: the rule's nodes all lie above it, or far enough from it not to
+// matter, and without a gradient). Both shares are summed, not one and 1 minus it: each
+// keeps its digits where the other is near 1.
+SG_FN vec3 smooth_integrand(IN(Frame) f, vec2 s, vec3 v) {
   real mm = 1.0 + dot(s, s);
   real mv = s.x * v.x + s.y * v.z + v.y;
   real F = f.fresnel == 0 ? 1.0 : fresnel_schlick(mv * inversesqrt(mm));
   real ry = 2.0 * mv / mm - v.y;
-  real z = 0.0;
-  if (f.sky_gradient && ry > 0.0) z = pow(ry, f.sky_exponent);
-  return vec2(F, F * z);
+  vec2 zh = vec2(0.0, 1.0);
+  if (f.sky_gradient) zh = sky_shares(f, ry);
+  return vec3(F, F * zh.x, F * zh.y);
 }
 
 // 8-point Gauss-Legendre on [0, 1]: nodes (1 +- x) / 2, weights w / 2.
@@ -49,7 +52,7 @@ const real kGl8X[4] = SG_ARRAY(
 const real kGl8W[4] = SG_ARRAY(
     real, 4, (0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763));
 
-// (E[F], E[F z], mass) of the standard normal u over [c, e], c > -8 the horizon's cut
+// (E[F], E[F z], E[F h], mass) of the standard normal u over [c, e], c > -8 the horizon's cut
 // (e may be the clamp at 10). In the upper-tail probability q = Q(u) the piece runs from
 // Q(c) down to Q(e) with the density uniform; with q = Q(c) - mass g(tau),
 // g = tau^2 (3 - 2 tau), the integrand's square-root behaviour at the cut (r.y ~ u - c
@@ -58,10 +61,10 @@ const real kGl8W[4] = SG_ARRAY(
 // g'(tau) dtau by 8-point Gauss-Legendre, with Q^-1(q) = -Phi^-1(q) (special.glsl:
 // normal_quantile). Against a dense grid the pieces err by about 1e-5 (the test), where
 // g = tau^2 alone erred by 3e-4.
-SG_FN vec3 smooth_cut_piece(IN(Frame) f, vec2 sw, vec2 d, vec3 v, real c, real e) {
+SG_FN vec4 smooth_cut_piece(IN(Frame) f, vec2 sw, vec2 d, vec3 v, real c, real e) {
   real qc = 0.5 * erfc(c * kInvSqrtTwo);
   real mass = normal_mass(c, e);
-  vec2 sum = vec2(0.0);
+  vec3 sum = vec3(0.0);
   for (int q = 0; q < 8; ++q) {
     real x = q < 4 ? -kGl8X[q] : kGl8X[q - 4];
     real wq = 0.5 * (q < 4 ? kGl8W[q] : kGl8W[q - 4]);
@@ -71,7 +74,7 @@ SG_FN vec3 smooth_cut_piece(IN(Frame) f, vec2 sw, vec2 d, vec3 v, real c, real e
     real u = -normal_quantile(qc - mass * g);
     sum += (wq * dg) * smooth_integrand(f, sw + u * d, v);
   }
-  return vec3(mass * sum.x, mass * sum.y, mass);
+  return vec4(mass * sum, mass);
 }
 
 // The integrals over N(mu, cov) in NDF-plane coordinates for the unit view v.
@@ -79,6 +82,7 @@ SG_FN SmoothTerms smooth_terms(IN(Frame) f, vec2 mu, mat2 cov, vec3 v) {
   SmoothTerms res;
   res.f_above = 0.0;
   res.f_zenith = 0.0;
+  res.f_horizon = 0.0;
   res.above = 0.0;
   vec2 vh = vec2(v.x, v.z);
   PrincipalAxes ax = principal_axes(cov);
@@ -122,23 +126,23 @@ SG_FN SmoothTerms smooth_terms(IN(Frame) f, vec2 mu, mat2 cov, vec3 v) {
       // F = 1 and z = 0: the share above the horizon is all.
       real m0 = normal_mass(lo, hi);
       res.f_above += wj * m0;
+      res.f_horizon += wj * m0;
       res.above += wj * m0;
       continue;
     }
     // Roots beyond 8 deviations cut off less than 1e-15: no cut.
     bool cut_lo = lo > -8.0;
     bool cut_hi = hi < 8.0;
-    vec3 h;  // (E[F], E[F z], mass) over the interval, for this w
+    vec4 h;  // (E[F], E[F z], E[F h], mass) over the interval, for this w
     if (!cut_lo && !cut_hi) {
-      h.x = 0.0;
-      h.y = 0.0;
-      h.z = 1.0;
+      h = vec4(0.0, 0.0, 0.0, 1.0);
       for (int q = 0; q < 5; ++q) {
         real x = q == 0 ? 0.0 : (q < 3 ? kGh5P : kGh5Q) * (q % 2 == 1 ? 1.0 : -1.0);
-        vec2 g = smooth_integrand(f, sw + x * d, v);
+        vec3 g = smooth_integrand(f, sw + x * d, v);
         real wq = q == 0 ? kGh5W0 : (q < 3 ? kGh5WP : kGh5WQ);
         h.x += wq * g.x;
         h.y += wq * g.y;
+        h.z += wq * g.z;
       }
     } else if (cut_lo && cut_hi) {
       // Both ends cut: split at the middle, each half with its cut at one end.
@@ -152,10 +156,12 @@ SG_FN SmoothTerms smooth_terms(IN(Frame) f, vec2 mu, mat2 cov, vec3 v) {
     }
     res.f_above += wj * h.x;
     res.f_zenith += wj * h.y;
-    res.above += wj * h.z;
+    res.f_horizon += wj * h.z;
+    res.above += wj * h.w;
   }
   res.f_above = clamp(res.f_above, 0.0, res.above);
   res.f_zenith = clamp(res.f_zenith, 0.0, res.f_above);
+  res.f_horizon = clamp(res.f_horizon, 0.0, res.f_above);
   return res;
 }
 
@@ -166,6 +172,6 @@ SG_FN vec4 smooth_weights(IN(Frame) f, IN(SmoothTerms) s, real F_light, real in_
   real lit = F_light * min(in_light, s.above);
   vec4 sl = sky_weights(f, f.light.L.y);
   real zenith = max(0.0, s.f_zenith - lit * sl.y);
-  real horizon = max(0.0, (s.f_above - s.f_zenith) - lit * sl.z);
+  real horizon = max(0.0, s.f_horizon - lit * sl.z);
   return vec4(lit, zenith, horizon, 1.0 - s.f_above);
 }

@@ -39,7 +39,7 @@ kf::Frame narrow_frame(const kd::Frame& d) {
 // E[F 1{above}], E[F z 1{above}], P(above) over N(mu, A A^T) on an n x n grid over
 // [-8, 8]^2 standard deviations.
 kd::SmoothTerms brute_smooth(const kd::Frame& f, kd::vec2 mu, kd::mat2 A, kd::vec3 v, int n) {
-  kd::SmoothTerms s{0, 0, 0};
+  kd::SmoothTerms s{0, 0, 0, 0};
   const double h = 16.0 / n;
   for (int a = 0; a < n; ++a) {
     const double u = -8 + (a + 0.5) * h;
@@ -55,6 +55,7 @@ kd::SmoothTerms brute_smooth(const kd::Frame& f, kd::vec2 mu, kd::mat2 A, kd::ve
       s.above += weight;
       s.f_above += weight * F;
       s.f_zenith += weight * F * std::pow(r.y, f.sky_exponent);
+      s.f_horizon += weight * F * -std::expm1(f.sky_exponent * std::log(r.y));
     }
   }
   return s;
@@ -92,6 +93,7 @@ TEST(SmoothTerms, MatchesBruteForceOverTheNormals) {
     const kd::SmoothTerms want = brute_smooth(f, mu, A, v, 1600);
     const double e_f = std::fabs(got.f_above - want.f_above);
     const double e_z = std::fabs(got.f_zenith - want.f_zenith);
+    const double e_h = std::fabs(got.f_horizon - want.f_horizon);
     const double e_a = std::fabs(got.above - want.above);
     std::printf("%-45s F %.6f (%.1e)  Fz %.6f (%.1e)  above %.6f (%.1e)\n", c.what, got.f_above,
                 e_f, got.f_zenith, e_z, got.above, e_a);
@@ -100,11 +102,15 @@ TEST(SmoothTerms, MatchesBruteForceOverTheNormals) {
     EXPECT_LT(e_a, 4e-5) << c.what;
     EXPECT_LT(e_f, 4e-5) << c.what;
     EXPECT_LT(e_z, 4e-5) << c.what;
+    EXPECT_LT(e_h, 4e-5) << c.what;
+    // The shares sum to F: the zenith's and the horizon's expectations to that of F.
+    EXPECT_NEAR(got.f_zenith + got.f_horizon, got.f_above, 1e-12) << c.what;
     // Float (what a GPU computes) against double.
     const kf::SmoothTerms fl = kf::float_smooth_terms(narrow_frame(f), kf::vec2(mu),
                                                       kf::mat2(A * transpose(A)), kf::vec3(v));
     EXPECT_NEAR(fl.f_above, got.f_above, 2e-5) << c.what;
     EXPECT_NEAR(fl.f_zenith, got.f_zenith, 2e-5) << c.what;
+    EXPECT_NEAR(fl.f_horizon, got.f_horizon, 2e-5) << c.what;
     EXPECT_NEAR(fl.above, got.above, 2e-5) << c.what;
   }
 }

@@ -2,6 +2,7 @@
 // standard library, in both precisions, with the bounds the kernel states.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -93,6 +94,62 @@ TEST(KernelSpecial, NormalQuantileInvertsTheCdf) {
     const float p = static_cast<float>(0.5 * std::erfc(-x / std::sqrt(2.0)));
     EXPECT_NEAR(kf::float_normal_quantile(p), x, 2e-5 * std::max(1.0, std::fabs(x))) << x;
   }
+}
+
+TEST(KernelSpecial, ExpMinusOneKeepsItsDigitsNearZero) {
+  // Against std::expm1 over |u| in [1e-12, 40], both signs: double to 2 ulp of e^u - 1
+  // everywhere; float to 4 ulp (exp(u) - 1 would lose 2^-24 / |u| of it near 0: 0.6 for
+  // u = 1e-7).
+  double worst_d = 0, worst_f = 0;
+  for (int k = 0; k <= 20000; ++k) {
+    for (double sign : {-1.0, 1.0}) {
+      const double u = sign * std::pow(10.0, -12 + 13.6 * k / 20000);
+      const double want = std::expm1(u);
+      worst_d = std::max(worst_d, std::fabs(kd::exp_minus_one(u) - want) / std::fabs(want));
+      const float uf = static_cast<float>(u);
+      const double want_f = std::expm1(double(uf));
+      worst_f = std::max(
+          worst_f, std::fabs(double(kf::float_exp_minus_one(uf)) - want_f) / std::fabs(want_f));
+    }
+  }
+  std::printf("exp_minus_one: max relative error %.3g (double), %.3g (float)\n", worst_d, worst_f);
+  EXPECT_LT(worst_d, 4.5e-16);
+  EXPECT_LT(worst_f, 4.8e-7);
+  EXPECT_EQ(kd::exp_minus_one(0.0), 0.0);
+}
+
+TEST(KernelSpecial, SkySharesKeepTheirDigitsEachWay) {
+  // The sky's zenith share y^e and horizon share 1 - y^e, each to a few ulp of itself in
+  // float against double's log1p/expm1, for flat exponents (the horizon's share tiny) and
+  // steep ones (the zenith's tiny). 1 - pow(y, e) in float errs by 2^-24 / (e |ln y|) of
+  // the horizon's share: 8e-4 for e = 0.004, y = 0.98.
+  double worst_z = 0, worst_h = 0;
+  for (double e : {0.004, 0.05, 0.5, 2.0, 8.0}) {
+    kd::Frame fd{};
+    fd.sky_gradient = true;
+    fd.sky_exponent = e;
+    kf::Frame ff{};
+    ff.sky_gradient = true;
+    ff.sky_exponent = static_cast<float>(e);
+    for (double y : {1e-6, 0.01, 0.2, 0.7, 0.98, 0.9999}) {
+      const float yf = static_cast<float>(y);
+      const double u = double(ff.sky_exponent) * std::log(double(yf));
+      const double z = std::exp(u), h = -std::expm1(u);
+      const kd::vec2 d = kd::sky_shares(fd, y);
+      const kf::vec2 g = kf::float_sky_shares(ff, yf);
+      EXPECT_NEAR(d.x + d.y, 1.0, 1e-15);
+      if (z < 1e-30) {  // float underflows there (y^8 for y = 1e-6)
+        EXPECT_LT(g.x, 1e-30);
+        continue;
+      }
+      worst_z = std::max(worst_z, std::fabs(g.x - z) / z);
+      worst_h = std::max(worst_h, std::fabs(g.y - h) / h);
+    }
+  }
+  std::printf("sky shares in float: max relative error zenith %.3g, horizon %.3g\n", worst_z,
+              worst_h);
+  EXPECT_LT(worst_z, 1e-6);
+  EXPECT_LT(worst_h, 1e-6);
 }
 
 }  // namespace

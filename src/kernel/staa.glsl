@@ -207,6 +207,7 @@ SG_FN StaaResult staa_result_miss() {
   r.terms_valid = false;
   r.terms.f_above = 0.0;
   r.terms.f_zenith = 0.0;
+  r.terms.f_horizon = 0.0;
   r.terms.above = 0.0;
   return r;
 }
@@ -266,12 +267,14 @@ SG_FN SmoothTerms staa_smooth_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) 
   SmoothTerms res;
   res.f_above = 0.0;
   res.f_zenith = 0.0;
+  res.f_horizon = 0.0;
   res.above = 0.0;
   for (int c = 0; c < n * n; ++c) {
     SmoothTerms t =
         smooth_terms(f, sums.cells.m[c].mean + shift, sym2(sums.cells.m[c].cov) + shared_cov, view);
     res.f_above += t.f_above * inv_cells;
     res.f_zenith += t.f_zenith * inv_cells;
+    res.f_horizon += t.f_horizon * inv_cells;
     res.above += t.above * inv_cells;
   }
   return res;

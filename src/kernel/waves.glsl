@@ -98,13 +98,25 @@ SG_FN int first_wave_below(IN(WaveBuffer) waves, IN(Frame) f, real amplitude) {
 // The sums over the waves at one point and time: the definitions. The CPU engine replaces
 // the two that every method calls by vectorised equivalents (SG_CPU_WAVE_SUMS below;
 // kernel/cpu/wave_sums.h), tested equal to these.
-// The height of the first n waves (in |k| order).
+// The height of wave i.
+SG_FN real wave_height_term(IN(WaveBuffer) waves, IN(Frame) f, int i, real x, real z, real dt) {
+  Wave w = wave_at(waves, f, i);
+  return w.A * sin(wave_phase(w, x, z, dt));
+}
+
+// The height of the first n waves (in |k| order), summed in that order, eight waves an
+// iteration (the last iteration's waves past n add nothing): the displaced march calls it
+// at every step, and llvmpipe ends every loop of an invocation after 65535 iterations in
+// all (docs/gpu.md), which a grazing ray over hundreds of waves passed within one sample.
+// GPU compilers unroll such loops themselves.
+const int kHeightUnroll = 8;
 SG_FN real wave_sum_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z,
                                  real dt) {
   real h = 0.0;
-  for (int i = 0; i < n; ++i) {
-    Wave w = wave_at(waves, f, i);
-    h += w.A * sin(wave_phase(w, x, z, dt));
+  for (int i = 0; i < n; i += kHeightUnroll) {
+    for (int j = 0; j < kHeightUnroll; ++j) {
+      if (i + j < n) h += wave_height_term(waves, f, i + j, x, z, dt);
+    }
   }
   return h;
 }

@@ -73,6 +73,7 @@ void finish_exact(const kd::Frame& f, int K, const Result& r, const Path& path,
     kd::SmoothTerms smooth;
     smooth.f_above = r.terms.f_above;
     smooth.f_zenith = r.terms.f_zenith;
+    smooth.f_horizon = r.terms.f_horizon;
     smooth.above = r.terms.above;
     s.below = 1.0 - smooth.above;
     s.in_light = std::clamp(s.in_light, 0.0, 1.0 - s.below);

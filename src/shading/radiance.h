@@ -20,6 +20,7 @@
 // the horizon. `combine_weights` turns such fractions into the same weights.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "math/vec.h"
@@ -50,12 +51,14 @@ inline double fresnel(FresnelMode mode, double n_dot_v) {
 }
 
 // The sky's weights in direction d (d.y the height of the unit direction): zenith
-// max(d.y, 0)^exponent, horizon the rest.
+// max(d.y, 0)^exponent, horizon the rest, each share to its own digits (kernel/radiance.glsl:
+// sky_shares; here std::expm1).
 // A constant sky puts its whole weight on the horizon (zenith == horizon there).
 inline RadianceWeights sky_weights(const SceneModel& m, double dir_y) {
   if (!m.scene.sky.gradient) return RadianceWeights(0.0, 0.0, 1.0, 0.0);
-  const double z = dir_y > 0 ? std::pow(dir_y, m.scene.sky.exponent) : 0.0;
-  return RadianceWeights(0.0, z, 1.0 - z, 0.0);
+  if (!(dir_y > 0)) return RadianceWeights(0.0, 0.0, 1.0, 0.0);
+  const double u = m.scene.sky.exponent * std::log(std::min(dir_y, 1.0));
+  return RadianceWeights(0.0, std::exp(u), -std::expm1(u), 0.0);
 }
 
 inline RadianceWeights light_weights() {

@@ -35,6 +35,12 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
 real float_erfc(real x) {
   return erfc(x);
 }
+real float_exp_minus_one(real u) {
+  return exp_minus_one(u);
+}
+vec2 float_sky_shares(const Frame& f, real y) {
+  return sky_shares(f, y);
+}
 real float_normal_quantile(real p) {
   return normal_quantile(p);
 }
