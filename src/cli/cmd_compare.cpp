@@ -469,17 +469,19 @@ void run_compare(const CompareArgs& a) {
   if (a.plan) return run_plan(a, c);
   if (a.slurm.submit) return submit_study(a, c);
 
-  // The live page of the study's scenes at its size (docs/web.md), which the report links.
+  // The live page of the study's scenes at its size (docs/web.md), which the report links:
+  // the scenes with a fixed camera (the page renders no other); none, no page.
   web::WebPageOptions live;
   live.out_dir = (std::filesystem::path(a.out) / "web").string();
-  for (const auto& s : c.scenes)
-    live.scenes.push_back({s.file, s.scene.width, s.scene.height});
+  for (const auto& s : c.scenes) {
+    if (!s.scene.camera.moving()) live.scenes.push_back({s.file, s.scene.width, s.scene.height});
+  }
 
   ProgressBar bar("compare", !a.quiet);
   const StudyResults r =
       a.merge ? merge_study(c, progress_of(bar)) : run_study(c, progress_of(bar));
   bar.finish();
-  web::write_web_page(live);
+  if (!live.scenes.empty()) web::write_web_page(live);
 
   std::printf("%-10s %-32s %9s %9s %9s %9s %10s\n", "scene", "variant", "rmse", "temporal", "near",
               "far", "ms/frame");
@@ -509,7 +511,7 @@ void add_compare_command(CLI::App& app) {
       "compare",
       "Render methods on scenes against a cached reference and write a report (metrics, "
       "near/far water halves, equal-cost curve, pictures, videos, index.html)");
-  c->add_option("scenes", a->scenes, "Scene files (sunglint-scene/1 or /2 JSON)");
+  c->add_option("scenes", a->scenes, "Scene files (sunglint-scene/1, /2 or /3 JSON)");
   c->add_option("--method,-m", a->methods,
                 "A method variant 'NAME [FLAGS]' with the flags of render, e.g. -m point -m "
                 "'supersample --samples 6x6x1'; repeat for each variant")

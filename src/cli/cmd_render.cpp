@@ -305,7 +305,7 @@ void add_render_command(CLI::App& app) {
   for (const auto& m : method_catalog())
     methods += "\n  " + m.name + ": " + m.summary;
   CLI::App* c = app.add_subcommand("render", "Render a scene with one method");
-  c->add_option("scene", a->scene_path, "Scene file (sunglint-scene/1 or /2 JSON)")->required();
+  c->add_option("scene", a->scene_path, "Scene file (sunglint-scene/1, /2 or /3 JSON)")->required();
   c->add_option("--method,-m", a->method, "Rendering method:" + methods)->required();
   c->add_option("--out,-o", a->out,
                 "Output file; the format follows the extension (.exr, .pfm, .png). With "

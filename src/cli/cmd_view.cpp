@@ -1,7 +1,9 @@
 // `sunglint view SCENE [--method M] [--split M2]`: the interactive viewer (viewer/viewer.h)
 // on the GL engine; with `--frames N` a scripted run of frames 0 .. N-1 that writes the
-// last one's displayed image (`--screenshot OUT.png`) and exits. Everything the command
-// line asks is checked before the window opens; no file is written when it cannot open.
+// last one's displayed image (`--screenshot OUT.png`) and exits; `--record PATH.json` writes
+// the camera's path as a `/3` scene at the end (viewer/camera_record.h). Everything the
+// command line asks is checked before the window opens; no file is written when it cannot
+// open.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -25,7 +27,8 @@ namespace sg {
 namespace {
 
 struct ViewArgs {
-  std::string scene_path, method = "staa", split, screenshot, save_scene, display_on = "auto";
+  std::string scene_path, method = "staa", split, screenshot, save_scene, record,
+                          display_on = "auto";
   int frames = 0, width = 0, height = 0, reference_batches = 0;
   double exposure = 0, reference_difference = 0;
   bool no_glare = false, show_controls = false;
@@ -33,6 +36,7 @@ struct ViewArgs {
   double sun_elevation = std::nan(""), sun_azimuth = std::nan(""), sun_radius = std::nan("");
   double amplitude_scale = 1;
   double orbit_yaw = 0, orbit_pitch = 0;  // degrees: the view's camera orbited at the start
+  double orbit_rate = 0;                  // degrees per second: a scripted orbit
   MethodFlags flags;
 };
 
@@ -74,12 +78,15 @@ void run_view(ViewArgs& a) {
     if (!a.split.empty()) shown.push_back(a.split);
     if (a.reference_batches > 0) shown.push_back("reference");
     a.flags.check_taken_by(shown);
-    if (a.frames == 0 && (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls ||
-                          a.reference_batches > 0 || a.reference_difference > 0)) {
+    if (a.frames == 0 &&
+        (!a.screenshot.empty() || !a.save_scene.empty() || a.show_controls ||
+         a.reference_batches > 0 || a.reference_difference > 0 || a.orbit_rate != 0)) {
       throw Error(
           "--screenshot, --save-scene, --show-controls, --reference-batches, "
-          "--reference-difference: need --frames N (a scripted run)");
+          "--reference-difference, --orbit-rate: need --frames N (a scripted run)");
     }
+    if (!a.record.empty() && !a.record.ends_with(".json"))
+      throw Error("--record: must be a .json file (got '" + a.record + "')");
     if (a.reference_difference > 0 && a.reference_batches == 0)
       throw Error("--reference-difference: needs --reference-batches N");
     if (a.reference_batches > 0) {
@@ -102,6 +109,11 @@ void run_view(ViewArgs& a) {
     if (!std::isnan(a.sun_azimuth)) e.sun_azimuth_deg = a.sun_azimuth;
     if (!std::isnan(a.sun_radius)) e.sun_radius_deg = a.sun_radius;
     e.amplitude_scale = a.amplitude_scale;
+    if (scene.camera.moving() && (a.orbit_yaw != 0 || a.orbit_pitch != 0 || a.orbit_rate != 0)) {
+      throw Error(
+          "--orbit-yaw, --orbit-pitch, --orbit-rate: the scene's camera is keyed (format /3); "
+          "they move a fixed camera");
+    }
     if (a.orbit_yaw != 0 || a.orbit_pitch != 0) {
       constexpr double kDeg = 3.14159265358979323846 / 180;
       const CameraDesc c = viewer::orbit(e.camera, viewer::orbit_target(e.camera),
@@ -131,6 +143,7 @@ void run_view(ViewArgs& a) {
   };
   check_file(a.screenshot, "--screenshot");
   check_file(a.save_scene, "--save-scene");
+  check_file(a.record, "--record");
   o.scene = scene;
   o.method = a.method;
   o.options = a.flags.options;
@@ -140,6 +153,8 @@ void run_view(ViewArgs& a) {
   o.frames = a.frames;
   o.screenshot = a.screenshot;
   o.save_scene = a.save_scene;
+  o.record = a.record;
+  o.orbit_rate_deg = a.orbit_rate;
   o.show_controls = a.show_controls;
   o.reference_batches = a.reference_batches;
   o.reference_difference = a.reference_difference;
@@ -153,7 +168,7 @@ void add_view_command(CLI::App& app) {
   auto a = std::make_shared<ViewArgs>();
   CLI::App* c = app.add_subcommand(
       "view", "Watch a scene in a window, rendered on the GPU every frame (docs/viewer.md)");
-  c->add_option("scene", a->scene_path, "Scene file (sunglint-scene/1 or /2 JSON)")->required();
+  c->add_option("scene", a->scene_path, "Scene file (sunglint-scene/1, /2 or /3 JSON)")->required();
   c->add_option("--method,-m", a->method,
                 std::string("Method (the GL engine's: ") + gl_engine::gl_methods() + ")")
       ->capture_default_str();
@@ -206,6 +221,14 @@ void add_view_command(CLI::App& app) {
   c->add_option("--orbit-pitch", a->orbit_pitch,
                 "... and raised by this many degrees about that point (negative: lowered)")
       ->check(number_in(-90, 90));
+  c->add_option("--orbit-rate", a->orbit_rate,
+                "Scripted run: the camera orbits about the vertical through the point its view "
+                "meets the water at this many degrees per second of the scene's clock (each "
+                "frame's shutter sees the motion)")
+      ->check(number_in(-3600, 3600));
+  c->add_option("--record", a->record,
+                "Write the camera's path (each frame's pose as a keyframe) as a sunglint-scene/3 "
+                "file when the view ends (.json; render and compare read it)");
   c->add_option("--amplitude-scale", a->amplitude_scale, "A scale on every wave's amplitude")
       ->capture_default_str()
       ->check(number_in(0, 100));

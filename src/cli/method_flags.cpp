@@ -221,6 +221,10 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
   choice(app, "--taa-history", o.taa.history,
          {{"bilinear", TaaHistoryFilter::bilinear}, {"catmull-rom", TaaHistoryFilter::catmull_rom}},
          "taa: history resampling");
+  choice(app, "--taa-motion", o.taa.motion,
+         {{"full", TaaMotion::full}, {"surface", TaaMotion::surface}},
+         "taa: motion vectors of a moving camera and the surface (full), or of the surface "
+         "alone, as if the camera stood still (surface)");
   app.add_option("--taa-warmup", o.taa.warmup,
                  "taa: frames rendered (not written) before the first frame, to fill the history")
       ->capture_default_str()

@@ -98,6 +98,10 @@ struct LeanOptions {
 // `taa` (methods/taa.h): temporal anti-aliasing with jitter, reprojection and clamping.
 enum class TaaClamp { none, minmax, variance };
 enum class TaaHistoryFilter { bilinear, catmull_rom };
+// What the motion vectors follow: the camera's motion and the surface's (full), or the
+// surface's alone, as if the camera stood still (surface: the contrast that shows what
+// reprojecting a moving camera buys; the same images on a fixed camera).
+enum class TaaMotion { full, surface };
 struct TaaOptions {
   int jitter_count = 8;                                   // --taa-jitter-count: Halton cycle
   double alpha = 0.1;                                     // --taa-alpha: current frame's weight
@@ -105,6 +109,7 @@ struct TaaOptions {
   TaaClamp clamp = TaaClamp::variance;                    // --taa-clamp none|minmax|variance
   TaaHistoryFilter history = TaaHistoryFilter::bilinear;  // --taa-history bilinear|catmull-rom
   int warmup = 16;                                        // --taa-warmup: frames before F
+  TaaMotion motion = TaaMotion::full;                     // --taa-motion full|surface
 };
 
 // microspec (methods/microspec.h).

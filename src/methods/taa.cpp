@@ -7,6 +7,7 @@
 
 #include "base/error.h"
 #include "methods/taa_resolve.h"
+#include "scene/camera_path.h"
 #include "scene/intersect.h"
 #include "shading/radiance.h"
 
@@ -37,12 +38,22 @@ void TaaMethod::begin_frame(const FrameContext& ctx) {
   jitter_ = taa_jitter(ctx.time.frame, options_.jitter_count);
   t_prev_ = m.scene.frame_time(ctx.time.frame - 1);
   motion_.assign(static_cast<size_t>(m.width()) * m.height(), vec2(0));
+  camera_moves_ = false;
+  if (options_.motion == TaaMotion::full && m.scene.camera.moving()) {
+    const CameraPoseAt prev = camera_pose(m.scene.camera, t_prev_);
+    const CameraPoseAt now = camera_pose(m.scene.camera, ctx.time.end);
+    if (prev.position != now.position || prev.look_at != now.look_at) {
+      camera_moves_ = true;
+      prev_camera_ = CameraModel(camera_at(m.scene.camera, t_prev_), m.width(), m.height());
+    }
+  }
 }
 
 RadianceWeights TaaMethod::sample(const FrameContext& ctx, int i, int j, vec2* motion) const {
   const SceneModel& m = ctx.model;
   const vec2 p = vec2(i + 0.5, j + 0.5) + jitter_;
   const vec3 origin = m.camera.position();
+  if (motion && camera_moves_) return sample_moving(ctx, p, motion);
   if (!motion || !m.displaced()) {
     return weights_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end);
   }
@@ -54,6 +65,28 @@ RadianceWeights TaaMethod::sample(const FrameContext& ctx, int i, int j, vec2* m
     double px, py;
     if (m.camera.project(before - origin, px, py)) *motion = p - vec2(px, py);
   }
+  return value;
+}
+
+RadianceWeights TaaMethod::sample_moving(const FrameContext& ctx, const vec2& p,
+                                         vec2* motion) const {
+  const SceneModel& m = ctx.model;
+  const vec3 dir = m.camera.direction(p.x, p.y);
+  RayHit hit;
+  const RadianceWeights value = weights_along_ray(m, m.camera.position(), dir, ctx.time.end, &hit);
+  double px, py;
+  bool seen;
+  if (hit.hit) {
+    const vec3 before =
+        m.displaced()
+            ? vec3(hit.point.x, m.waves.height(hit.point.x, hit.point.z, t_prev_), hit.point.z)
+            : hit.point;
+    seen = prev_camera_.project(before - prev_camera_.position(), px, py);
+  } else {
+    seen = prev_camera_.project(dir, px, py);  // the sky: a direction
+  }
+  // Behind the previous camera: a motion that puts the history off the image (rejected).
+  *motion = seen ? p - vec2(px, py) : vec2(INFINITY);
   return value;
 }
 

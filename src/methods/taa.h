@@ -9,14 +9,19 @@
 //  1. Current samples: one camera ray per pixel through (i + 1/2, j + 1/2) + jitter(f), the
 //     Halton (2, 3) offset of index (f mod K) + 1 (`--taa-jitter-count` K, default 8),
 //     shaded at t_f exactly as `point` shades (shading/radiance.h, weights_along_ray).
-//  2. Motion vectors (the engine's velocity buffer), per sample: where the surface point
-//     it hit was at the previous frame's display time t_{f-1}. The camera of the scene
-//     spec is static, so the sky (at infinity) does not move. Flat water is the plane
-//     y = 0, which does not move: motion 0 (the reflections move, and reprojection cannot
-//     follow them: the paper's point). Displaced water is a height field displaced
-//     vertically, as a displaced grid mesh: the point (x, h(x, z, t_f), z) was at
-//     (x, h(x, z, t_{f-1}), z), projected by the camera to p'; motion = p - p', with p the
-//     sample's image-plane position.
+//  2. Motion vectors (the engine's velocity buffer), per sample: where the point it sees
+//     was on the image of the previous frame, whose camera is the camera at the previous
+//     display time t_{f-1}. Flat water is the plane y = 0, which does not move (the
+//     reflections move, and reprojection cannot follow them: the paper's point). Displaced
+//     water is a height field displaced vertically, as a displaced grid mesh: the point
+//     (x, h(x, z, t_f), z) was at (x, h(x, z, t_{f-1}), z). That point is projected by the
+//     previous frame's camera to p' (the sky, at infinity, by its direction alone: only
+//     the camera's turn moves it); motion = p - p', with p the sample's image-plane
+//     position. A fixed camera (or one whose pose at t_{f-1} equals that at t_f) is its
+//     own previous camera: the sky and flat water then have motion 0, as the static
+//     camera of format /1 and /2 gives, bit for bit. A point behind the previous camera
+//     has no history. `--taa-motion surface` keeps the surface's motion alone (projected
+//     by the current camera, as for a fixed one): the reprojection a moving camera lacks.
 //  3. Reprojection: the history (the previous output) is resampled at the pixel centre
 //     minus the motion (`--taa-history bilinear|catmull-rom`). A point outside the image
 //     has no history: the pixel shows its current sample. There is no depth test for
@@ -76,6 +81,8 @@ class TaaMethod final : public Method, public FallbackCounter {
 
  private:
   RadianceWeights sample(const FrameContext& ctx, int i, int j, vec2* motion) const;
+  // A sample at image-plane point p and its motion when the camera moves.
+  RadianceWeights sample_moving(const FrameContext& ctx, const vec2& p, vec2* motion) const;
 
   TaaOptions options_;
   Image history_;
@@ -83,6 +90,10 @@ class TaaMethod final : public Method, public FallbackCounter {
   int last_frame_ = 0;
   vec2 jitter_{0, 0};
   double t_prev_ = 0;
+  // The previous frame's camera (t_prev_) when it differs from this frame's and
+  // --taa-motion is full: the motion vectors then follow the camera.
+  bool camera_moves_ = false;
+  CameraModel prev_camera_;
   // Per-pixel motion of this frame's samples, written by shade_tile (each pixel its own
   // slot, so tiles on different threads never share one).
   mutable std::vector<vec2> motion_;

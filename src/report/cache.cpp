@@ -18,7 +18,7 @@ namespace {
 // The revision of the methods computed outside the shading kernel (lean, taa, microspec,
 // specaa, bruneton, the exact footprint's host finish): raise it when a change alters
 // their pictures, so that the frame cache renders them again.
-constexpr int kHostMethodsRevision = 2;
+constexpr int kHostMethodsRevision = 3;
 }  // namespace
 
 std::string canonical_label(const std::string& label) {

@@ -235,10 +235,16 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
     << fmt("%.3g", sc.reference.at(Region::image).flicker) << ", near "
     << fmt("%.3g", sc.reference.at(Region::near).flicker) << ", far "
     << fmt("%.3g", sc.reference.at(Region::far).flicker) << ".</p>\n";
-  // The live page `compare` writes beside the report (web/web_page.h, docs/web.md).
-  o << "<p class=\"live\"><a href=\"web/index.html?scene=" << html_escape(url_escape(sc.name))
-    << "&amp;method=staa&amp;split=point\">" << html_escape(sc.name)
-    << " live in the browser</a>: staa | point, the kernel as WebGL 2 shaders (sunglint web)</p>\n";
+  if (sc.moving_camera)
+    o << "<p class=\"camera\">" << html_escape(camera_motion_sentence(sc)) << "</p>\n";
+  // The live page `compare` writes beside the report (web/web_page.h, docs/web.md); it
+  // renders fixed cameras only.
+  if (!sc.moving_camera) {
+    o << "<p class=\"live\"><a href=\"web/index.html?scene=" << html_escape(url_escape(sc.name))
+      << "&amp;method=staa&amp;split=point\">" << html_escape(sc.name)
+      << " live in the browser</a>: staa | point, the kernel as WebGL 2 shaders (sunglint "
+         "web)</p>\n";
+  }
   o << scene_table(sc);
   if (sc.equal_cost) {
     o << "<p class=\"equal-cost\">"

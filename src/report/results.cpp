@@ -192,6 +192,9 @@ std::string results_to_json(const StudyResults& r) {
                            {"far_pixels", sc.far_pixels},
                            {"split_distance", number(sc.split_distance)},
                            {"channels", sc.channels},
+                           {"moving_camera", sc.moving_camera},
+                           {"camera_speed", number(sc.camera_speed)},
+                           {"camera_turn_deg", number(sc.camera_turn_deg)},
                            {"near_crop", to_json(sc.near_crop)},
                            {"far_crop", to_json(sc.far_crop)},
                            {"error_range", number(sc.error_range)},
@@ -244,6 +247,9 @@ StudyResults results_from_json(const std::string& text, const std::string& name)
       sc.far_pixels = sj.at("far_pixels").get<long>();
       sc.split_distance = number(sj.at("split_distance"));
       sc.channels = sj.value("channels", 1);
+      sc.moving_camera = sj.value("moving_camera", false);  // absent before format /3
+      if (sj.contains("camera_speed")) sc.camera_speed = number(sj.at("camera_speed"));
+      if (sj.contains("camera_turn_deg")) sc.camera_turn_deg = number(sj.at("camera_turn_deg"));
       sc.near_crop = crop_from_json(sj.at("near_crop"));
       sc.far_crop = crop_from_json(sj.at("far_crop"));
       sc.error_range = number(sj.at("error_range"));
@@ -391,6 +397,14 @@ std::string rmse_cell(const RegionMetrics& m) {
 
 }  // namespace
 
+std::string camera_motion_sentence(const SceneResult& sc) {
+  if (!sc.moving_camera) return "";
+  return "The camera moves (format /3): up to " + format_number("%.3g", sc.camera_speed) +
+         " m/s and " + format_number("%.3g", sc.camera_turn_deg) +
+         " degrees/s over the frames studied; the near and far halves are those of the first "
+         "frame's camera.";
+}
+
 std::string reference_noise_text(const SceneResult& sc, const std::string& q) {
   const RegionMetrics &a = sc.reference.at(Region::image), &n = sc.reference.at(Region::near),
                       &f = sc.reference.at(Region::far);
@@ -495,6 +509,7 @@ std::string results_to_markdown(const StudyResults& r, const std::string& prefix
       << fmt("%.4g", sc.reference.at(Region::near).flicker) << ", far "
       << fmt("%.4g", sc.reference.at(Region::far).flicker) << "), "
       << fmt("%.4g", sc.reference.ms_per_frame) << " ms per frame.\n\n";
+    if (sc.moving_camera) o << camera_motion_sentence(sc) << "\n\n";
     o << reference_noise_text(sc, "`") << "\n\n";
     o << "| variant | RMSE (corrected) | PSNR (dB) | temporal error | flicker | near RMSE "
          "(corrected) | far RMSE (corrected) | near temporal | far temporal | ms/frame |\n";

@@ -85,6 +85,12 @@ struct SceneResult {
   long water_pixels = 0, near_pixels = 0, far_pixels = 0;
   double split_distance = 0;
   int channels = 1;  // of the scene's images: 1 grey, 3 colour
+  // A moving camera (format /3) over the studied frames, from the first frame's shutter
+  // opening to the last frame: the fastest speed (m/s) and turn rate (degrees/s) of the
+  // keyframe segments in that interval (scene/camera_path.h, camera_motion); the water
+  // regions are those of the first frame's camera.
+  bool moving_camera = false;
+  double camera_speed = 0, camera_turn_deg = 0;
   CropBox near_crop, far_crop;
   double error_range = 0;  // |difference| at the ends of the error maps' colour scale
   VariantResult reference;
@@ -171,5 +177,8 @@ std::string replace_marked_section(const std::string& text, const std::string& b
 // which figures are corrected for it, and the methods whose RMSEs differ by less than it
 // (labels quoted with `quote`).
 std::string reference_noise_text(const SceneResult& sc, const std::string& quote);
+
+// The sentence on a moving camera's speed and turn rate; "" for a fixed camera.
+std::string camera_motion_sentence(const SceneResult& sc);
 
 }  // namespace sg

@@ -28,6 +28,7 @@
 #include "report/plan.h"
 #include "report/regions.h"
 #include "report/video.h"
+#include "scene/camera_path.h"
 
 namespace sg {
 namespace fs = std::filesystem;
@@ -507,7 +508,19 @@ SceneResult Study::run_scene(int scene_index, const std::string& scene_slug) {
   r.name = scene.name;
   r.file = sc.file;
   r.shown_frame = c_.last_frame;
-  const WaterRegions w = water_regions(model, frame_time(scene, c_.first_frame).end);
+  // The water regions of the first frame (of its camera, for a moving one); the camera's
+  // motion over the frames studied (the report states it).
+  const FrameTime first = frame_time(scene, c_.first_frame);
+  const WaterRegions w = water_regions(frame_model(scene, first), first.end);
+  if (scene.camera.moving()) {
+    const double t_end = scene.frame_time(c_.last_frame);
+    for (const CameraSegmentMotion& seg : camera_motion(scene.camera)) {
+      if (seg.t1 <= first.start || seg.t0 >= t_end) continue;  // outside the frames
+      r.moving_camera = r.moving_camera || seg.speed > 0 || seg.turn_rate_deg > 0;
+      r.camera_speed = std::max(r.camera_speed, seg.speed);
+      r.camera_turn_deg = std::max(r.camera_turn_deg, seg.turn_rate_deg);
+    }
+  }
   r.water_pixels = w.water_pixels;
   r.near_pixels = w.near_pixels;
   r.far_pixels = w.far_pixels;

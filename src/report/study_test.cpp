@@ -11,7 +11,9 @@
 #include "methods/point.h"
 #include "report/cache.h"
 #include "report/regions.h"
+#include "report/results.h"
 #include "report/study.h"
+#include "scene/camera_path.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -257,6 +259,40 @@ TEST_F(StudyTest, ColourSceneHasPerChannelFiguresCropsAndAFlickerTrace) {
   EXPECT_TRUE(fs::exists(fs::path(dir_) / sc.crops));
   EXPECT_TRUE(fs::exists(fs::path(dir_) / sc.methods[0].near_crop_picture));
   EXPECT_EQ(sc.near_crop.width, 24 / 4);
+}
+
+TEST_F(StudyTest, MovingCameraStatesItsMotionAndTheFirstFramesRegions) {
+  // A /3 camera that turns and moves over the frames studied (frames 0-3 at 30 fps): the
+  // results give its fastest speed and turn rate there, in results.json and the report's
+  // text; the water regions are those of the camera at the first frame.
+  c_.methods.pop_back();  // no ema
+  Scene& s = c_.scenes[0].scene;
+  const CameraDesc fixed = s.camera;
+  s.camera.keyframes = {{-1.0, {0, 2.5, 0}, {-20, 0, -60}},
+                        {1.0, {0, 2.5, -4}, {20, 0, -60}},
+                        {5.0, {0, 2.5, -4}, {20, 0, -60}}};  // stands after 1 s
+  const StudyResults r = run_study(c_);
+  const SceneResult& sc = r.scenes[0];
+  EXPECT_TRUE(sc.moving_camera);
+  EXPECT_NEAR(sc.camera_speed, 2.0, 1e-12);  // 4 m in 2 s
+  EXPECT_GT(sc.camera_turn_deg, 10);
+  EXPECT_LT(sc.camera_turn_deg, 20);  // about 37 degrees in 2 s
+  const FrameTime f0 = frame_time(s, 0);
+  const WaterRegions w = water_regions(frame_model(s, f0), f0.end);
+  EXPECT_EQ(sc.water_pixels, w.water_pixels);
+  EXPECT_EQ(sc.split_distance, w.split_distance);
+  EXPECT_NE(sc.split_distance, water_regions(SceneModel(s), f0.end).split_distance);
+  const StudyResults back = results_from_json(results_to_json(r), "results");
+  EXPECT_TRUE(back.scenes[0].moving_camera);
+  EXPECT_EQ(back.scenes[0].camera_speed, sc.camera_speed);
+  EXPECT_EQ(back.scenes[0].camera_turn_deg, sc.camera_turn_deg);
+  EXPECT_NE(camera_motion_sentence(sc).find("up to 2 m/s"), std::string::npos);
+  EXPECT_NE(results_to_markdown(r).find(camera_motion_sentence(sc)), std::string::npos);
+  // A fixed camera states nothing.
+  s.camera = fixed;
+  const StudyResults still = run_study(c_);
+  EXPECT_FALSE(still.scenes[0].moving_camera);
+  EXPECT_EQ(camera_motion_sentence(still.scenes[0]), "");
 }
 
 // The flicker pixel is where point sampling's temporal error is largest: checked against a

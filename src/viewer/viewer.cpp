@@ -10,6 +10,7 @@
 #include <deque>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <thread>
 
 #include "base/atomic_file.h"
@@ -18,6 +19,8 @@
 #include "gl_engine/gl_engine.h"
 #include "image/image_io.h"
 #include "methods/method.h"
+#include "scene/camera_path.h"
+#include "viewer/camera_record.h"
 #include "viewer/gpu_display.h"
 #include "viewer/texture_view.h"
 #include "viewer/view_camera.h"
@@ -98,13 +101,38 @@ class Viewer {
     sides_[1].method = split_ ? o.split : o.method;
     sides_[1].options = o.options;
     if (split_) build(sides_[1]);
+    // Keys at most four a frame interval apart: a shutter (at most one interval) then holds
+    // at most six keys, within the kernel's eight.
+    if (!o.record.empty())
+      recorder_ = std::make_unique<CameraRecorder>(0.25 / scene_.animation.fps);
+    clock_ = view_time(scene_, 0).end;
+  }
+
+  // The recorded path as a scene file (ViewerOptions::record).
+  void write_record() {
+    if (!recorder_) return;
+    write_recording(o_.record, recorder_->scene(scene_));
+    std::printf("view: the camera's path, %zu keys -> %s\n", recorder_->keys().size(),
+                o_.record.c_str());
   }
 
   void scripted() {
     std::vector<std::uint8_t> shot;
     const auto t0 = Clock::now();
+    const CameraDesc start = edits_.camera;
+    const vec3 target = orbit_target(start);
     for (int f = 0; f < o_.frames; ++f) {
       window_.begin_frame();
+      clock_ = frame_time(scene_, f).end;
+      if (o_.orbit_rate_deg != 0) {  // a scripted flight: the orbit at the frame's time
+        constexpr double kDeg = 3.14159265358979323846 / 180;
+        ViewEdits e = edits_;
+        e.camera =
+            orbit(start, target, o_.orbit_rate_deg * kDeg * (clock_ - scene_.animation.t0), 0);
+        bool dirty = false;
+        set_edits(e, dirty);
+        if (!status_.empty()) throw Error("view: --orbit-rate: " + status_);
+      }
       render(f);
       if (f == o_.frames - 1 && o_.reference_batches > 0) {
         playing_ = false;
@@ -162,9 +190,12 @@ class Viewer {
       camera_input(dt, dirty);
       if (playing_) {
         position_ += speed_ * scene_.animation.fps * dt;
+        clock_ += speed_ * dt;
         wrap_position();
         dirty = true;
       }
+      // A frame rendered in motion while paused: once the camera stands, render it still.
+      if (!dirty && !playing_ && last_moved_) dirty = true;
       if (dirty) {
         render(position_);
         dirty = false;
@@ -217,9 +248,19 @@ class Viewer {
     if (position_ < 0) position_ += n;
   }
 
-  // Every side's frame at `position`, displayed, split, uploaded.
+  // Every side's frame at `position`, displayed, split, uploaded. A camera that moved since
+  // the frame before is keyed over the shutter (viewer/camera_record.h); the path recorded.
   void render(double position) {
-    const FrameContext base{*model_, view_time(scene_, position), 0};
+    const FrameTime ft = view_time(scene_, position);
+    const Scene frame_scene = moving_view_scene(scene_, cut_ ? scene_.camera : last_camera_, ft);
+    std::optional<SceneModel> moved;
+    if (frame_scene.camera.moving()) moved.emplace(frame_model(frame_scene, ft));
+    last_moved_ = frame_scene.camera.moving() && !scene_.camera.moving();
+    last_camera_ = camera_at(scene_.camera, ft.end);
+    last_camera_.keyframes.clear();
+    cut_ = false;
+    if (recorder_) recorder_->add(clock_, last_camera_);
+    const FrameContext base{moved ? *moved : *model_, ft, 0};
     for (int k = 0; k < (split_ ? 2 : 1); ++k) {
       Side& s = sides_[k];
       const FrameContext ctx{base.model, base.time, s.options.seed};
@@ -291,6 +332,11 @@ class Viewer {
   void camera_input(double dt, bool& dirty) {
     const ImGuiIO& io = ImGui::GetIO();
     CameraDesc c = edits_.camera;
+    if (c.moving()) {  // a keyed camera (format /3): a move takes it over where it stands
+      c = camera_at(c, view_time(scene_, position_).end);
+      c.keyframes.clear();
+    }
+    const CameraDesc before = c;
     const bool near_divider = split_ && std::abs(io.MousePos.x - divider_) < 6;
     if (!io.WantCaptureMouse && !dragging_ && !near_divider) {
       if (ImGui::IsMouseClicked(0)) {
@@ -318,7 +364,7 @@ class Viewer {
         c = fly(c, v * right, v * up, v * forward);
       }
     }
-    if (c.position != edits_.camera.position || c.look_at != edits_.camera.look_at) {
+    if (c.position != before.position || c.look_at != before.look_at) {
       ViewEdits e = edits_;
       e.camera = c;
       set_edits(e, dirty);
@@ -331,15 +377,17 @@ class Viewer {
     recompose();
   }
 
-  // The scene's camera again.
+  // The scene's camera again (a cut: no motion from the camera before).
   void home(bool& dirty) {
     ViewEdits e = edits_;
     e.camera = base_.camera;
     set_edits(e, dirty);
+    cut_ = true;
   }
 
   void step(int by, bool& dirty) {
     playing_ = false;
+    if (by > 0) clock_ += by / scene_.animation.fps;
     position_ = std::floor(position_) + by;
     wrap_position();
     dirty = true;
@@ -582,12 +630,28 @@ class Viewer {
       edited = true;
     }
     if (edited) set_edits(e, dirty);
-    if (ImGui::Button("scene as loaded")) set_edits(edits_of(base_), dirty);
+    if (ImGui::Button("scene as loaded")) {
+      set_edits(edits_of(base_), dirty);
+      cut_ = true;
+    }
     ImGui::SameLine();
     if (ImGui::Button("Home (H)")) home(dirty);
     const CameraDesc& cam = edits_.camera;
-    ImGui::TextWrapped("camera (%.2f, %.2f, %.2f) looks at (%.1f, %.1f, %.1f)", cam.position.x,
-                       cam.position.y, cam.position.z, cam.look_at.x, cam.look_at.y, cam.look_at.z);
+    if (cam.moving()) {
+      ImGui::TextWrapped("camera: the scene's keyframes (a move takes it over)");
+    } else {
+      ImGui::TextWrapped("camera (%.2f, %.2f, %.2f) looks at (%.1f, %.1f, %.1f)", cam.position.x,
+                         cam.position.y, cam.position.z, cam.look_at.x, cam.look_at.y,
+                         cam.look_at.z);
+    }
+    if (recorder_) {
+      ImGui::TextWrapped("recording the path: %zu keys, %.2f s (written to %s at the end)",
+                         recorder_->keys().size(),
+                         recorder_->keys().empty()
+                             ? 0.0
+                             : recorder_->keys().back().time - recorder_->keys().front().time,
+                         o_.record.c_str());
+    }
     // Saving.
     ImGui::Separator();
     ImGui::InputText("file", path_, sizeof path_);
@@ -632,6 +696,13 @@ class Viewer {
   float speed_ = 1;
   char path_[512] = "view.json";
   std::string status_;
+  // The camera in motion: the last frame's camera (at its display time), whether that frame
+  // was keyed over its shutter, a jump (home) that the next frame must not blur, and the
+  // recorded path on its clock (ViewerOptions::record).
+  CameraDesc last_camera_;
+  bool last_moved_ = false, cut_ = true;
+  std::unique_ptr<CameraRecorder> recorder_;
+  double clock_ = 0;
 };
 
 }  // namespace
@@ -647,6 +718,7 @@ void run_viewer(const ViewerOptions& o) {
   } else {
     v.interactive();
   }
+  v.write_record();
 }
 
 }  // namespace sg::viewer

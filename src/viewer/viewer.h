@@ -10,9 +10,18 @@
 // docs/viewer.md lists the keys.
 //
 // A scripted run (`frames` > 0) needs no input: it renders frames 0 .. frames-1 of the
-// animation in the window (without the controls unless `show_controls`), then writes the last
-// frame's displayed image (`screenshot`, a PNG read back from the window) and the view's scene file
-// (`save_scene`), prints the mean GPU time per frame and returns.
+// animation in the window (without the controls unless `show_controls`), the camera orbiting
+// at `orbit_rate_deg` if given, then writes the last frame's displayed image (`screenshot`, a
+// PNG read back from the window) and the view's scene file (`save_scene`), prints the mean GPU
+// time per frame and returns.
+//
+// A camera in motion (viewer/camera_record.h): a frame whose camera moved since the frame
+// before is rendered with the camera keyed over its shutter (previous camera at the opening,
+// current at the end), so the methods see the motion; `record` writes the path the camera
+// took as a `/3` scene when the view ends. Its clock: a scripted run's frame times; an
+// interactive view's clock starts at the animation's t0 and runs while the animation plays
+// (at the playback speed, unwrapped past the last frame) or steps forward; it stands while
+// paused or scrubbed, and moves made then replace the pose at that time.
 #pragma once
 
 #include <optional>
@@ -36,6 +45,8 @@ struct ViewerOptions {
   int frames = 0;              // > 0: a scripted run of frames 0 .. frames-1
   std::string screenshot;      // scripted: the last frame's displayed image (.png)
   std::string save_scene;      // scripted: the view's scene (.json)
+  std::string record;          // the camera's path as a /3 scene (.json), written at the end
+  double orbit_rate_deg = 0;   // scripted: degrees per second of scene time about the vertical
   bool show_controls = false;  // scripted: the controls drawn too (pictures of the viewer)
   // Scripted: > 0 shows the still-frame reference (viewer/view_reference.h) of the last
   // frame after this many batches instead of the method; with reference_difference > 0,

@@ -4,7 +4,9 @@
 # most 2/255); a split view's halves equal each method's render; a view saved as a scene
 # file renders as the view showed it; without a display, with a display that does not
 # open, below OpenGL 4.5 and with a bad scene: a clear error, a non-zero exit, no file; the
-# still-frame reference against `render --method reference`.
+# still-frame reference against `render --method reference`; a camera that moves in a scripted
+# run (`--orbit-rate`) is seen moving within each shutter, and `--record`'s file renders as
+# the view showed it.
 # Usage: viewer_test.sh SUNGLINT SOURCE_DIR WORK_DIR
 # Runs itself under `xvfb-run -a` (or on $SUNGLINT_TEST_DISPLAY); exits 77 (skipped) when
 # there is no Xvfb, unless SUNGLINT_REQUIRE_GL=1.
@@ -165,7 +167,36 @@ p=$(peak "$work/view_refdiff2.png")
 expect_refused "reference batches without frames" "need --frames" "$work/refused.png" \
   "$bin" view "$scene" --reference-batches 2
 
-# 5. Refusals: a clear error, a non-zero exit, no file.
+# 5. A camera in motion: a scripted orbit (30 degrees a second) is keyed over each frame's
+# shutter (supersample with 4 times sees it: motion blur), and the recorded path is a /3
+# scene whose render is the view; the last camera held still renders differently. A /3
+# scene's own keys are recorded as its path too.
+blur=(-m supersample --samples 2x2x4)
+run view-orbit-rate "$bin" view "$scene" "${blur[@]}" --frames 3 "${small[@]}" --orbit-rate 30 \
+  --screenshot "$work/view_flight.png" --record "$work/flight.json" --save-scene "$work/flight_last.json"
+run render-flight "$bin" render "$work/flight.json" "${blur[@]}" --engine gl --frame 2 --display -q \
+  -o "$work/render_flight.png"
+run render-flight-still "$bin" render "$work/flight_last.json" "${blur[@]}" --engine gl --frame 2 \
+  --display -q -o "$work/render_flight_still.png"
+expect_close "recorded flight = the view (frame 2, in motion)" 2 "$work/view_flight.png" \
+  "$work/render_flight.png"
+expect_apart "the view's frame is in motion (not the last camera held still)" \
+  "$work/view_flight.png" "$work/render_flight_still.png"
+grep -q '"sunglint-scene/3"' "$work/flight.json" && pass || fail "--record: not a /3 file"
+run view-pan-record "$bin" view "$src/tests/scenes/pan.json" "${blur[@]}" --frames 3 "${small[@]}" \
+  --screenshot "$work/view_pan.png" --record "$work/pan_path.json"
+run render-pan-record "$bin" render "$work/pan_path.json" "${blur[@]}" --engine gl --frame 2 \
+  --display -q -o "$work/render_pan_path.png"
+expect_close "a /3 scene's recorded path = the view" 2 "$work/view_pan.png" \
+  "$work/render_pan_path.png"
+expect_refused "record not json" "--record: must be a .json file" "$work/refused.txt" \
+  "$bin" view "$scene" --frames 1 --record "$work/refused.txt"
+expect_refused "orbit-rate without frames" "--orbit-rate: need --frames N" "$work/refused.json" \
+  "$bin" view "$scene" --orbit-rate 10 --record "$work/refused.json"
+expect_refused "orbit of a keyed camera" "the scene's camera is keyed" "$work/refused.json" \
+  "$bin" view "$src/tests/scenes/pan.json" --frames 1 --orbit-rate 10 --record "$work/refused.json"
+
+# 6. Refusals: a clear error, a non-zero exit, no file.
 shot=$work/refused.png
 expect_refused "no display" "no display: DISPLAY is not set" "$shot" \
   env -u DISPLAY -u WAYLAND_DISPLAY "$bin" view "$scene" -m point --frames 1 "${size[@]}" \
