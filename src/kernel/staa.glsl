@@ -447,6 +447,14 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
       in_light = p.fallback_riemann
                      ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
                      : gaussian_disk_mass(path.centre[K], cov_r, R);
+    } else if (v.moving && !p.fallback_riemann) {
+      // A moving camera's paths are long: each sub-segment's time integral in closed form
+      // (gaussian.glsl, gaussian_disk_mass_along), at the cost of one instant's mass.
+      for (int k = 0; k < K; ++k) {
+        if (!(path.valid[k] && path.valid[k + 1])) continue;
+        in_light += gaussian_disk_mass_along(path.centre[k], path.centre[k + 1], cov_r, R);
+      }
+      in_light *= inv_k;
     } else {
       for (int k = 0; k < K; ++k) {
         if (!(path.valid[k] && path.valid[k + 1])) continue;
