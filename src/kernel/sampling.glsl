@@ -108,7 +108,11 @@ SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) 
   Footprint fp = pixel_footprint(waves, f, pw.centre.x, pw.centre.y, 0.0, f.displaced);
   if (!fp.hit) return miss_pixel_weights(f, i, j);
   PathViews v = path_views(f, fp, pw.centre.x, pw.centre.y);
-  PathGradients g =
-      v.moving ? path_gradients_moving(waves, f, v) : path_gradients(waves, f, fp.point);
+  PathGradients g;
+  if (v.moving) {
+    g = path_gradients_moving(waves, f, v);
+  } else {
+    g = path_gradients(waves, f, fp.point);
+  }
   return with_sky_part(f, pw, i, j, temporal_shares_along(f, g, v).weights);
 }
