@@ -23,3 +23,18 @@ SG_FN real projected_frequency(vec2 k, mat2 J, bool max_norm) {
 SG_FN real alias_fraction(real frequency, real start, real end) {
   return clamp((frequency - start) / (end - start), 0.0, 1.0);
 }
+
+// Under a moving camera the pixel's footprint sweeps over the shutter: the parallelogram
+// X + J [-1/2, 1/2]^2 convolved with the water point's motion X_0 -> X_K, the segment
+// X + Delta [-1/2, 1/2] (Delta = X_K - X_0; docs/method.md, "A moving camera"). The phase
+// then changes along three axes of the swept box, k . J_0, k . J_1 and k . Delta, and the
+// projected frequency is that of all three (max or norm as above): a wave whose phase
+// turns through a large part of a cycle over the motion is not followed by the path's
+// K + 1 instants any more than one across the pixel is by its centre.
+SG_FN real swept_frequency(vec2 k, mat2 J, vec2 delta, bool max_norm) {
+  real fx = abs(dot(k, J[0]));
+  real fy = abs(dot(k, J[1]));
+  real fm = abs(dot(k, delta));
+  real rad = max_norm ? max(max(fx, fy), fm) : sqrt(fx * fx + fy * fy + fm * fm);
+  return rad * kInvTwoPi;
+}

@@ -143,6 +143,113 @@ SG_FN real gaussian_disk_mass(vec2 mean, mat2 cov, real R) {
   return mass;
 }
 
+// The mass of N(a + t (b - a), cov) in the disk |p| <= R averaged over t in [0, 1]: Eq. 17's
+// time integral along one straight sub-segment of the path, in closed form in time (the
+// fallback under a moving camera, staa.glsl, whose paths are long: the midpoint rule
+// above would need a sample per third of the bump's width). With x along the segment's unit
+// direction e (length L) and y along its normal n, the Gaussian splits into the marginal
+// N(y; c_y, v_y) of its normal coordinate (c_y = n . a, v_y = n^T cov n) and the
+// conditional of x, N(x; a_x + t L + r (y - c_y), v_x|y) (r = e^T cov n / v_y,
+// v_x|y = e^T cov e - r^2 v_y). The mean moves along x only, so the time average of the
+// conditional is (Phi((x - m) / s) - Phi((x - m - L) / s)) / L (m = a_x + r (y - c_y),
+// s = sqrt(v_x|y)), and its integral over the disk's chord [-h, h] (h = sqrt(R^2 - y^2)) is,
+// with int Phi(z) dz = G(z) = z Phi(z) + phi(z) = max(z, 0) + T(|z|), T(z) = phi(z) - z Phi(-z),
+//     (1 / L) [overlap([-h, h], [m, m + L]) + s (T(|z1|) - T(|z2|) - T(|z3|) + T(|z4|))],
+// z1,2 = (+-h - m) / s and z3,4 = z1,2 - L / s: the overlap is the exact limit as s -> 0 and
+// the T terms, each below phi(z), correct it near the ends. What is left is a 1D integral
+// over y of the marginal times that, taken as gaussian_disk_mass takes its own
+// (y = R sin(u), the range clipped to +-9 deviations about c_y, 30-point Gauss-Legendre on
+// each piece between the integrand's kinks). A segment of length 0 is the instant's mass;
+// a Gaussian that is a line along the segment (v_y = 0) has the one chord y = c_y.
+SG_FN real gaussian_tail_integral(real z) {
+  real t = abs(z);
+  if (t >= 9.0) return 0.0;
+  return exp(-0.5 * t * t) * kInvSqrtTwoPi - t * 0.5 * erfc(t * kInvSqrtTwo);
+}
+
+SG_FN real segment_chord_average(real h, real m, real L, real s) {
+  real overlap = max(0.0, min(h, m + L) - max(-h, m));
+  if (!(s > 0.0)) return overlap / L;
+  real z1 = (h - m) / s;
+  real z2 = (-h - m) / s;
+  real z3 = z1 - L / s;
+  real z4 = z2 - L / s;
+  real tails = gaussian_tail_integral(z1) - gaussian_tail_integral(z2) -
+               gaussian_tail_integral(z3) + gaussian_tail_integral(z4);
+  return (overlap + s * tails) / L;
+}
+
+SG_FN real gaussian_disk_mass_along(vec2 a, vec2 b, mat2 cov, real R) {
+  vec2 d = b - a;
+  real L = length(d);
+  vec2 e = L > 0.0 ? d / L : vec2(1.0, 0.0);
+  vec2 n = vec2(-e.y, e.x);
+  real vy = dot(n, cov * n);
+  if (!(L > 0.0)) return gaussian_disk_mass(a, cov, R);
+  real cy = dot(n, a);
+  real ax = dot(e, a);
+  if (!(vy > 0.0)) {
+    // A line along the segment: the one chord y = c_y.
+    if (!(abs(cy) < R)) return 0.0;
+    return segment_chord_average(sqrt(R * R - cy * cy), ax, L, sqrt(max(0.0, dot(e, cov * e))));
+  }
+  real sy = sqrt(vy);
+  real r = dot(e, cov * n) / vy;
+  real s = sqrt(max(0.0, dot(e, cov * e) - r * r * vy));
+  // Beyond 9 deviations of the marginal, nothing.
+  real lo = max(-R, cy - 9.0 * sy);
+  real hi = min(R, cy + 9.0 * sy);
+  if (hi <= lo) return 0.0;
+  // The pieces: [ulo, uhi] cut where the lines x = m(y) and x = m(y) + L cross the circle
+  // (where the chord's ends pass the segment's ends: the integrand's kinks as s -> 0),
+  // (alpha + r y)^2 + y^2 = R^2 with alpha = a_x - r c_y (+ L).
+  real cut[6];
+  cut[0] = asin(clamp(lo / R, -1.0, 1.0));
+  int count = 1;
+  real uhi = asin(clamp(hi / R, -1.0, 1.0));
+  for (int line = 0; line < 2; ++line) {
+    real alpha = ax - r * cy + (line == 1 ? L : 0.0);
+    real q2 = 1.0 + r * r;
+    real disc = R * R * q2 - alpha * alpha;
+    if (!(disc > 0.0)) continue;
+    for (int sign = 0; sign < 2; ++sign) {
+      real y = (-alpha * r + (sign == 0 ? -1.0 : 1.0) * sqrt(disc)) / q2;
+      real u = asin(clamp(y / R, -1.0, 1.0));
+      if (u > cut[0] && u < uhi) {
+        cut[count] = u;
+        count += 1;
+      }
+    }
+  }
+  // Sorted (insertion), then the upper end.
+  for (int i = 2; i < count; ++i) {
+    for (int j = i; j > 1 && cut[j] < cut[j - 1]; --j) {
+      real t = cut[j];
+      cut[j] = cut[j - 1];
+      cut[j - 1] = t;
+    }
+  }
+  cut[count] = uhi;
+  real mass = 0.0;
+  for (int piece = 0; piece < count; ++piece) {
+    real mid = 0.5 * (cut[piece] + cut[piece + 1]);
+    real half_width = 0.5 * (cut[piece + 1] - cut[piece]);
+    if (!(half_width > 0.0)) continue;
+    real sum = 0.0;
+    for (int q = 0; q < 30; ++q) {
+      real node = q < 15 ? kGauss30Node[q] : -kGauss30Node[q - 15];
+      real u = mid + half_width * node;
+      real y = R * sin(u);
+      real h = R * cos(u);
+      real dens = exp(-0.5 * sqr((y - cy) / sy)) * kInvSqrtTwoPi / sy;
+      real m = ax + r * (y - cy);
+      sum += dens * segment_chord_average(h, m, L, s) * h * kGauss30Weight[q < 15 ? q : q - 15];
+    }
+    mass += half_width * sum;
+  }
+  return mass;
+}
+
 // The paper's fallback: a Riemann sum over n x n cells covering the disk.
 SG_FN real gaussian_disk_mass_riemann(vec2 mean, mat2 cov, real R, int n) {
   real det = determinant(cov);

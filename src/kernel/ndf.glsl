@@ -38,6 +38,18 @@ SG_FN real footprint_half_width(vec2 k, mat2 Jinv) {
   return 0.5 * dot(k, k) / max(m, 1e-30);
 }
 
+// D over the footprint swept by the water point's motion Delta over the shutter
+// (aliasing.glsl, swept_frequency): the phase along the swept footprint is Appendix A's
+// theta + u, u uniform on [-D, D], plus the motion's k . Delta w, w uniform on
+// [-1/2, 1/2], a uniform of half-width m = |k . Delta| / 2. The sum of the two has variance
+// (D^2 + m^2) / 3; the uniform phase of the same variance, half-width sqrt(D^2 + m^2),
+// goes into Eqs. 23-24 in place of D (its moments agree with the exact convolution's,
+// cos(theta) sinc(D) sinc(m), to second order in D and m; both vanish as either grows).
+SG_FN real swept_half_width(real D, vec2 k, vec2 delta) {
+  real m = 0.5 * dot(k, delta);
+  return sqrt(D * D + m * m);
+}
+
 // Eq. 3's term of a wave of (aliasing) amplitude A.
 SG_FN void ndf_add_uniform(INOUT(NdfMoments) m, real A, vec2 k) {
   real e = 0.5 * A * A;

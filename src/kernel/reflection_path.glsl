@@ -14,6 +14,13 @@
 // light disk and below the horizon (arc.glsl, exact for a constant-speed great-circle
 // arc), combined into weights with the sub-arc's mean Fresnel factor (the sky at the
 // height of the sub-arc's middle), averaged over the sub-arcs.
+//
+// A camera that moves over the shutter (format /3, camera.glsl; docs/method.md, "A moving
+// camera"): at instant t_k the pixel's ray is that of camera_at(t_k), which meets the water
+// at its own point p_k; the gradient of instant k is the waves' at p_k and t_k (their
+// phases there, one cosine per wave and instant), and the reflection of instant k is that
+// of the view from p_k towards camera_at(t_k) (PathViews). A fixed camera keeps the one
+// point and view, and the phases by rotation as above, bit for bit.
 
 struct PathGradients {
   vec2 g[kMaxSegments + 1];  // (dh/dx, dh/dz) of the resolved waves at t_0 .. t_K
@@ -39,6 +46,67 @@ SG_FN void path_gradients_add(INOUT(PathGradients) p, IN(WaveBuffer) waves, IN(F
   }
 }
 
+// The water points and views of the path's instants. moving false: the camera stands
+// still over the shutter, and every instant has the display time's point and view.
+struct PathViews {
+  bool moving;
+  vec2 point[kMaxSegments + 1];  // (x, z) of p_k (camera-relative, as Footprint.point)
+  vec3 view[kMaxSegments + 1];   // unit, from p_k towards the camera at t_k
+};
+
+// dt of instant k: t_k - end = -duration (K - k) / K (interface.glsl, Frame.segments).
+SG_FN real path_instant_dt(IN(Frame) f, int k) {
+  return -f.duration * real(f.segments - k) / real(f.segments);
+}
+
+SG_FN PathViews path_views_fixed(vec3 point, vec3 view) {
+  PathViews v;
+  v.moving = false;
+  for (int k = 0; k <= kMaxSegments; ++k) {
+    v.point[k] = vec2(point.x, point.z);
+    v.view[k] = view;
+  }
+  return v;
+}
+
+// The instants' points and views of image-plane point (px, py), whose display-time
+// footprint is fp (its point p_K and view). Under a moving camera the ray of camera_at(t_k)
+// through (px, py) meets the horizontal plane at p_K's height: the water at rest on flat
+// water; on displaced water that height is held over the shutter, as the paper holds its
+// one point (Sec. 3.3), rather than intersecting the waves again per instant. An instant
+// whose ray does not reach that plane keeps p_K and its view.
+SG_FN PathViews path_views(IN(Frame) f, IN(Footprint) fp, real px, real py) {
+  PathViews v = path_views_fixed(fp.point, fp.view);
+#ifndef SG_FIXED_CAMERA
+  if (f.camera_keys.count > 0) {
+    v.moving = true;
+    for (int k = 0; k < f.segments; ++k) {
+      Camera c = camera_at(f, path_instant_dt(f, k));
+      vec3 d = camera_direction(c, px, py);
+      real height = c.position.y - fp.point.y;
+      if (d.y < 0.0 && height > 0.0) {
+        vec3 q = c.position + (height / -d.y) * d;
+        v.point[k] = vec2(q.x, q.z);
+        v.view[k] = normalize(c.position - q);
+      }
+    }
+  }
+#endif
+  return v;
+}
+
+// Wave i's term in the gradients of every instant under a moving camera: its phase at the
+// display time's point (cosine c) for instant K, and at p_k and t_k for the others.
+SG_FN void path_gradients_add_moving(INOUT(PathGradients) p, IN(Frame) f, IN(PathViews) v,
+                                     IN(Wave) w, real A, real c) {
+  vec2 k = vec2(w.a, w.b);
+  p.g[f.segments] += (A * c) * k;
+  for (int q = 0; q < f.segments; ++q) {
+    real theta = wave_phase(w, v.point[q].x, v.point[q].y, path_instant_dt(f, q));
+    p.g[q] += (A * cos(theta)) * k;
+  }
+}
+
 // Every wave at full amplitude: the path of staa-temporal (the definition; the CPU engine's
 // vectorised equivalent under SG_CPU_WAVE_SUMS).
 SG_FN PathGradients wave_sum_path(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
@@ -59,6 +127,26 @@ SG_FN PathGradients path_gradients(IN(WaveBuffer) waves, IN(Frame) f, vec3 point
 }
 #endif
 
+// The same under a moving camera (the definition; the CPU engine's vectorised equivalent
+// under SG_CPU_WAVE_SUMS).
+SG_FN PathGradients wave_sum_path_moving(IN(WaveBuffer) waves, IN(Frame) f, IN(PathViews) v) {
+  PathGradients p = path_gradients_zero(f.segments);
+  for (int i = 0; i < f.wave_count; ++i) {
+    Wave w = wave_at(waves, f, i);
+    real theta = wave_phase(w, v.point[f.segments].x, v.point[f.segments].y, 0.0);
+    path_gradients_add_moving(p, f, v, w, w.A, cos(theta));
+  }
+  return p;
+}
+
+#ifdef SG_CPU_WAVE_SUMS
+PathGradients path_gradients_moving(IN(WaveBuffer) waves, IN(Frame) f, IN(PathViews) v);
+#else
+SG_FN PathGradients path_gradients_moving(IN(WaveBuffer) waves, IN(Frame) f, IN(PathViews) v) {
+  return wave_sum_path_moving(waves, f, v);
+}
+#endif
+
 struct PathShares {
   vec4 weights;   // the temporal method's weights (sub-arcs combined one by one)
   real in_light;  // fractions of the interval in the light and below the horizon
@@ -66,7 +154,8 @@ struct PathShares {
   real fresnel;  // the mean Fresnel factor
 };
 
-SG_FN PathShares temporal_shares(IN(Frame) f, IN(PathGradients) p, vec3 view) {
+// The instants' views are v's (a fixed camera: all the same).
+SG_FN PathShares temporal_shares_along(IN(Frame) f, IN(PathGradients) p, IN(PathViews) v) {
   PathShares s;
   s.weights = vec4(0.0);
   s.in_light = 0.0;
@@ -75,12 +164,12 @@ SG_FN PathShares temporal_shares(IN(Frame) f, IN(PathGradients) p, vec3 view) {
   int K = f.segments;
   real inv_k = 1.0 / real(K);
   vec3 n0 = normalize(normal_direction(p.g[0]));
-  vec3 r0 = reflect_view(n0, view);
-  real F0 = fresnel_factor(f.fresnel, dot(n0, view));
+  vec3 r0 = reflect_view(n0, v.view[0]);
+  real F0 = fresnel_factor(f.fresnel, dot(n0, v.view[0]));
   for (int k = 0; k < K; ++k) {
     vec3 n1 = normalize(normal_direction(p.g[k + 1]));
-    vec3 r1 = reflect_view(n1, view);
-    real F1 = fresnel_factor(f.fresnel, dot(n1, view));
+    vec3 r1 = reflect_view(n1, v.view[k + 1]);
+    real F1 = fresnel_factor(f.fresnel, dot(n1, v.view[k + 1]));
     real F = 0.5 * (F0 + F1);
     ArcFractions a = arc_fractions(r0, r1, f.light);
     vec3 mid = r0 + r1;
@@ -93,4 +182,9 @@ SG_FN PathShares temporal_shares(IN(Frame) f, IN(PathGradients) p, vec3 view) {
     F0 = F1;
   }
   return s;
+}
+
+// The temporal method with one view for every instant (a fixed camera).
+SG_FN PathShares temporal_shares(IN(Frame) f, IN(PathGradients) p, vec3 view) {
+  return temporal_shares_along(f, p, path_views_fixed(vec3(0.0), view));
 }

@@ -111,8 +111,9 @@ TEST(KernelResolvedWaves, RemainderEqualsTheExplicitSum) {
           const int c = kd::staa_remainder_start(buf, f, on, J);
           with_remainder += c < n;
           remainder_waves += n - c;
-          const kd::StaaSums a = kd::staa_wave_pass(buf, f, on, fp);
-          const kd::StaaSums b = kd::staa_wave_pass(buf, f, off, fp);
+          const kd::PathViews v = kd::path_views_fixed(fp.point, fp.view);
+          const kd::StaaSums a = kd::staa_wave_pass(buf, f, on, fp, v);
+          const kd::StaaSums b = kd::staa_wave_pass(buf, f, off, fp, v);
           // The remainder's own scales: its trace and its slope amplitudes.
           double trace = 0, slope = 0;
           for (int q = c; q < n; ++q) {

@@ -97,7 +97,9 @@ SG_FN vec4 stratified_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts) 
 
 // `staa-temporal`: the temporal method of Sec. 3.3 for every pixel: the point at the pixel
 // centre, its reflection path over the shutter (every wave resolved), and the fraction of
-// the time in the light disk, exact on the sphere for each of the K sub-arcs.
+// the time in the light disk, exact on the sphere for each of the K sub-arcs. Under a
+// moving camera each instant has its own water point and view (reflection_path.glsl,
+// PathViews).
 SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) {
   // A pixel that the horizon crosses: the water's part at its centroid, the sky over the
   // rest (horizon_coverage.glsl).
@@ -105,6 +107,12 @@ SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) 
   if (pw.share <= 0.0) return miss_pixel_weights(f, i, j);
   Footprint fp = pixel_footprint(waves, f, pw.centre.x, pw.centre.y, 0.0, f.displaced);
   if (!fp.hit) return miss_pixel_weights(f, i, j);
-  PathGradients g = path_gradients(waves, f, fp.point);
-  return with_sky_part(f, pw, i, j, temporal_shares(f, g, fp.view).weights);
+  PathViews v = path_views(f, fp, pw.centre.x, pw.centre.y);
+  PathGradients g;
+  if (v.moving) {
+    g = path_gradients_moving(waves, f, v);
+  } else {
+    g = path_gradients(waves, f, fp.point);
+  }
+  return with_sky_part(f, pw, i, j, temporal_shares_along(f, g, v).weights);
 }

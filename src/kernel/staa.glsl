@@ -32,6 +32,13 @@
 // As the aliasing shares fall to 0 so does the NDF's covariance, and the path integral
 // tends to the fraction of the path inside the disk: the transition to step 3 is
 // continuous (Fig. 11).
+// A camera that moves over the shutter (docs/method.md, "A moving camera"): the path's
+// instant k takes the pixel's ray from camera_at(t_k), its water point p_k and view
+// (reflection_path.glsl, PathViews): the resolved waves' gradient at p_k and the reflection
+// of that view. Eq. 20's split and Appendix A's half-width are taken over the footprint
+// swept by the point's motion p_K - p_0 (aliasing.glsl, swept_frequency; ndf.glsl,
+// swept_half_width). The pixel-footprint term stays the display time's: the motion is the
+// path's. A fixed camera takes none of these branches (bit for bit as before).
 
 // What the pass over the waves gathers for one pixel.
 struct StaaSums {
@@ -135,9 +142,11 @@ SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
 
 // The one pass over the waves (step 2): the definition; the CPU engine's vectorised
 // equivalent under SG_CPU_WAVE_SUMS (kernel/cpu/wave_sums.h), tested equal to it.
-SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
-                             IN(Footprint) fp) {
+SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
+                             IN(PathViews) v) {
   StaaSums sums = staa_sums_zero(f.segments);
+  bool moving = v.moving;
+  vec2 sweep = v.point[f.segments] - v.point[0];
   mat2 J = footprint_xz_jacobian(fp);
   real det = determinant(J);
   mat2 Jinv = det != 0.0 ? inverse(J) : mat2(0.0);
@@ -151,8 +160,9 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
     real theta = wave_phase(w, fp.point.x, fp.point.z, 0.0);
     real s = sin(theta);
     real c = cos(theta);
-    real alpha =
-        alias_fraction(projected_frequency(k, J, p.nyquist_max), p.alias_start, p.alias_end);
+    real freq = moving ? swept_frequency(k, J, sweep, p.nyquist_max)
+                       : projected_frequency(k, J, p.nyquist_max);
+    real alpha = alias_fraction(freq, p.alias_start, p.alias_end);
     real D = det != 0.0 ? footprint_half_width(k, Jinv) : 0.0;
     if (curvature) {
       // Where the linearisation breaks: a resolved wave of phase half-width D has a slope
@@ -163,13 +173,18 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
       alpha = max(alpha, clamp(dev / limit - 1.0, 0.0, 1.0));
     }
     real resolved = (1.0 - alpha) * w.A;
-    path_gradients_add(sums.path, waves, f, i, w, resolved, s, c);
+    if (moving) {
+      path_gradients_add_moving(sums.path, f, v, w, resolved, c);
+    } else {
+      path_gradients_add(sums.path, waves, f, i, w, resolved, s, c);
+    }
     sums.hess -= (resolved * s) * vec3(k.x * k.x, k.x * k.y, k.y * k.y);
     real aliasing = alpha * w.A;
     if (aliasing > 0.0) {
       sums.any_alias = true;
       if (p.per_pixel_ndf) {
-        ndf_add_per_pixel(sums.ndf, aliasing, k, c, D, sin(D), cos(D));
+        real Dn = moving ? swept_half_width(D, k, sweep) : D;
+        ndf_add_per_pixel(sums.ndf, aliasing, k, c, Dn, sin(Dn), cos(Dn));
       } else {
         ndf_add_uniform(sums.ndf, aliasing, k);
       }
@@ -183,11 +198,12 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
 }
 
 #ifdef SG_CPU_WAVE_SUMS
-StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp);
+StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
+                        IN(PathViews) v);
 #else
-SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
-                              IN(Footprint) fp) {
-  return wave_sum_staa(waves, f, p, fp);
+SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
+                              IN(PathViews) v) {
+  return wave_sum_staa(waves, f, p, fp, v);
 }
 #endif
 
@@ -297,7 +313,8 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
 SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
                              IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
                              IN(KernelFitInfo) finfo, IN(Frame) f, IN(StaaParams) p,
-                             IN(Footprint) fp, IN(StaaSums) sums, OUT(StaaPath) path) {
+                             IN(Footprint) fp, IN(PathViews) v, IN(StaaSums) sums,
+                             OUT(StaaPath) path) {
   StaaResult res = staa_result_miss();
   res.hit = true;
   int K = f.segments;
@@ -308,7 +325,7 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
   vec3 view = fp.view;
   if (!sums.any_alias && p.footprint == 0) {
     // Step 3: the temporal method, exactly.
-    PathShares ps = temporal_shares(f, sums.path, view);
+    PathShares ps = temporal_shares_along(f, sums.path, v);
     res.temporal = true;
     res.weights = ps.weights;
     res.in_light = ps.in_light;
@@ -321,9 +338,10 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
   // Step 4: the NDF of the aliasing waves (none: a point at the resolved normal).
   vec2 mean = (sums.any_alias && p.per_pixel_ndf && p.ndf_mean_shift) ? sums.ndf.mean : vec2(0.0);
   mat2 ndf_cov = sums.any_alias ? sym2(sums.ndf.cov) : mat2(0.0);
-  // The NDF's centre at each instant: minus the resolved slope, plus the mean shift.
+  // The NDF's centre at each instant: minus the resolved slope, plus the mean shift; the
+  // view of that instant.
   for (int k = 0; k <= K; ++k) {
-    vec3 r = reflect_about_ndf_point(-sums.path.g[k] + mean, view);
+    vec3 r = reflect_about_ndf_point(-sums.path.g[k] + mean, v.view[k]);
     path.valid[k] = dot(r, f.light.L) > kMinCosToLight * length(r);
     path.centre[k] = path.valid[k] ? light_to_plane(f.light, r) : vec2(0.0);
   }
@@ -432,6 +450,14 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
       in_light = p.fallback_riemann
                      ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
                      : gaussian_disk_mass(path.centre[K], cov_r, R);
+    } else if (v.moving && !p.fallback_riemann) {
+      // A moving camera's paths are long: each sub-segment's time integral in closed form
+      // (gaussian.glsl, gaussian_disk_mass_along), at the cost of one instant's mass.
+      for (int k = 0; k < K; ++k) {
+        if (!(path.valid[k] && path.valid[k + 1])) continue;
+        in_light += gaussian_disk_mass_along(path.centre[k], path.centre[k + 1], cov_r, R);
+      }
+      in_light *= inv_k;
     } else {
       for (int k = 0; k < K; ++k) {
         if (!(path.valid[k] && path.valid[k + 1])) continue;
@@ -498,8 +524,9 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
   }
   StaaParams q = p;
   if (pw.share < 1.0 && q.footprint == 2) q.footprint = 1;
-  StaaSums sums = staa_wave_pass(waves, f, q, fp);
-  StaaResult r = staa_finish(table_f, table_s, tinfo, fits, finfo, f, q, fp, sums, path);
+  PathViews v = path_views(f, fp, pw.centre.x, pw.centre.y);
+  StaaSums sums = staa_wave_pass(waves, f, q, fp, v);
+  StaaResult r = staa_finish(table_f, table_s, tinfo, fits, finfo, f, q, fp, v, sums, path);
   r.weights = with_sky_part(f, pw, i, j, r.weights);
   return r;
 }

@@ -1,7 +1,8 @@
 // The CPU engine's vectorised sums over the waves (kernel/cpu/wave_sums.h) against the
 // kernel's loops, the definitions (kernel/waves.glsl, reflection_path.glsl, staa.glsl,
 // reference.glsl), in
-// double and float, and the kernel methods with and without them.
+// double and float, and the kernel methods with and without them; with a fixed camera and
+// with a moving one (each instant of the path at its own water point).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -86,26 +87,47 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
         EXPECT_NEAR(pd.dg[k].y, rd.dg[k].y, tol * cscale) << k;
         EXPECT_NEAR(pd.g[k].x, p.g[k].x, tol * gscale) << k;  // the same instants as the path's
       }
+      // A moving camera: the instants at points of their own (kernel/reflection_path.glsl).
+      kd::PathViews v = kd::path_views_fixed(vec3(x, 0, z), vec3(0, 1, 0));
+      v.moving = true;
+      for (int k = 0; k < f.segments; ++k)
+        v.point[k] += vec2(0.9 * (k - 3) + rng.uniform(), 0.5 * (3 - k) - rng.uniform());
+      const double tol_m = phase_rounding(s, std::fabs(x) + 5, std::fabs(z) + 5, 1.1e-16);
+      const kd::PathGradients pm = kd::path_gradients_moving(simd, f, v),
+                              rm = kd::path_gradients_moving(loop, f, v);
+      for (int k = 0; k <= f.segments; ++k) {
+        EXPECT_NEAR(pm.g[k].x, rm.g[k].x, tol_m * gscale) << k;
+        EXPECT_NEAR(pm.g[k].y, rm.g[k].y, tol_m * gscale) << k;
+      }
+      EXPECT_NEAR(pm.g[f.segments].x, p.g[f.segments].x, tol * gscale);  // the display time's
     }
     // The staa pass at pixel footprints, with each NDF and with the curvature limit, and
-    // the smooth terms' cells (1 to 3 per side).
-    for (int variant = 0; variant < 3; ++variant) {
+    // the smooth terms' cells (1 to 3 per side); variants 3 to 5 as 0 to 2 under a moving
+    // camera (the instants' points a few metres apart: the swept footprint).
+    for (int variant = 0; variant < 6; ++variant) {
+      const bool moving = variant >= 3;
       kd::StaaParams p{};
-      p.smooth_cells = variant + 1;
-      p.per_pixel_ndf = variant != 1;
+      p.smooth_cells = variant % 3 + 1;
+      p.per_pixel_ndf = variant % 3 != 1;
       p.alias_start = 0.3;
       p.alias_end = 0.8;
-      p.nyquist_max = variant != 2;
+      p.nyquist_max = variant % 3 != 2;
       p.footprint = 1;
-      p.curvature_limit = variant == 2 ? 1.0 : 0.0;
+      p.curvature_limit = variant % 3 == 2 ? 1.0 : 0.0;
       int aliasing = 0;
       for (int j = 0; j < s.height; j += 7) {
         for (int i = 0; i < s.width; i += 13) {
           const kd::Footprint fp = kd::pixel_footprint(simd, f, i + 0.5, j + 0.5, 0.0, false);
           if (!fp.hit) continue;
-          const kd::StaaSums a = kd::staa_wave_pass(simd, f, p, fp),
-                             b = kd::staa_wave_pass(loop, f, p, fp);
-          const double tol = phase_rounding(s, fp.point.x, fp.point.z, 1.1e-16);
+          kd::PathViews v = kd::path_views_fixed(fp.point, fp.view);
+          v.moving = moving;
+          for (int k = 0; moving && k < f.segments; ++k)
+            v.point[k] += vec2(0.7 * (k - 3) + 0.01 * i, 0.4 * (k - 3) - 0.02 * j);
+          const kd::StaaSums a = kd::staa_wave_pass(simd, f, p, fp, v),
+                             b = kd::staa_wave_pass(loop, f, p, fp, v);
+          const double tol = moving ? phase_rounding(s, std::fabs(fp.point.x) + 5,
+                                                     std::fabs(fp.point.z) + 5, 1.1e-16)
+                                    : phase_rounding(s, fp.point.x, fp.point.z, 1.1e-16);
           ASSERT_EQ(a.any_alias, b.any_alias) << i << "," << j;
           aliasing += a.any_alias;
           for (int k = 0; k <= f.segments; ++k) {

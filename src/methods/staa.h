@@ -35,6 +35,10 @@
 // As the aliasing shares fall to 0 the NDF's covariance does too, and the path integral
 // tends to the fraction of the path inside the disk: the transition to step 3 is
 // continuous (no arcs, Fig. 11).
+// A camera that moves over the shutter (format /3): each instant of the path takes the
+// pixel's ray from the camera at that instant, its own water point and view, and Eq. 20
+// and the per-pixel NDF the footprint swept by the point's motion (docs/method.md, "A
+// moving camera"; kernel/reflection_path.glsl, PathViews).
 #pragma once
 
 #include "methods/kernel_inputs.h"

@@ -5,7 +5,9 @@
 // disk, computed exactly on the sphere for each of `--segments K` great-circle sub-arcs
 // (kernel/reflection_path.glsl, kernel/arc.glsl). It removes flicker for the waves the
 // pixel grid resolves; it still samples space at the pixel centre only, so waves above
-// the Nyquist limit alias (the full method, `staa`, handles them).
+// the Nyquist limit alias (the full method, `staa`, handles them). Under a moving camera
+// (format /3) each instant of the path has the water point and view of the pixel's ray
+// from the camera at that instant (docs/method.md, "A moving camera").
 #pragma once
 
 #include "methods/kernel_inputs.h"

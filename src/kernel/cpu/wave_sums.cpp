@@ -117,6 +117,40 @@ void PathT(const Arrays<T>& w, T x0, T z0, int K, T* gx_out, T* gz_out) {
   }
 }
 
+// kernel/reflection_path.glsl, wave_sum_path_moving: instant k's gradient from the phase at
+// its own point and time (one cosine per instant), instant K's at the display time.
+template <class T>
+void PathMovingT(const Arrays<T>& w, const T* px, const T* pz, const T* pdt, int K, T* gx_out,
+                 T* gz_out) {
+  const hn::ScalableTag<T> d;
+  const size_t N = hn::Lanes(d);
+  const auto zero = hn::Zero(d);
+  decltype(hn::Zero(d)) gx[kMaxInstants], gz[kMaxInstants];
+  for (int k = 0; k <= K; ++k)
+    gx[k] = gz[k] = hn::Zero(d);
+  const size_t n = size_t(w.count);
+  for (size_t i = 0; i < n; i += N) {
+    const auto a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i);
+    const auto theta0 = hn::LoadU(d, w.theta0 + i), c = hn::LoadU(d, w.c + i);
+    const auto A = hn::LoadU(d, w.A + i);
+    const auto th = Phase(d, a, b, theta0, zero, hn::Set(d, px[K]), hn::Set(d, pz[K]), zero);
+    const auto Ac = hn::Mul(A, hn::Cos(d, th));
+    gx[K] = hn::MulAdd(Ac, a, gx[K]);
+    gz[K] = hn::MulAdd(Ac, b, gz[K]);
+    for (int k = 0; k < K; ++k) {
+      const auto thk =
+          Phase(d, a, b, theta0, c, hn::Set(d, px[k]), hn::Set(d, pz[k]), hn::Set(d, pdt[k]));
+      const auto Ack = hn::Mul(A, hn::Cos(d, thk));
+      gx[k] = hn::MulAdd(Ack, a, gx[k]);
+      gz[k] = hn::MulAdd(Ack, b, gz[k]);
+    }
+  }
+  for (int k = 0; k <= K; ++k) {
+    gx_out[k] = hn::GetLane(hn::SumOfLanes(d, gx[k]));
+    gz_out[k] = hn::GetLane(hn::SumOfLanes(d, gz[k]));
+  }
+}
+
 // kernel/reference.glsl, wave_sum_path_derivatives: the gradients and their time
 // derivatives at the path's instants, theta_k = theta - c (end - t_k) by angle subtraction.
 template <class T>
@@ -164,7 +198,9 @@ void PathDerivativesT(const Arrays<T>& w, T x0, T z0, int K, T* gx_out, T* gz_ou
 // and the aliasing waves' NDF (kernel/ndf.glsl), in one pass over the waves [0, count)
 // (the remainder's sums are the caller's: kernel/cpu/wave_sums_hooks.inc). A vector that
 // starts at or past alias_from has resolved shares 0 in every lane: its path and Hessian
-// terms, zeros, are skipped.
+// terms, zeros, are skipped. Under a moving camera (in.moving) the path's instants take
+// their own points' phases, and Eq. 20 and Appendix A's half-width the swept footprint
+// (kernel/aliasing.glsl, swept_frequency; kernel/ndf.glsl, swept_half_width).
 template <class T>
 void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
   const hn::ScalableTag<T> d;
@@ -181,6 +217,14 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
   const V width = hn::Set(d, in.alias_end - in.alias_start);
   const V inv_two_pi = hn::Set(d, T(0.15915494309189533577));
   const V limit = hn::Set(d, in.limit);
+  const bool moving = in.moving;
+  const V sweep_x = hn::Set(d, in.sweep_x), sweep_z = hn::Set(d, in.sweep_z);
+  V ipx[kMaxInstants], ipz[kMaxInstants], idt[kMaxInstants];
+  for (int k = 0; k < K; ++k) {
+    ipx[k] = hn::Set(d, in.px[k]);
+    ipz[k] = hn::Set(d, in.pz[k]);
+    idt[k] = hn::Set(d, in.dt[k]);
+  }
   V gx[kMaxInstants], gz[kMaxInstants];
   for (int k = 0; k <= K; ++k)
     gx[k] = gz[k] = zero;
@@ -203,7 +247,16 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
     // kernel/aliasing.glsl: the projected frequency and Eq. 20.
     const V fx = hn::Abs(hn::MulAdd(a, j00, hn::Mul(b, j01)));
     const V fy = hn::Abs(hn::MulAdd(a, j10, hn::Mul(b, j11)));
-    const V rad = in.max_norm ? hn::Max(fx, fy) : hn::Sqrt(hn::MulAdd(fx, fx, hn::Mul(fy, fy)));
+    // Under a moving camera the motion's phase change k . (p_K - p_0) is a third axis.
+    const V km = moving ? hn::MulAdd(a, sweep_x, hn::Mul(b, sweep_z)) : zero;
+    V rad;
+    if (!moving) {
+      rad = in.max_norm ? hn::Max(fx, fy) : hn::Sqrt(hn::MulAdd(fx, fx, hn::Mul(fy, fy)));
+    } else {
+      const V fm = hn::Abs(km);
+      rad = in.max_norm ? hn::Max(hn::Max(fx, fy), fm)
+                        : hn::Sqrt(hn::MulAdd(fx, fx, hn::MulAdd(fy, fy, hn::Mul(fm, fm))));
+    }
     V alpha = hn::Min(one, hn::Max(zero, hn::Div(hn::Sub(hn::Mul(rad, inv_two_pi), start), width)));
     // kernel/ndf.glsl, footprint_half_width.
     const V kk = hn::MulAdd(a, a, hn::Mul(b, b));
@@ -222,12 +275,23 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
       const V rc = hn::Mul(resolved, c);
       gx[K] = hn::MulAdd(rc, a, gx[K]);
       gz[K] = hn::MulAdd(rc, b, gz[K]);
-      for (int k = 0; k < K; ++k) {
-        const V ck = hn::MulAdd(c, hn::LoadU(d, w.rot_c + k * n + i),
-                                hn::Mul(s, hn::LoadU(d, w.rot_s + k * n + i)));
-        const V rk = hn::Mul(resolved, ck);
-        gx[k] = hn::MulAdd(rk, a, gx[k]);
-        gz[k] = hn::MulAdd(rk, b, gz[k]);
+      if (!moving) {
+        for (int k = 0; k < K; ++k) {
+          const V ck = hn::MulAdd(c, hn::LoadU(d, w.rot_c + k * n + i),
+                                  hn::Mul(s, hn::LoadU(d, w.rot_s + k * n + i)));
+          const V rk = hn::Mul(resolved, ck);
+          gx[k] = hn::MulAdd(rk, a, gx[k]);
+          gz[k] = hn::MulAdd(rk, b, gz[k]);
+        }
+      } else {
+        // kernel/reflection_path.glsl, path_gradients_add_moving.
+        const V theta0 = hn::LoadU(d, w.theta0 + i), cw = hn::LoadU(d, w.c + i);
+        for (int k = 0; k < K; ++k) {
+          const V thk = Phase(d, a, b, theta0, cw, ipx[k], ipz[k], idt[k]);
+          const V rk = hn::Mul(resolved, hn::Cos(d, thk));
+          gx[k] = hn::MulAdd(rk, a, gx[k]);
+          gz[k] = hn::MulAdd(rk, b, gz[k]);
+        }
       }
       const V rs = hn::Mul(resolved, s);
       hxx = hn::NegMulAdd(rs, hn::Mul(a, a), hxx);
@@ -286,9 +350,15 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
     any = hn::Add(any, aliasing);
     V v;  // the wave's variance factor: J - K^2 (per pixel) or A^2 / 2 (uniform)
     if (in.per_pixel) {
-      // kernel/ndf.glsl, wave_moment_factors (Eqs. 23-24).
-      const V sd = hn::Sin(d, D), cd = hn::Cos(d, D);
-      const V sinc1 = SincFrom(d, D, sd);
+      // kernel/ndf.glsl, wave_moment_factors (Eqs. 23-24); under a moving camera with the
+      // swept half-width sqrt(D^2 + m^2), m = k . (p_K - p_0) / 2 (swept_half_width).
+      V Dn = D;
+      if (moving) {
+        const V m = hn::Mul(half, km);
+        Dn = hn::Sqrt(hn::MulAdd(D, D, hn::Mul(m, m)));
+      }
+      const V sd = hn::Sin(d, Dn), cd = hn::Cos(d, Dn);
+      const V sinc1 = SincFrom(d, Dn, sd);
       const V sinc2 = hn::Mul(sinc1, cd);  // sinc(2 D) = sinc(D) cos(D)
       const V cos_2t = hn::MulSub(hn::Add(c, c), c, one);
       const V Kf = hn::Mul(hn::Mul(aliasing, c), sinc1);
@@ -345,6 +415,14 @@ void PathD(const Arrays<double>& w, double x, double z, int K, double* gx, doubl
 void PathF(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz) {
   PathT(w, x, z, K, gx, gz);
 }
+void PathMovingD(const Arrays<double>& w, const double* x, const double* z, const double* dt, int K,
+                 double* gx, double* gz) {
+  PathMovingT(w, x, z, dt, K, gx, gz);
+}
+void PathMovingF(const Arrays<float>& w, const float* x, const float* z, const float* dt, int K,
+                 float* gx, float* gz) {
+  PathMovingT(w, x, z, dt, K, gx, gz);
+}
 void PathDerivativesD(const Arrays<double>& w, double x, double z, int K, double* gx, double* gz,
                       double* dgx, double* dgz) {
   PathDerivativesT(w, x, z, K, gx, gz, dgx, dgz);
@@ -372,6 +450,8 @@ HWY_EXPORT(GradientD);
 HWY_EXPORT(GradientF);
 HWY_EXPORT(PathD);
 HWY_EXPORT(PathF);
+HWY_EXPORT(PathMovingD);
+HWY_EXPORT(PathMovingF);
 HWY_EXPORT(PathDerivativesD);
 HWY_EXPORT(PathDerivativesF);
 HWY_EXPORT(StaaD);
@@ -394,6 +474,14 @@ void path(const Arrays<double>& w, double x, double z, int K, double* gx, double
 }
 void path(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz) {
   HWY_DYNAMIC_DISPATCH(PathF)(w, x, z, K, gx, gz);
+}
+void path_moving(const Arrays<double>& w, const double* x, const double* z, const double* dt, int K,
+                 double* gx, double* gz) {
+  HWY_DYNAMIC_DISPATCH(PathMovingD)(w, x, z, dt, K, gx, gz);
+}
+void path_moving(const Arrays<float>& w, const float* x, const float* z, const float* dt, int K,
+                 float* gx, float* gz) {
+  HWY_DYNAMIC_DISPATCH(PathMovingF)(w, x, z, dt, K, gx, gz);
 }
 void path_derivatives(const Arrays<double>& w, double x, double z, int K, double* gx, double* gz,
                       double* dgx, double* dgz) {

@@ -1,6 +1,7 @@
 // The CPU engine's vectorised sums over the waves: the same arithmetic as the kernel's
 // loops (kernel/waves.glsl, wave_sum_height_first and wave_sum_gradient;
-// kernel/reflection_path.glsl, wave_sum_path; kernel/staa.glsl, wave_sum_staa;
+// kernel/reflection_path.glsl, wave_sum_path and wave_sum_path_moving; kernel/staa.glsl,
+// wave_sum_staa;
 // kernel/reference.glsl, wave_sum_path_derivatives), run across
 // the waves in SIMD lanes with Highway (sine and cosine: Highway's contrib math, 3 ULP)
 // and dispatched at run time to the host's widest instruction set. The kernel's loops are
@@ -36,6 +37,12 @@ struct StaaPassIn {
   int count = 0;       // the waves visited: positions [0, count) (kernel/staa.glsl, remainder)
   int alias_from = 0;  // every wave from this position on aliases fully (resolved share 0)
   int box_side = 0;    // the smooth terms' cells per side (kernel/ndf.glsl, box_cells_add; 0: off)
+  // A camera that moves over the shutter (kernel/reflection_path.glsl, PathViews): the
+  // water point (px, pz) and dt of each instant k < segments, and the motion p_K - p_0
+  // (sweep) over which Eq. 20 and Appendix A's half-width are taken.
+  bool moving = false;
+  T px[kMaxInstants] = {}, pz[kMaxInstants] = {}, dt[kMaxInstants] = {};
+  T sweep_x = 0, sweep_z = 0;
 };
 
 inline constexpr int kMaxBoxCells = 9;
@@ -59,6 +66,12 @@ void gradient(const Arrays<float>& w, float x, float z, float dt, float& gx, flo
 // The gradients at the K + 1 instants of a path (every wave at full amplitude).
 void path(const Arrays<double>& w, double x, double z, int segments, double* gx, double* gz);
 void path(const Arrays<float>& w, float x, float z, int segments, float* gx, float* gz);
+// The same under a moving camera: instant k at point (x[k], z[k]) and dt[k], the last
+// (k = segments) at dt 0 (kernel/reflection_path.glsl, wave_sum_path_moving).
+void path_moving(const Arrays<double>& w, const double* x, const double* z, const double* dt,
+                 int segments, double* gx, double* gz);
+void path_moving(const Arrays<float>& w, const float* x, const float* z, const float* dt,
+                 int segments, float* gx, float* gz);
 // The gradients and their time derivatives at the K + 1 instants of a path
 // (kernel/reference.glsl, wave_sum_path_derivatives).
 void path_derivatives(const Arrays<double>& w, double x, double z, int segments, double* gx,
