@@ -42,7 +42,7 @@ struct CompareArgs {
   std::string target = "auto", engine = "cpu";
   int width = 0, height = 0, threads = 0;
   double exposure = 3.0;
-  bool no_video = false, no_glare = false, quiet = false, list_methods = false;
+  bool no_video = false, no_glare = false, quiet = false, list_methods = false, split = false;
   // The study as tasks (report/plan.h) and on Slurm (cli/slurm.h).
   bool plan = false, merge = false;
   int task = -1;
@@ -104,6 +104,7 @@ std::string command_line(const CompareArgs& a) {
   c += std::string(" --exposure ") + e;
   if (a.no_glare) c += " --no-glare";
   if (a.no_video) c += " --no-video";
+  if (a.split) c += " --split";
   return c + " --out " + quote(a.out);
 }
 
@@ -461,6 +462,7 @@ void run_compare(const CompareArgs& a) {
   c.display.exposure = a.exposure;
   c.display.glare = !a.no_glare;
   c.video = !a.no_video;
+  c.split = a.split;
   c.command = command_line(a);
 
   const int modes = a.plan + (a.task >= 0) + a.merge + a.slurm.submit;
@@ -490,6 +492,14 @@ void run_compare(const CompareArgs& a) {
       std::printf("%-10s %-32s %9.5f %9.5f %9.5f %9.5f %10.3g\n", s.name.c_str(), v.label.c_str(),
                   v.at(Region::image).rmse, v.at(Region::image).temporal_error,
                   v.at(Region::near).rmse, v.at(Region::far).rmse, v.ms_per_frame);
+      for (const ClassFigures& x : v.classes) {  // --split: what the pixel sees
+        if (!(x.pixel_share > 0)) continue;
+        std::printf(
+            "%-10s   %-30s %5.1f%% of pixels, RMSE %.3g (%.3g corrected), %4.1f%% of the "
+            "squared error, temporal %.3g (%.3g corrected)\n",
+            "", x.name.c_str(), 100 * x.pixel_share, x.rmse, x.rmse_corrected, 100 * x.error_share,
+            x.temporal_error, x.temporal_corrected);
+      }
       const auto& ch = v.at(Region::image).channels;
       if (ch.size() == 3) {  // colour: each channel's RMSE and temporal error
         std::printf("%-10s %-32s %9s R %.5f G %.5f B %.5f, temporal R %.5f G %.5f B %.5f\n", "", "",
@@ -548,6 +558,10 @@ void add_compare_command(CLI::App& app) {
       ->check(number_in(-64, 64));
   c->add_flag("--no-glare", a->no_glare, "Pictures and videos without glare");
   c->add_flag("--no-video", a->no_video, "No MP4 videos (they need ffmpeg)");
+  c->add_flag("--split", a->split,
+              "Split each method's error by what the pixel sees, frame by frame (sky, horizon, a "
+              "nearer crest, over a crest, left-out waves, a tilted face, plain; docs/report.md) "
+              "into results.md and results.json");
   c->add_option("--threads,-j", a->threads, "Worker threads (0: all cores)")
       ->check(integer_in(0, 1024));
   c->add_flag("--quiet,-q", a->quiet, "No progress bar");

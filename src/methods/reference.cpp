@@ -179,4 +179,14 @@ double sequence_standard_error(const std::vector<Image>& variance,
   return n > 0 ? std::sqrt(sum / double(n)) : 0.0;
 }
 
+double sequence_standard_error(const std::vector<Image>& variance,
+                               const std::vector<const std::vector<unsigned char>*>& masks) {
+  if (masks.size() != variance.size()) throw Error("one mask per frame expected");
+  double sum = 0;
+  long n = 0;
+  for (size_t f = 0; f < variance.size(); ++f)
+    add_variance(variance[f], masks[f], sum, n);
+  return n > 0 ? std::sqrt(sum / double(n)) : 0.0;
+}
+
 }  // namespace sg

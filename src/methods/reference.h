@@ -116,6 +116,9 @@ double image_standard_error(const Image& variance,
 // The same over a sequence of frames (the RMSE's set: all frames' values).
 double sequence_standard_error(const std::vector<Image>& variance,
                                const std::vector<unsigned char>* mask = nullptr);
+// The same with a mask per frame (metrics/metrics.h, compare_sequences; null: every pixel).
+double sequence_standard_error(const std::vector<Image>& variance,
+                               const std::vector<const std::vector<unsigned char>*>& masks);
 // A method's RMSE against the reference with the reference's own noise taken out:
 // E[RMSE^2] = error^2 + se^2 for a reference whose noise is independent of the method's
 // error, so sqrt(max(0, RMSE^2 - se^2)).

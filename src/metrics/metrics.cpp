@@ -70,6 +70,17 @@ ImageMetrics compare_images(const Image& a, const Image& b, double peak,
 
 SequenceMetrics compare_sequences(const std::vector<Image>& a, const std::vector<Image>& b,
                                   double peak, const std::vector<unsigned char>* mask) {
+  return compare_sequences(a, b, peak,
+                           std::vector<const std::vector<unsigned char>*>(a.size(), mask));
+}
+
+SequenceMetrics compare_sequences(const std::vector<Image>& a, const std::vector<Image>& b,
+                                  double peak,
+                                  const std::vector<const std::vector<unsigned char>*>& masks) {
+  if (masks.size() != a.size()) {
+    throw Error("masks for " + std::to_string(masks.size()) + " frames, the sequence has " +
+                std::to_string(a.size()));
+  }
   if (a.size() != b.size()) {
     throw Error("sequences differ in length: " + std::to_string(a.size()) + " and " +
                 std::to_string(b.size()) + " frames");
@@ -80,7 +91,7 @@ SequenceMetrics compare_sequences(const std::vector<Image>& a, const std::vector
   long n = 0;
   int channels = 1;
   for (size_t f = 0; f < a.size(); ++f) {
-    s.frames.push_back(compare_images(a[f], b[f], peak, mask));
+    s.frames.push_back(compare_images(a[f], b[f], peak, masks[f]));
     const ImageMetrics& m = s.frames.back();
     const long values = m.pixels * static_cast<long>(m.channels.size());
     se += m.rmse * m.rmse * values;
@@ -103,6 +114,7 @@ SequenceMetrics compare_sequences(const std::vector<Image>& a, const std::vector
   double te = 0, fa = 0, fb = 0;
   long pairs = 0;
   for (size_t f = 1; f < a.size(); ++f) {
+    const std::vector<unsigned char>* mask = masks[f];
     for (size_t k = 0; k < a[f].pixels(); ++k) {
       if (mask && !(*mask)[k]) continue;
       for (int c = 0; c < channels; ++c) {

@@ -63,6 +63,13 @@ struct SequenceMetrics {
 SequenceMetrics compare_sequences(const std::vector<Image>& a, const std::vector<Image>& b,
                                   double peak = 1.0,
                                   const std::vector<unsigned char>* mask = nullptr);
+// The same with a mask per frame (masks[f] null: every pixel of frame f): a frame's own
+// pixels for its RMSE, and frame f's for the change from frame f-1 to f (temporal error,
+// flicker), so a set of pixels that changes from frame to frame (what the pixel sees on
+// moving waves) is measured where it is.
+SequenceMetrics compare_sequences(const std::vector<Image>& a, const std::vector<Image>& b,
+                                  double peak,
+                                  const std::vector<const std::vector<unsigned char>*>& masks);
 
 double psnr_from_rmse(double rmse, double peak);
 

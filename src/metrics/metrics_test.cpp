@@ -49,6 +49,28 @@ TEST(Metrics, TemporalErrorAndFlicker) {
   EXPECT_THROW(compare_sequences(img, std::vector<Image>(2, Image(2, 1))), Error);
 }
 
+// A mask per frame: each frame's RMSE over its own pixels, each change over the later
+// frame's pixels.
+TEST(Metrics, MasksPerFrameTakeEachFramesOwnPixels) {
+  // Two pixels; the test image errs by 0.1 on pixel 0 and 0.3 on pixel 1 in frame 0, by
+  // 0.2 and 0.4 in frame 1 (the reference is 0).
+  Image a0(2, 1), a1(2, 1);
+  a0.data = {0.1f, 0.3f};
+  a1.data = {0.2f, 0.4f};
+  const std::vector<Image> a = {a0, a1}, ref(2, Image(2, 1, 0.0f));
+  const std::vector<unsigned char> first = {1, 0}, second = {0, 1};
+  const SequenceMetrics m = compare_sequences(a, ref, 1.0, {&first, &second});
+  EXPECT_NEAR(m.frames[0].rmse, 0.1, 1e-7);
+  EXPECT_NEAR(m.frames[1].rmse, 0.4, 1e-7);
+  EXPECT_NEAR(m.rmse, std::sqrt((0.01 + 0.16) / 2), 1e-7);
+  EXPECT_NEAR(m.temporal_error, 0.1, 1e-7);  // pixel 1's change, 0.3 -> 0.4
+  // Null masks: every pixel, as the one-mask form.
+  const SequenceMetrics all = compare_sequences(a, ref, 1.0, {nullptr, nullptr});
+  EXPECT_DOUBLE_EQ(all.rmse, compare_sequences(a, ref).rmse);
+  const std::vector<const std::vector<unsigned char>*> one = {&first};
+  EXPECT_THROW(compare_sequences(a, ref, 1.0, one), Error);
+}
+
 // A grey image as three equal channels.
 Image as_rgb(const Image& g) {
   Image c = Image::with_channels(g.width, g.height, 3);

@@ -71,10 +71,36 @@ RegionMetrics region_from_json(const json& j) {
   return m;
 }
 
+json to_json(const ClassFigures& c) {
+  return {{"class", c.name},
+          {"pixel_share", number(c.pixel_share)},
+          {"error_share", number(c.error_share)},
+          {"rmse", number(c.rmse)},
+          {"temporal_error", number(c.temporal_error)},
+          {"reference_se", number(c.reference_se)},
+          {"rmse_corrected", number(c.rmse_corrected)},
+          {"temporal_corrected", number(c.temporal_corrected)}};
+}
+ClassFigures class_from_json(const json& j) {
+  ClassFigures c;
+  c.name = j.at("class").get<std::string>();
+  c.pixel_share = number(j.at("pixel_share"));
+  c.error_share = number(j.at("error_share"));
+  c.rmse = number(j.at("rmse"));
+  c.temporal_error = number(j.at("temporal_error"));
+  c.reference_se = number(j.at("reference_se"));
+  c.rmse_corrected = number(j.at("rmse_corrected"));
+  c.temporal_corrected = number(j.at("temporal_corrected"));
+  return c;
+}
+
 json to_json(const VariantResult& v) {
   json regions = json::object();
   for (size_t k = 0; k < kRegionNames.size(); ++k)
     regions[kRegionNames[k]] = to_json(v.regions[k]);
+  json classes = json::array();
+  for (const ClassFigures& c : v.classes)
+    classes.push_back(to_json(c));
   return {{"label", v.label},
           {"name", v.name},
           {"stateful", v.stateful},
@@ -87,7 +113,8 @@ json to_json(const VariantResult& v) {
           {"error_map", v.error_map},
           {"near_crop_picture", v.near_crop_picture},
           {"far_crop_picture", v.far_crop_picture},
-          {"trace", v.trace}};
+          {"trace", v.trace},
+          {"classes", classes}};
 }
 VariantResult variant_from_json(const json& j) {
   VariantResult v;
@@ -106,6 +133,10 @@ VariantResult variant_from_json(const json& j) {
   v.near_crop_picture = j.value("near_crop_picture", std::string());
   v.far_crop_picture = j.value("far_crop_picture", std::string());
   if (j.contains("trace")) v.trace = j.at("trace").get<std::vector<double>>();
+  if (j.contains("classes")) {
+    for (const json& c : j.at("classes"))
+      v.classes.push_back(class_from_json(c));
+  }
   return v;
 }
 
@@ -466,6 +497,37 @@ void write_paper_table_markdown(std::ostringstream& o, const StudyResults& r) {
 
 }  // namespace
 
+// The error split by what the pixel sees (`compare --split`): a row per class that some
+// frame has, a column per method.
+static void write_class_table_markdown(std::ostringstream& o, const SceneResult& sc) {
+  if (sc.methods.empty() || sc.methods.front().classes.empty()) return;
+  o << "\nThe error by what the pixel sees (report/pixel_classes.h; each frame's own pixels of "
+       "the class). Each cell: RMSE with the reference's noise taken out, the share of the "
+       "method's squared error over the image, the temporal error with the reference's "
+       "frame-to-frame noise taken out.\n\n| what the pixel sees | pixels |";
+  for (const auto& v : sc.methods)
+    o << " " << md_code(v.label) << " |";
+  o << "\n|---|---:|";
+  for (size_t k = 0; k < sc.methods.size(); ++k)
+    o << "---:|";
+  o << "\n";
+  const std::vector<ClassFigures>& first = sc.methods.front().classes;
+  for (size_t c = 0; c < first.size(); ++c) {
+    if (!(first[c].pixel_share > 0)) continue;
+    o << "| " << first[c].name << " | " << fmt("%.1f", 100 * first[c].pixel_share) << "% |";
+    for (const auto& v : sc.methods) {
+      if (c >= v.classes.size()) {
+        o << " - |";
+        continue;
+      }
+      const ClassFigures& x = v.classes[c];
+      o << " " << fmt("%.3g", x.rmse_corrected) << ", " << fmt("%.0f", 100 * x.error_share) << "%, "
+        << fmt("%.3g", x.temporal_corrected) << " |";
+    }
+    o << "\n";
+  }
+}
+
 std::string results_to_markdown(const StudyResults& r, const std::string& prefix) {
   const StudySettings& s = r.settings;
   std::ostringstream o;
@@ -578,6 +640,7 @@ std::string results_to_markdown(const StudyResults& r, const std::string& prefix
     }
     if (sc.equal_cost)
       o << "\n" << equal_cost_sentence(*sc.equal_cost, md_code(sc.equal_cost->target)) << "\n";
+    write_class_table_markdown(o, sc);
   }
   return o.str();
 }

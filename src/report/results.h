@@ -40,6 +40,19 @@ struct RegionMetrics {
   std::vector<ChannelFigures> channels;  // R, G, B of a colour scene; empty for a grey one
 };
 
+// A variant's figures over the pixels of one class of what the pixel sees
+// (report/pixel_classes.h; `compare --split`), each frame's own pixels of the class.
+struct ClassFigures {
+  std::string name;        // kPixelClassNames
+  double pixel_share = 0;  // of the image's pixels, over the frames
+  double error_share = 0;  // of the variant's squared error over the image
+  double rmse = 0, temporal_error = 0;
+  // The reference's standard error there (NaN: unknown) and the figures with its noise
+  // taken out: sqrt(max(0, rmse^2 - se^2)) and, for the frame-to-frame change (two
+  // frames' independent noise), sqrt(max(0, temporal^2 - 2 se^2)).
+  double reference_se = 0, rmse_corrected = 0, temporal_corrected = 0;
+};
+
 struct VariantResult {
   std::string label;  // canonical: "supersample --samples 6x6x1"
   std::string name;   // catalogue name: "supersample"
@@ -52,6 +65,7 @@ struct VariantResult {
   std::string near_crop_picture, far_crop_picture;  // the crops at kCropScale:1 pixels
   // The flicker pixel's value (mean over the channels) in each frame, when the study has one.
   std::vector<double> trace;
+  std::vector<ClassFigures> classes;  // with `compare --split`, else empty
 
   const RegionMetrics& at(Region r) const { return regions[static_cast<int>(r)]; }
   RegionMetrics& at(Region r) { return regions[static_cast<int>(r)]; }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <set>
 
 #include "base/error.h"
@@ -89,6 +90,12 @@ StudyResults sample() {
       v->far_crop_picture = "img/x/" + v->name + "-far.png";
       v->trace = {0.125, 0.5 + v->ms_per_frame, 1.0 / 3.0, 0.0};
     }
+    // The error split by what the pixel sees (compare --split), on the methods.
+    for (VariantResult& v : sc.methods) {
+      v.classes.push_back({"nearer crest", 0.125, 0.25, 1e-3, 2e-3, 1e-4, 9.9e-4, 1.99e-3});
+      v.classes.push_back({"plain", 0.5, 0.75, 5e-4 + v.ms_per_frame * 1e-6, 4e-4, 1e-4, 4.9e-4,
+                           std::numeric_limits<double>::quiet_NaN()});
+    }
     r.scenes.push_back(sc);
   }
   r.scenes[1].equal_cost.reset();
@@ -125,6 +132,21 @@ void expect_same(const VariantResult& a, const VariantResult& b) {
   EXPECT_EQ(a.near_crop_picture, b.near_crop_picture);
   EXPECT_EQ(a.far_crop_picture, b.far_crop_picture);
   EXPECT_EQ(a.trace, b.trace);
+  ASSERT_EQ(a.classes.size(), b.classes.size());
+  for (size_t c = 0; c < a.classes.size(); ++c) {
+    const ClassFigures &x = a.classes[c], &y = b.classes[c];
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.pixel_share, y.pixel_share);
+    EXPECT_EQ(x.error_share, y.error_share);
+    EXPECT_EQ(x.rmse, y.rmse);
+    EXPECT_EQ(x.temporal_error, y.temporal_error);
+    EXPECT_EQ(x.reference_se, y.reference_se);
+    EXPECT_EQ(x.rmse_corrected, y.rmse_corrected);
+    EXPECT_EQ(std::isnan(x.temporal_corrected), std::isnan(y.temporal_corrected));
+    if (!std::isnan(x.temporal_corrected)) {
+      EXPECT_EQ(x.temporal_corrected, y.temporal_corrected);
+    }
+  }
   for (int k = 0; k < 4; ++k) {
     ASSERT_EQ(a.regions[k].channels.size(), b.regions[k].channels.size());
     for (size_t c = 0; c < a.regions[k].channels.size(); ++c) {
@@ -176,8 +198,8 @@ TEST(Results, FilesWithoutTheColourKeysRead) {
   nlohmann::json j = nlohmann::json::parse(results_to_json(r));
   std::function<void(nlohmann::json&)> strip = [&](nlohmann::json& x) {
     if (x.is_object()) {
-      for (const char* key :
-           {"channels", "crops", "flicker_pixel", "trace", "near_crop_picture", "far_crop_picture"})
+      for (const char* key : {"channels", "crops", "flicker_pixel", "trace", "near_crop_picture",
+                              "far_crop_picture", "classes"})
         x.erase(key);
     }
     if (x.is_structured()) {
@@ -187,13 +209,14 @@ TEST(Results, FilesWithoutTheColourKeysRead) {
   };
   strip(j);
   const std::string text = j.dump(1);
-  for (const char* key : {"channels", "crops", "flicker_pixel", "trace", "crop_picture"})
+  for (const char* key : {"channels", "crops", "flicker_pixel", "trace", "crop_picture", "classes"})
     ASSERT_EQ(text.find(key), std::string::npos) << key;
   const StudyResults b = results_from_json(text, "old.json");
   EXPECT_EQ(b.scenes[0].channels, 1);
   EXPECT_TRUE(b.scenes[0].crops.empty());
   EXPECT_EQ(b.scenes[0].flicker_pixel.x, -1);
   EXPECT_TRUE(b.scenes[0].methods[0].trace.empty());
+  EXPECT_TRUE(b.scenes[0].methods[0].classes.empty());
   EXPECT_EQ(b.scenes[0].methods[0].regions[0].rmse, r.scenes[0].methods[0].regions[0].rmse);
 }
 
@@ -268,6 +291,8 @@ TEST(Results, MarkdownAndReadmeSection) {
   EXPECT_NE(md.find("Flicker at pixel (7, 3), where `point`"), std::string::npos);
   EXPECT_NE(md.find("| 3 | 0.8333 | 1.833 | 2.833 | 3.833 |"), std::string::npos);
   EXPECT_EQ(md.find("Per channel"), md.rfind("Per channel"));  // the colour scene only
+  // The split by what the pixel sees: a row per class, a cell per method.
+  EXPECT_NE(md.find("| nearer crest | 12.5% | 0.00099, 25%, 0.00199 |"), std::string::npos);
   EXPECT_GT(md.find("Per channel"), md.find("### high"));
 
   const std::string readme = "intro\n<!-- demo:begin -->\nold\nold\n<!-- demo:end -->\nrest\n";

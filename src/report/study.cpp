@@ -25,10 +25,12 @@
 #include "report/figures.h"
 #include "report/html.h"
 #include "report/paper.h"
+#include "report/pixel_classes.h"
 #include "report/plan.h"
 #include "report/regions.h"
 #include "report/video.h"
 #include "scene/camera_path.h"
+#include "shading/kernel_frame.h"
 
 namespace sg {
 namespace fs = std::filesystem;
@@ -190,6 +192,10 @@ class Study {
   Sequence load(const SceneModel& model, const StudyVariant& v, int scene) const;
   VariantResult measure(const StudyVariant& v, const Sequence& s, const Sequence& ref,
                         const WaterRegions& w) const;
+  // The error split by what the pixel sees: masks[c][f] the pixels of class c in frame f.
+  std::vector<ClassFigures> measure_classes(
+      const Sequence& s, const Sequence& ref,
+      const std::vector<std::vector<std::vector<unsigned char>>>& masks) const;
   SceneResult run_scene(int scene, const std::string& scene_slug);
 
   const StudyConfig& c_;
@@ -500,6 +506,49 @@ std::vector<double> pixel_trace(const std::vector<Image>& frames, int x, int y) 
   return t;
 }
 
+std::vector<ClassFigures> Study::measure_classes(
+    const Sequence& s, const Sequence& reference,
+    const std::vector<std::vector<std::vector<unsigned char>>>& masks) const {
+  std::vector<ClassFigures> out;
+  const SequenceMetrics all = compare_sequences(s.frames, reference.frames);
+  double total = 0;  // the squared error summed over the image's values and frames
+  long image_pixels = 0;
+  for (const ImageMetrics& m : all.frames) {
+    total += m.rmse * m.rmse * m.pixels * double(m.channels.size());
+    image_pixels += m.pixels;
+  }
+  for (size_t c = 0; c < masks.size(); ++c) {
+    ClassFigures x;
+    x.name = kPixelClassNames[c];
+    std::vector<const std::vector<unsigned char>*> fm;
+    for (const auto& m : masks[c])
+      fm.push_back(&m);
+    const SequenceMetrics m = compare_sequences(s.frames, reference.frames, 1.0, fm);
+    double se2 = 0;
+    long pixels = 0;
+    for (const ImageMetrics& f : m.frames) {
+      se2 += f.rmse * f.rmse * f.pixels * double(f.channels.size());
+      pixels += f.pixels;
+    }
+    x.pixel_share = image_pixels > 0 ? double(pixels) / double(image_pixels) : 0;
+    x.error_share = total > 0 ? se2 / total : 0;
+    x.rmse = m.rmse;
+    x.temporal_error = m.temporal_error;
+    if (!reference.variance.empty() && pixels > 0) {
+      x.reference_se = sequence_standard_error(reference.variance, fm);
+      x.rmse_corrected = noise_corrected_rmse(x.rmse, x.reference_se);
+      x.temporal_corrected = std::sqrt(
+          std::max(0.0, x.temporal_error * x.temporal_error - 2 * x.reference_se * x.reference_se));
+    } else {
+      x.reference_se = std::numeric_limits<double>::quiet_NaN();
+      x.rmse_corrected = x.rmse;
+      x.temporal_corrected = x.temporal_error;
+    }
+    out.push_back(x);
+  }
+  return out;
+}
+
 SceneResult Study::run_scene(int scene_index, const std::string& scene_slug) {
   const StudyScene& sc = c_.scenes[scene_index];
   const Scene& scene = sc.scene;
@@ -540,6 +589,20 @@ SceneResult Study::run_scene(int scene_index, const std::string& scene_slug) {
   for (const auto& b : c_.budgets) {
     const Sequence s = load(model, b, scene_index);
     r.budgets.push_back(measure(b, s, ref, w));
+  }
+  if (c_.split) {
+    // What each pixel sees, frame by frame (the waves move; a moving camera too).
+    report_estimate(tag + "what the pixels see");
+    std::vector<std::vector<std::vector<unsigned char>>> masks(kPixelClasses);
+    for (int f = c_.first_frame; f <= c_.last_frame; ++f) {
+      const FrameTime ft = frame_time(scene, f);
+      const PixelClasses pc =
+          classify_pixels(frame_model(scene, ft), ft, kDefaultIntersectTolerance, c_.threads);
+      for (int c = 0; c < kPixelClasses; ++c)
+        masks[c].push_back(pc.mask(static_cast<PixelClass>(c)));
+    }
+    for (size_t m = 0; m < seqs.size(); ++m)
+      r.methods[m].classes = measure_classes(seqs[m], ref, masks);
   }
   std::stable_sort(r.budgets.begin(), r.budgets.end(),
                    [](const VariantResult& x, const VariantResult& y) { return x.spp < y.spp; });

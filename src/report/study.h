@@ -55,7 +55,10 @@ struct StudyConfig {
   bool pictures = true;  // grid, per-variant pictures and error maps
   bool video = true;     // side-by-side MP4 (needs ffmpeg)
   bool html = true;      // index.html and its assets
-  std::string command;   // recorded in results.json
+  // Each method's error split by what the pixel sees (report/pixel_classes.h), per frame,
+  // into results.json and results.md.
+  bool split = false;
+  std::string command;  // recorded in results.json
 };
 
 // The default target of the equal-cost comparison among `labels`: `staa` when present,
