@@ -29,6 +29,8 @@ SmoothTerms float_smooth_terms(const Frame& f, vec2 mu, mat2 cov, vec3 v);
 real float_light_pixel_coverage(const Camera& c, const Light& l, int i, int j);
 real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
 vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
+vec2 float_water_height_slope(const WaveBuffer& waves, const Frame& f, int lo, int hi, real x,
+                              real z, real dt, real ux, real uz);
 // The reference's path (kernel/reference.glsl): g[0..K] and dg[0..K].
 void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, vec2* g, vec2* dg);
 

@@ -71,6 +71,23 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
                  h = kd::water_gradient(loop, f, x, z, dt);
       EXPECT_NEAR(g.x, h.x, tol * gscale);
       EXPECT_NEAR(g.y, h.y, tol * gscale);
+      // The displaced march's blocks (kernel/intersect.glsl): any range, the lanes outside
+      // it masked at both ends; the derivative along u is grad h . u.
+      const double ux = rng.uniform() - 0.5, uz = rng.uniform() - 0.5;
+      vec2 blocks(0.0);
+      for (int lo = 0; lo < n; lo += kd::kMarchBlock) {
+        const int hi = std::min(n, lo + kd::kMarchBlock);
+        const vec2 a = kd::water_height_slope(simd, f, lo, hi, x, z, dt, ux, uz),
+                   b = kd::water_height_slope(loop, f, lo, hi, x, z, dt, ux, uz);
+        EXPECT_NEAR(a.x, b.x, tol * hscale) << lo;
+        EXPECT_NEAR(a.y, b.y, tol * gscale) << lo;
+        blocks += a;
+      }
+      EXPECT_NEAR(blocks.x, kd::water_height(loop, f, x, z, dt), tol * hscale);
+      EXPECT_NEAR(blocks.y, h.x * ux + h.y * uz, tol * gscale);
+      const int lo = n / 3, hi = std::min(n, lo + 5);  // a range off the lanes' boundaries
+      EXPECT_NEAR(kd::water_height_slope(simd, f, lo, hi, x, z, dt, ux, uz).x,
+                  kd::water_height_slope(loop, f, lo, hi, x, z, dt, ux, uz).x, tol * hscale);
       const kd::PathGradients p = kd::path_gradients(simd, f, vec3(x, 0, z)),
                               r = kd::path_gradients(loop, f, vec3(x, 0, z));
       for (int k = 0; k <= f.segments; ++k) {
@@ -179,6 +196,15 @@ TEST(KernelWaveSums, VectorisedFloatSumsEqualTheFloatKernelLoops) {
                    h = kf::float_water_gradient(loop, in.frame, x, z, dt);
     EXPECT_NEAR(g.x, h.x, tol * gscale);
     EXPECT_NEAR(g.y, h.y, tol * gscale);
+    for (int lo : {0, 8, 13, 56}) {
+      const int hi = std::min(64, lo + kd::kMarchBlock);  // the same constant in float
+      const kf::vec2 a = kf::float_water_height_slope(simd, in.frame, lo, hi, x, z, dt, 0.6f,
+                                                      -0.8f),
+                     b = kf::float_water_height_slope(loop, in.frame, lo, hi, x, z, dt, 0.6f,
+                                                      -0.8f);
+      EXPECT_NEAR(a.x, b.x, tol * hscale) << lo;
+      EXPECT_NEAR(a.y, b.y, tol * gscale) << lo;
+    }
     kf::vec2 pg[kf::kMaxSegments + 1], pd[kf::kMaxSegments + 1], rg[kf::kMaxSegments + 1],
         rd[kf::kMaxSegments + 1];
     kf::float_path_derivatives(simd, in.frame, kf::vec3(x, 0, z), pg, pd);

@@ -16,9 +16,10 @@
 // i = 0..N holding the sums over the waves j >= i (suffix) or j < i (prefix):
 //   N S + 2 i:     (sum_{j>=i} A_j^2 / 2 (a_j^2, a_j b_j, b_j^2), sum_{j>=i} A_j^2)
 //                  the suffix's slope covariance (Eq. 3) and squared amplitudes;
-//   N S + 2 i + 1: (sum_{j>=i} A_j, sum_{j<i} A_j, sum_{j<i} A_j |k_j|, 0)
-//                  the suffix's amplitude (a bound on its height), the prefix's amplitude
-//                  and slope bounds (its slab and Lipschitz bound, intersect.glsl).
+//   N S + 2 i + 1: (sum_{j>=i} A_j, sum_{j<i} A_j, sum_{j<i} A_j |k_j|, sum_{j<i} A_j |k_j|^2)
+//                  the suffix's amplitude (a bound on its height), the prefix's amplitude,
+//                  slope and curvature bounds (its slab, and the bounds on the first and
+//                  second derivatives of its height along a ray, intersect.glsl).
 // The host sums in double; entry N is the empty suffix (zeros and the whole prefix).
 struct Wave {
   real A;
@@ -121,6 +122,23 @@ SG_FN real wave_sum_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real 
   return h;
 }
 
+// The height of waves lo <= i < hi and its derivative along the horizontal direction
+// u = (ux, uz), (sum A_i sin(theta_i), sum A_i cos(theta_i) (a_i ux + b_i uz)), summed in
+// position order; hi - lo <= kMarchBlock (the displaced march's blocks, intersect.glsl).
+const int kMarchBlock = 8;
+SG_FN vec2 wave_sum_height_slope(IN(WaveBuffer) waves, IN(Frame) f, int lo, int hi, real x,
+                                 real z, real dt, real ux, real uz) {
+  vec2 r = vec2(0.0);
+  for (int j = 0; j < kMarchBlock; ++j) {
+    if (lo + j < hi) {
+      Wave w = wave_at(waves, f, lo + j);
+      real th = wave_phase(w, x, z, dt);
+      r += w.A * vec2(sin(th), cos(th) * (w.a * ux + w.b * uz));
+    }
+  }
+  return r;
+}
+
 SG_FN real wave_sum_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
   return wave_sum_height_first(waves, f, f.wave_count, x, z, dt);
 }
@@ -139,6 +157,8 @@ SG_FN vec2 wave_sum_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, 
 #ifdef SG_CPU_WAVE_SUMS
 real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
 real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z, real dt);
+vec2 water_height_slope(IN(WaveBuffer) waves, IN(Frame) f, int lo, int hi, real x, real z, real dt,
+                        real ux, real uz);
 vec2 water_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
 #else
 SG_FN real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z, real dt) {
@@ -146,6 +166,10 @@ SG_FN real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, 
 }
 SG_FN real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
   return wave_sum_height(waves, f, x, z, dt);
+}
+SG_FN vec2 water_height_slope(IN(WaveBuffer) waves, IN(Frame) f, int lo, int hi, real x, real z,
+                              real dt, real ux, real uz) {
+  return wave_sum_height_slope(waves, f, lo, hi, x, z, dt, ux, uz);
 }
 SG_FN vec2 water_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
   return wave_sum_gradient(waves, f, x, z, dt);

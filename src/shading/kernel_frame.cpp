@@ -161,14 +161,16 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
     }
   }
   // The sums from each position on (kernel/waves.glsl): suffix moments and amplitude,
-  // prefix amplitude and slope, in double, in buffer order.
+  // prefix amplitude, slope and curvature, in double, in buffer order.
   const size_t base = static_cast<size_t>(n) * stride;
   out.texels.resize(base + 2 * static_cast<size_t>(n + 1), V4(0));
-  std::vector<double> pre_A(n + 1, 0.0), pre_Ak(n + 1, 0.0);
+  std::vector<double> pre_A(n + 1, 0.0), pre_Ak(n + 1, 0.0), pre_Ak2(n + 1, 0.0);
   for (int q = 0; q < n; ++q) {
     const int i = out.order[q];
+    const double k = std::hypot(w.a[i], w.b[i]);
     pre_A[q + 1] = pre_A[q] + w.A[i];
-    pre_Ak[q + 1] = pre_Ak[q] + w.A[i] * std::hypot(w.a[i], w.b[i]);
+    pre_Ak[q + 1] = pre_Ak[q] + w.A[i] * k;
+    pre_Ak2[q + 1] = pre_Ak2[q] + w.A[i] * k * k;
   }
   double sxx = 0, sxz = 0, szz = 0, sA2 = 0, sA = 0;
   for (int q = n; q >= 0; --q) {
@@ -182,7 +184,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
       sA += w.A[i];
     }
     out.texels[base + 2 * q] = V4(R(sxx), R(sxz), R(szz), R(sA2));
-    out.texels[base + 2 * q + 1] = V4(R(sA), R(pre_A[q]), R(pre_Ak[q]), 0);
+    out.texels[base + 2 * q + 1] = V4(R(sA), R(pre_A[q]), R(pre_Ak[q]), R(pre_Ak2[q]));
   }
 }
 

@@ -56,6 +56,10 @@ real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z,
 vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt) {
   return water_gradient(waves, f, x, z, dt);
 }
+vec2 float_water_height_slope(const WaveBuffer& waves, const Frame& f, int lo, int hi, real x,
+                              real z, real dt, real ux, real uz) {
+  return water_height_slope(waves, f, lo, hi, x, z, dt, ux, uz);
+}
 
 void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, vec2* g,
                             vec2* dg) {

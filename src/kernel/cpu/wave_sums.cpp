@@ -67,6 +67,28 @@ T HeightT(const Arrays<T>& w, int n0, T x0, T z0, T dt0) {
   return hn::GetLane(hn::SumOfLanes(d, h));
 }
 
+// kernel/waves.glsl, wave_sum_height_slope: waves lo <= i < hi (the lanes outside masked).
+template <class T>
+void HeightSlopeT(const Arrays<T>& w, int lo0, int hi0, T x0, T z0, T dt0, T ux0, T uz0, T& h0,
+                  T& dh0) {
+  const hn::ScalableTag<T> d;
+  const size_t N = hn::Lanes(d);
+  const auto x = hn::Set(d, x0), z = hn::Set(d, z0), dt = hn::Set(d, dt0);
+  const auto ux = hn::Set(d, ux0), uz = hn::Set(d, uz0);
+  auto h = hn::Zero(d), dh = hn::Zero(d);
+  const size_t lo = size_t(lo0), hi = size_t(hi0);
+  for (size_t i = lo - lo % N; i < hi; i += N) {
+    const auto a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i);
+    const auto th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), hn::LoadU(d, w.c + i), x, z, dt);
+    auto A = AmplitudesBelow(d, w.A, i, hi);
+    if (i < lo) A = hn::IfThenZeroElse(hn::FirstN(d, lo - i), A);
+    h = hn::MulAdd(A, hn::Sin(d, th), h);
+    dh = hn::MulAdd(hn::Mul(A, hn::Cos(d, th)), hn::MulAdd(a, ux, hn::Mul(b, uz)), dh);
+  }
+  h0 = hn::GetLane(hn::SumOfLanes(d, h));
+  dh0 = hn::GetLane(hn::SumOfLanes(d, dh));
+}
+
 template <class T>
 void GradientT(const Arrays<T>& w, T x0, T z0, T dt0, T& gx0, T& gz0) {
   const hn::ScalableTag<T> d;
@@ -403,6 +425,14 @@ double HeightD(const Arrays<double>& w, int n, double x, double z, double dt) {
 float HeightF(const Arrays<float>& w, int n, float x, float z, float dt) {
   return HeightT(w, n, x, z, dt);
 }
+void HeightSlopeD(const Arrays<double>& w, int lo, int hi, double x, double z, double dt, double ux,
+                  double uz, double& h, double& dh) {
+  HeightSlopeT(w, lo, hi, x, z, dt, ux, uz, h, dh);
+}
+void HeightSlopeF(const Arrays<float>& w, int lo, int hi, float x, float z, float dt, float ux,
+                  float uz, float& h, float& dh) {
+  HeightSlopeT(w, lo, hi, x, z, dt, ux, uz, h, dh);
+}
 void GradientD(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz) {
   GradientT(w, x, z, dt, gx, gz);
 }
@@ -446,6 +476,8 @@ HWY_AFTER_NAMESPACE();
 namespace sg::wave_simd {
 HWY_EXPORT(HeightD);
 HWY_EXPORT(HeightF);
+HWY_EXPORT(HeightSlopeD);
+HWY_EXPORT(HeightSlopeF);
 HWY_EXPORT(GradientD);
 HWY_EXPORT(GradientF);
 HWY_EXPORT(PathD);
@@ -462,6 +494,14 @@ double height(const Arrays<double>& w, int n, double x, double z, double dt) {
 }
 float height(const Arrays<float>& w, int n, float x, float z, float dt) {
   return HWY_DYNAMIC_DISPATCH(HeightF)(w, n, x, z, dt);
+}
+void height_slope(const Arrays<double>& w, int lo, int hi, double x, double z, double dt, double ux,
+                  double uz, double& h, double& dh) {
+  HWY_DYNAMIC_DISPATCH(HeightSlopeD)(w, lo, hi, x, z, dt, ux, uz, h, dh);
+}
+void height_slope(const Arrays<float>& w, int lo, int hi, float x, float z, float dt, float ux,
+                  float uz, float& h, float& dh) {
+  HWY_DYNAMIC_DISPATCH(HeightSlopeF)(w, lo, hi, x, z, dt, ux, uz, h, dh);
 }
 void gradient(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz) {
   HWY_DYNAMIC_DISPATCH(GradientD)(w, x, z, dt, gx, gz);

@@ -1,5 +1,5 @@
 // The CPU engine's vectorised sums over the waves: the same arithmetic as the kernel's
-// loops (kernel/waves.glsl, wave_sum_height_first and wave_sum_gradient;
+// loops (kernel/waves.glsl, wave_sum_height_first, wave_sum_height_slope and wave_sum_gradient;
 // kernel/reflection_path.glsl, wave_sum_path and wave_sum_path_moving; kernel/staa.glsl,
 // wave_sum_staa;
 // kernel/reference.glsl, wave_sum_path_derivatives), run across
@@ -61,6 +61,11 @@ struct StaaPassOut {
 // The height of the first n waves (n <= w.count).
 double height(const Arrays<double>& w, int n, double x, double z, double dt);
 float height(const Arrays<float>& w, int n, float x, float z, float dt);
+// The height of waves lo <= i < hi and its derivative along (ux, uz).
+void height_slope(const Arrays<double>& w, int lo, int hi, double x, double z, double dt, double ux,
+                  double uz, double& h, double& dh);
+void height_slope(const Arrays<float>& w, int lo, int hi, float x, float z, float dt, float ux,
+                  float uz, float& h, float& dh);
 void gradient(const Arrays<double>& w, double x, double z, double dt, double& gx, double& gz);
 void gradient(const Arrays<float>& w, float x, float z, float dt, float& gx, float& gz);
 // The gradients at the K + 1 instants of a path (every wave at full amplitude).
