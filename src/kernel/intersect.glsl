@@ -184,7 +184,8 @@ SG_FN MarchProbe march_probe(IN(WaveBuffer) waves, IN(Frame) fr, IN(MarchSet) m,
     real g = fn - e;
     if (g > 0.0) {
       real lip = abs(d.y) + bounds.z * dxz;
-      r.step = max(r.step, max(g / lip, march_second_order_step(g, d.y - hs.y, bounds.w * dxz * dxz)));
+      r.step =
+          max(r.step, max(g / lip, march_second_order_step(g, d.y - hs.y, bounds.w * dxz * dxz)));
     }
     if (hi == m.n) {
       r.full = true;
@@ -212,8 +213,8 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
   }
   real s_chosen = s;  // where the set was last chosen
   real min_step = graze_depth() / max(m.lip, 1e-30);
-  real s_prev = s;        // the last position looked at, f > 0 there
-  real f_prev = 0.0;      // f(s_prev) when prev_full
+  real s_prev = s;    // the last position looked at, f > 0 there
+  real f_prev = 0.0;  // f(s_prev) when prev_full
   bool prev_full = false;
   bool first = true;      // s is the ray's first position in the slab
   bool rechosen = false;  // the set was chosen again at s

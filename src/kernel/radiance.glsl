@@ -37,7 +37,7 @@ SG_FN vec4 sea_weights() {
 // u = exponent ln y, the zenith e^u and the horizon -(e^u - 1) (special.glsl:
 // exp_minus_one). 1 - pow(y, e) would cancel where e |ln y| is small (a flat exponent or
 // a high direction): a last-bit difference between two engines' pow became a relative
-// difference of e |ln y| / 2^-24 in the horizon's share.
+// difference of 2^-24 / (e |ln y|) in the horizon's share.
 SG_FN vec2 sky_shares(IN(Frame) f, real dir_y) {
   if (!(dir_y > 0.0)) return vec2(0.0, 1.0);
   real u = f.sky_exponent * log(min(dir_y, 1.0));

@@ -126,8 +126,8 @@ SG_FN real wave_sum_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real 
 // u = (ux, uz), (sum A_i sin(theta_i), sum A_i cos(theta_i) (a_i ux + b_i uz)), summed in
 // position order; hi - lo <= kMarchBlock (the displaced march's blocks, intersect.glsl).
 const int kMarchBlock = 8;
-SG_FN vec2 wave_sum_height_slope(IN(WaveBuffer) waves, IN(Frame) f, int lo, int hi, real x,
-                                 real z, real dt, real ux, real uz) {
+SG_FN vec2 wave_sum_height_slope(IN(WaveBuffer) waves, IN(Frame) f, int lo, int hi, real x, real z,
+                                 real dt, real ux, real uz) {
   vec2 r = vec2(0.0);
   for (int j = 0; j < kMarchBlock; ++j) {
     if (lo + j < hi) {
