@@ -19,9 +19,9 @@
 //     two seeds is itself noisy), both plus float's tolerance.
 // Budget: at most 30 s in Release on the 2-core build machine: 15 scenes, 3.6 s measured
 // once the gl_programs fixture has compiled the programs (the CPU renders on one thread,
-// llvmpipe on both cores); a random scene can cost minutes (a displaced 447-wave sea seen
-// at a graze marches up to 2e6 steps a ray), so the count stays where the default seed's
-// scenes are cheap. A longer run: SG_AGREE_SCENES=N SG_AGREE_SEED=S
+// llvmpipe on both cores). The scenes that once cost minutes were a float march that
+// stood still far from the camera (kernel/intersect.glsl); 100 scenes now take about 40 s
+// once the programs are compiled. A longer run: SG_AGREE_SCENES=N SG_AGREE_SEED=S
 // build/tests/engine_agreement_test (docs/gpu.md records one); SG_AGREE_ONLY=K renders the
 // K-th scene alone. Failing scenes are written to test_out/engine_agreement/.
 #include <gtest/gtest.h>
