@@ -53,17 +53,18 @@ TEST(Metrics, TemporalErrorAndFlicker) {
 // frame's pixels.
 TEST(Metrics, MasksPerFrameTakeEachFramesOwnPixels) {
   // Two pixels; the test image errs by 0.1 on pixel 0 and 0.3 on pixel 1 in frame 0, by
-  // 0.2 and 0.4 in frame 1 (the reference is 0).
+  // 0.2 and 0.6 in frame 1 (the reference is 0): the changes differ (0.1 and 0.3), so the
+  // temporal error tells which frame's mask it took.
   Image a0(2, 1), a1(2, 1);
   a0.data = {0.1f, 0.3f};
-  a1.data = {0.2f, 0.4f};
+  a1.data = {0.2f, 0.6f};
   const std::vector<Image> a = {a0, a1}, ref(2, Image(2, 1, 0.0f));
   const std::vector<unsigned char> first = {1, 0}, second = {0, 1};
   const SequenceMetrics m = compare_sequences(a, ref, 1.0, {&first, &second});
   EXPECT_NEAR(m.frames[0].rmse, 0.1, 1e-7);
-  EXPECT_NEAR(m.frames[1].rmse, 0.4, 1e-7);
-  EXPECT_NEAR(m.rmse, std::sqrt((0.01 + 0.16) / 2), 1e-7);
-  EXPECT_NEAR(m.temporal_error, 0.1, 1e-7);  // pixel 1's change, 0.3 -> 0.4
+  EXPECT_NEAR(m.frames[1].rmse, 0.6, 1e-7);
+  EXPECT_NEAR(m.rmse, std::sqrt((0.01 + 0.36) / 2), 1e-7);
+  EXPECT_NEAR(m.temporal_error, 0.3, 1e-7);  // pixel 1's change, 0.3 -> 0.6
   // Null masks: every pixel, as the one-mask form.
   const SequenceMetrics all = compare_sequences(a, ref, 1.0, {nullptr, nullptr});
   EXPECT_DOUBLE_EQ(all.rmse, compare_sequences(a, ref).rmse);
