@@ -125,10 +125,12 @@ GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
 GlEngine::~GlEngine() = default;
 
 void GlEngine::upload(const FrameContext& ctx) {
-  const int segments = v_.entry == KernelEntry::reference
-                           ? reference_segments(ctx.model, ctx.time.duration())
-                           : v_.segments;
-  build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance);
+  const ReferenceTimeSplit split = v_.entry == KernelEntry::reference
+                                       ? reference_time_split(ctx.model, ctx.time.duration())
+                                       : ReferenceTimeSplit{v_.segments, 1};
+  const int segments = split.segments;
+  build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance,
+                      split.windows);
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);

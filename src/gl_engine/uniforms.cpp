@@ -70,6 +70,7 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::Frame& f) {
   u.set(n + ".intersect_tolerance", f.intersect_tolerance);
   u.set(n + ".duration", f.duration);
   u.set(n + ".segments", f.segments);
+  u.set(n + ".windows", f.windows);
   u.set(n + ".frame", f.frame);
   u.set(n + ".seed", f.seed);
 }

@@ -81,6 +81,10 @@ struct Frame {
   real intersect_tolerance;
   real duration;  // the shutter interval is [display time - duration, display time]
   int segments;   // K: the path's instants t_k = end - duration (K - k) / K, k = 0..K
+  // The reference on flat water (reference.glsl): W >= 1 windows of the shutter, each
+  // duration / W long, integrated exactly with K sub-intervals; the wave buffer's rotations
+  // are those of the last window (t_k = end - (duration / W) (K - k) / K). 1 elsewhere.
+  int windows;
   int frame;      // the frame's index (for the sampling streams)
   uvec2 seed;     // the sampling seed, as a 64-bit word (rng.glsl)
 };

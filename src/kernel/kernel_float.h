@@ -32,6 +32,7 @@ vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real 
 vec2 float_water_height_slope(const WaveBuffer& waves, const Frame& f, int lo, int hi, real x,
                               real z, real dt, real ux, real uz);
 // The reference's path (kernel/reference.glsl): g[0..K] and dg[0..K].
-void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, vec2* g, vec2* dg);
+void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, real dt, vec2* g,
+                            vec2* dg);
 
 }  // namespace sg::kf

@@ -31,6 +31,13 @@
 //      integrated over each piece by 4-point Gauss-Legendre on H.
 //   Sub-intervals with a root pair closer than 2^-24 of their length (a path tangent to
 //   the rim within that) are taken as not crossing: the error is at most that length.
+//   Windows. When K = kMaxSegments sub-intervals cannot meet the bound over the whole
+//   shutter (a shutter of many periods of a fast wave: the host's reference_time_split),
+//   the shutter is cut into W equal windows (Frame::windows) and each spatial sample
+//   integrates exactly over one of them, drawn at random (stratified over the T samples of
+//   its cell): the mean over windows is the shutter's mean, so the estimate stays
+//   unbiased, and the draw adds noise that the batches measure. The pilot then takes every
+//   pixel as busy (its instants cover the last window only).
 //
 // Displaced water, or a camera that moves during the shutter (format /3): the hit point
 // moves, so each sample is traced at its own time (the camera's ray at that time), and
@@ -55,8 +62,9 @@ struct PathDerivatives {
 
 // The definition (the CPU engine's vectorised equivalent under SG_CPU_WAVE_SUMS): with
 // theta_k = theta - c (end - t_k), g = sum A cos(theta_k) (a, b) and
-// dg/dt = -sum A c sin(theta_k) (a, b).
-SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
+// dg/dt = -sum A c sin(theta_k) (a, b); the window ending dt (<= 0) after the display time.
+SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point,
+                                                real dt) {
   PathDerivatives p;
   for (int k = 0; k <= f.segments; ++k) {
     p.g[k] = vec2(0.0);
@@ -64,7 +72,7 @@ SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) 
   }
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
-    real theta = wave_phase(w, point.x, point.z, 0.0);
+    real theta = wave_phase(w, point.x, point.z, dt);
     real s = sin(theta);
     real c = cos(theta);
     vec2 k = vec2(w.a, w.b);
@@ -82,10 +90,10 @@ SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) 
 }
 
 #ifdef SG_CPU_WAVE_SUMS
-PathDerivatives path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point);
+PathDerivatives path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point, real dt);
 #else
-SG_FN PathDerivatives path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
-  return wave_sum_path_derivatives(waves, f, point);
+SG_FN PathDerivatives path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point, real dt) {
+  return wave_sum_path_derivatives(waves, f, point, dt);
 }
 #endif
 
@@ -465,19 +473,20 @@ SG_FN vec4 subinterval_weights(IN(Frame) f, IN(LightConic) lc, vec2 g0, vec2 d0,
 // shutter along its path p.
 SG_FN vec4 path_time_weights(IN(Frame) f, vec3 v, IN(PathDerivatives) p) {
   LightConic lc = light_conic(f.light, v);
-  real h = f.duration / real(f.segments);
+  real h = f.duration / real(f.windows * f.segments);
   vec4 sum = vec4(0.0);
   for (int k = 0; k < f.segments; ++k)
     sum += subinterval_weights(f, lc, p.g[k], p.dg[k], p.g[k + 1], p.dg[k + 1], h);
   return sum / real(f.segments);
 }
 
-// One spatial sample on flat water, integrated over the shutter.
-SG_FN vec4 exact_time_sample(IN(WaveBuffer) waves, IN(Frame) f, real px, real py) {
+// One spatial sample on flat water, integrated over the shutter's window that ends dt
+// (<= 0) after the display time (the whole shutter when there is one window).
+SG_FN vec4 exact_time_sample(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, real dt) {
   vec3 d = normalize(camera_direction(f.camera, px, py));
   RayHit hit = intersect_flat(f.camera.position, d);
   if (!hit.hit) return miss_weights(f, d);
-  PathDerivatives p = path_derivatives(waves, f, hit.point);
+  PathDerivatives p = path_derivatives(waves, f, hit.point, dt);
   return path_time_weights(f, -d, p);
 }
 
@@ -537,10 +546,12 @@ SG_FN bool reference_pixel_busy(IN(WaveBuffer) waves, IN(Frame) f, real margin, 
   return dmin < chord + reach || ymin < reach;
 }
 
-// Whether the pixel takes the full strata: every pixel when the pilot is off, and when the
-// camera moves (the pilot's rays are those of one instant); else the pilot's choice.
+// Whether the pixel takes the full strata: every pixel when the pilot is off, when the
+// camera moves (the pilot's rays are those of one instant) and when the shutter has
+// windows (the pilot's instants are the last window's); else the pilot's choice.
 SG_FN bool reference_busy(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferenceParams) n, int i, int j) {
-  return !n.adaptive || f.camera_keys.count > 0 || reference_pixel_busy(waves, f, n.margin, i, j);
+  return !n.adaptive || f.camera_keys.count > 0 || f.windows > 1 ||
+         reference_pixel_busy(waves, f, n.margin, i, j);
 }
 
 // The strata of a pixel per batch: S_x x S_y when busy, quiet_sx x quiet_sy otherwise.
@@ -557,7 +568,7 @@ SG_FN int reference_batch_samples(IN(ReferenceParams) n, bool busy) {
 // The sum of the weights of samples [begin, end) of pixel (i, j), in the order of the
 // rendered batches' samples (batch, then cell in row-major order, then time stratum; the
 // batches first_batch onwards). The stream is advanced to the first sample's draws (two
-// uniforms per sample, three on displaced water, two outputs each), so that any split of
+// uniforms per sample, three on displaced water and with windows, two outputs each), so that any split of
 // the samples into ranges gives the same samples as one range: the GL engine renders a
 // pixel in several passes of a few samples each (gl_engine/gl_engine.cpp: llvmpipe ends
 // every loop of an invocation after 65535 iterations in all, docs/reference-renderer.md).
@@ -572,7 +583,8 @@ SG_FN vec4 reference_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferencePara
   if (begin >= last) return sum;
   Pcg32 rng = pixel_rng(f.seed, f.frame, i, j);
   bool traced = f.displaced || f.camera_keys.count > 0;  // each sample at its own time
-  int draws = (traced ? 3 : 2) * 2;
+  bool windowed = !traced && f.windows > 1;              // each over its own window
+  int draws = (traced || windowed ? 3 : 2) * 2;
   pcg32_advance(rng, uint(n.first_batch * per_batch + begin) * uint(draws));
   for (int s = begin; s < last; ++s) {
     int q = s % n.nt;
@@ -584,8 +596,12 @@ SG_FN vec4 reference_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferencePara
     if (traced) {
       real dt = (real(q) + pcg32_uniform(rng)) / real(n.nt) * f.duration - f.duration;
       sum += sample_weights(waves, f, px, py, dt);
+    } else if (windowed) {
+      int w = min(int((real(q) + pcg32_uniform(rng)) / real(n.nt) * real(f.windows)),
+                  f.windows - 1);
+      sum += exact_time_sample(waves, f, px, py, -real(w) * (f.duration / real(f.windows)));
     } else {
-      sum += exact_time_sample(waves, f, px, py);
+      sum += exact_time_sample(waves, f, px, py, 0.0);
     }
   }
   return sum;

@@ -94,15 +94,24 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
         EXPECT_NEAR(p.g[k].x, r.g[k].x, tol * gscale) << k;
         EXPECT_NEAR(p.g[k].y, r.g[k].y, tol * gscale) << k;
       }
-      // The reference's path with time derivatives (kernel/reference.glsl).
-      const kd::PathDerivatives pd = kd::path_derivatives(simd, f, vec3(x, 0, z)),
-                                rd = kd::path_derivatives(loop, f, vec3(x, 0, z));
-      for (int k = 0; k <= f.segments; ++k) {
-        EXPECT_NEAR(pd.g[k].x, rd.g[k].x, tol * gscale) << k;
-        EXPECT_NEAR(pd.g[k].y, rd.g[k].y, tol * gscale) << k;
-        EXPECT_NEAR(pd.dg[k].x, rd.dg[k].x, tol * cscale) << k;
-        EXPECT_NEAR(pd.dg[k].y, rd.dg[k].y, tol * cscale) << k;
-        EXPECT_NEAR(pd.g[k].x, p.g[k].x, tol * gscale) << k;  // the same instants as the path's
+      // The reference's path with time derivatives (kernel/reference.glsl), of the window
+      // ending at the display time and of one ending dt before it (its last instant is the
+      // gradient at dt).
+      for (const double w : {0.0, dt}) {
+        const kd::PathDerivatives pd = kd::path_derivatives(simd, f, vec3(x, 0, z), w),
+                                  rd = kd::path_derivatives(loop, f, vec3(x, 0, z), w);
+        for (int k = 0; k <= f.segments; ++k) {
+          EXPECT_NEAR(pd.g[k].x, rd.g[k].x, tol * gscale) << k;
+          EXPECT_NEAR(pd.g[k].y, rd.g[k].y, tol * gscale) << k;
+          EXPECT_NEAR(pd.dg[k].x, rd.dg[k].x, tol * cscale) << k;
+          EXPECT_NEAR(pd.dg[k].y, rd.dg[k].y, tol * cscale) << k;
+          if (w == 0.0) {
+            EXPECT_NEAR(pd.g[k].x, p.g[k].x, tol * gscale) << k;  // the path's instants
+          }
+        }
+        const vec2 last = kd::water_gradient(loop, f, x, z, w);
+        EXPECT_NEAR(pd.g[f.segments].x, last.x, tol * gscale);
+        EXPECT_NEAR(pd.g[f.segments].y, last.y, tol * gscale);
       }
       // A moving camera: the instants at points of their own (kernel/reflection_path.glsl).
       kd::PathViews v = kd::path_views_fixed(vec3(x, 0, z), vec3(0, 1, 0));
@@ -207,8 +216,8 @@ TEST(KernelWaveSums, VectorisedFloatSumsEqualTheFloatKernelLoops) {
     }
     kf::vec2 pg[kf::kMaxSegments + 1], pd[kf::kMaxSegments + 1], rg[kf::kMaxSegments + 1],
         rd[kf::kMaxSegments + 1];
-    kf::float_path_derivatives(simd, in.frame, kf::vec3(x, 0, z), pg, pd);
-    kf::float_path_derivatives(loop, in.frame, kf::vec3(x, 0, z), rg, rd);
+    kf::float_path_derivatives(simd, in.frame, kf::vec3(x, 0, z), dt, pg, pd);
+    kf::float_path_derivatives(loop, in.frame, kf::vec3(x, 0, z), dt, rg, rd);
     for (int k = 0; k <= in.frame.segments; ++k) {
       EXPECT_NEAR(pg[k].x, rg[k].x, tol * gscale) << k;
       EXPECT_NEAR(pg[k].y, rg[k].y, tol * gscale) << k;

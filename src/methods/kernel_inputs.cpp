@@ -4,9 +4,11 @@ namespace sg {
 
 void KernelFrameInputs::build(const FrameContext& ctx) {
   if (precision_ == Precision::float64) {
-    build_kernel_inputs(ctx.model, ctx.time, segments_, ctx.seed, d_, intersect_tolerance_);
+    build_kernel_inputs(ctx.model, ctx.time, segments_, ctx.seed, d_, intersect_tolerance_,
+                        windows_);
   } else {
-    build_kernel_inputs(ctx.model, ctx.time, segments_, ctx.seed, f_, intersect_tolerance_);
+    build_kernel_inputs(ctx.model, ctx.time, segments_, ctx.seed, f_, intersect_tolerance_,
+                        windows_);
   }
   model_ = ctx.model.id;
   frame_ = ctx.time.frame;

@@ -14,9 +14,13 @@ class KernelFrameInputs {
  public:
   // Inputs with K = segments path sub-arcs, in `precision`, with the displaced
   // intersection's tolerance in pixels (shading/kernel_frame.h; 0: every wave).
+  // `windows`: the reference's windows of the shutter (kernel/interface.glsl).
   KernelFrameInputs(int segments, Precision precision,
-                    double intersect_tolerance = kDefaultIntersectTolerance)
-      : precision_(precision), segments_(segments), intersect_tolerance_(intersect_tolerance) {}
+                    double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1)
+      : precision_(precision),
+        segments_(segments),
+        windows_(windows),
+        intersect_tolerance_(intersect_tolerance) {}
   // Builds the inputs of ctx's frame.
   void build(const FrameContext& ctx);
   // Makes sure the inputs are ctx's frame's: the engine's begin_frame has built them, so
@@ -33,6 +37,7 @@ class KernelFrameInputs {
 
   Precision precision_;
   int segments_;
+  int windows_;
   double intersect_tolerance_;
   KernelInputsD d_;
   KernelInputsF f_;

@@ -17,12 +17,26 @@ double reference_path_error_bound(const SceneModel& m, double duration, int segm
   return b4 * std::pow(h, 4) / 384.0;
 }
 
-int reference_segments(const SceneModel& m, double duration) {
+ReferenceTimeSplit reference_time_split(const SceneModel& m, double duration) {
   const double tolerance = kReferencePathTolerance * m.light.radius;
-  for (int k = 1; k < kd::kMaxSegments; ++k) {
-    if (reference_path_error_bound(m, duration, k) <= tolerance) return k;
+  for (int k = 1; k <= kd::kMaxSegments; ++k) {
+    if (reference_path_error_bound(m, duration, k) <= tolerance) return {k, 1};
   }
-  return kd::kMaxSegments;
+  ReferenceTimeSplit s{kd::kMaxSegments, 1};
+  if (m.displaced() || m.scene.camera.moving()) return s;
+  // The bound falls as (W K)^-4: start from the root, then step past its rounding.
+  const double b = reference_path_error_bound(m, duration, kd::kMaxSegments);
+  const double w = std::ceil(std::pow(b / tolerance, 0.25));
+  s.windows = static_cast<int>(std::clamp(w, 2.0, double(kReferenceMaxWindows)));
+  while (s.windows < kReferenceMaxWindows &&
+         reference_path_error_bound(m, duration / s.windows, kd::kMaxSegments) > tolerance) {
+    ++s.windows;
+  }
+  return s;
+}
+
+int reference_segments(const SceneModel& m, double duration) {
+  return reference_time_split(m, duration).segments;
 }
 
 ReferenceSettings reference_settings(const MethodOptions& o) {
@@ -76,12 +90,13 @@ const KernelFrameInputs& ReferenceMethod::inputs(const FrameContext& ctx) const 
   if (!(inputs_ && model_ == ctx.model.id && duration_ == ctx.time.duration())) {
     std::lock_guard<std::mutex> lock(lazy_);
     auto* self = const_cast<ReferenceMethod*>(this);
-    const int k = reference_segments(ctx.model, ctx.time.duration());
-    if (!inputs_ || k != segments_) {
+    const ReferenceTimeSplit k = reference_time_split(ctx.model, ctx.time.duration());
+    if (!inputs_ || k.segments != split_.segments || k.windows != split_.windows) {
       self->inputs_ = std::make_unique<KernelFrameInputs>(
-          k, precision_,
-          intersect_tolerance_ / std::max({settings_.samples.sx, settings_.samples.sy, 1}));
-      self->segments_ = k;
+          k.segments, precision_,
+          intersect_tolerance_ / std::max({settings_.samples.sx, settings_.samples.sy, 1}),
+          k.windows);
+      self->split_ = k;
     }
     self->model_ = ctx.model.id;
     self->duration_ = ctx.time.duration();

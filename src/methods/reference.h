@@ -9,9 +9,10 @@
 //
 // `--samples SxSxT` (default 8x8x1): per batch S x S strata of the pixel, T samples in each;
 // `--batches B` (default 2). Flat water costs one path of K + 1 instants per sample, K
-// chosen per frame so that the path's interpolation error is at most 1e-4 of the light's
-// radius (reference_segments). The stratified estimator of before remains as
-// `supersample` (methods/stratified.h).
+// chosen per frame so that the path's interpolation error is at most 5e-5 of the light's
+// radius (reference_time_split); a shutter too long for that with kMaxSegments instants
+// (many periods of a fast wave) is cut into windows, each sample integrating one drawn at
+// random. The stratified estimator of before remains as `supersample` (methods/stratified.h).
 #pragma once
 
 #include <cmath>
@@ -28,7 +29,9 @@ namespace sg {
 // raise it whenever the reference's images change, on either engine, so that a study never
 // takes a cached frame of the estimator of before. 2: the GL engine renders the reference
 // in passes (before, llvmpipe's loop limit dropped samples: docs/reference-renderer.md).
-inline constexpr int kReferenceRevision = 2;
+// 3: windows of the shutter where kMaxSegments sub-intervals cannot meet the path's
+// bound (before, the path's interpolation was wrong there: docs/reference-renderer.md).
+inline constexpr int kReferenceRevision = 3;
 
 // The reference's defaults (docs/reference-renderer.md: the measured noise and cost).
 inline constexpr SampleCounts kReferenceSamples{8, 8, 1};
@@ -54,10 +57,21 @@ struct ReferenceSettings {
 // --adaptive, --quiet-samples), for either engine.
 ReferenceSettings reference_settings(const MethodOptions& o);
 
-// The sub-intervals K of flat water's paths for a scene and shutter: the smallest K
-// (1 to kMaxSegments) with the cubic Hermite interpolation's error bound
-// (duration / K)^4 / 384 * sum A |k| c^4 at most kReferencePathTolerance light radii.
+// The split of the shutter for flat water's exact time integral: W windows of
+// duration / W, each of K sub-intervals, with the cubic Hermite interpolation's error
+// bound (duration / (W K))^4 / 384 * sum A |k| c^4 at most kReferencePathTolerance light
+// radii: the smallest K (1 to kMaxSegments) with W = 1, else K = kMaxSegments and the
+// smallest W (at most kReferenceMaxWindows, where the bound may stay unmet: windows of a
+// 2^-20th of the shutter). W is 1 where samples are traced at their own times (displaced
+// water, a moving camera).
 inline constexpr double kReferencePathTolerance = 5e-5;
+inline constexpr int kReferenceMaxWindows = 1 << 20;
+struct ReferenceTimeSplit {
+  int segments = 1;
+  int windows = 1;
+};
+ReferenceTimeSplit reference_time_split(const SceneModel& m, double duration);
+// Its K.
 int reference_segments(const SceneModel& m, double duration);
 // That bound for K sub-intervals, in gradient units.
 double reference_path_error_bound(const SceneModel& m, double duration, int segments);
@@ -90,8 +104,9 @@ class ReferenceMethod final : public Method {
   // Pixel (i, j) of ctx's frame.
   ReferencePixel pixel(const FrameContext& ctx, int i, int j) const;
   const ReferenceSettings& settings() const { return settings_; }
-  // K of the current frame's inputs.
-  int segments() const { return segments_; }
+  // K and W of the current frame's inputs.
+  int segments() const { return split_.segments; }
+  int windows() const { return split_.windows; }
 
  private:
   const KernelFrameInputs& inputs(const FrameContext& ctx) const;
@@ -100,7 +115,7 @@ class ReferenceMethod final : public Method {
   ReferenceSettings settings_;
   Precision precision_;
   double intersect_tolerance_;
-  int segments_ = 0;
+  ReferenceTimeSplit split_{0, 0};
   uint64_t model_ = 0;
   double duration_ = -1;
   std::unique_ptr<KernelFrameInputs> inputs_;

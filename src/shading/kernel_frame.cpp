@@ -74,7 +74,7 @@ void fill_camera_keys(const CameraDesc& c, const FrameTime& ft, const vec3& orig
 
 template <class In>
 void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-           double intersect_tolerance, In& out) {
+           double intersect_tolerance, int windows, In& out) {
   using Frame = decltype(out.frame);
   using R = decltype(out.frame.duration);
   using V3 = decltype(out.frame.light.L);
@@ -83,6 +83,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
     throw Error("--segments: must be in [1, " + std::to_string(kd::kMaxSegments) + "] (got " +
                 std::to_string(segments) + ")");
   }
+  if (windows < 1) throw Error("the reference's windows: must be at least 1");
   auto v3 = [](const vec3& v) { return V3(R(v.x), R(v.y), R(v.z)); };
   Frame& f = out.frame;
   // The camera at the display time; a moving one's from its keys (the frame's model holds
@@ -113,6 +114,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
   f.intersect_tolerance = R(intersect_tolerance);
   f.duration = R(ft.duration());
   f.segments = segments;
+  f.windows = windows;
   f.frame = ft.frame;
   f.seed = {static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32)};
 
@@ -146,7 +148,8 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
     out.c[q] = tx[1].x;
     out.slope[q] = tx[1].z;
     for (int s = 0; s < segments; ++s) {
-      const double delta = reduce_angle(w.c[i] * (ft.duration() * (segments - s) / segments));
+      const double delta =
+          reduce_angle(w.c[i] * (ft.duration() / windows * (segments - s) / segments));
       V4& r = tx[2 + s / 2];
       const R rc = R(std::cos(delta)), rs = R(std::sin(delta));
       if (s % 2 == 0) {
@@ -258,18 +261,19 @@ kd::Frame widen(const kf::Frame& f) {
   d.intersect_tolerance = f.intersect_tolerance;
   d.duration = f.duration;
   d.segments = f.segments;
+  d.windows = f.windows;
   d.frame = f.frame;
   d.seed = f.seed;
   return d;
 }
 
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-                         KernelInputsD& out, double intersect_tolerance) {
-  build(m, ft, segments, seed, intersect_tolerance, out);
+                         KernelInputsD& out, double intersect_tolerance, int windows) {
+  build(m, ft, segments, seed, intersect_tolerance, windows, out);
 }
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-                         KernelInputsF& out, double intersect_tolerance) {
-  build(m, ft, segments, seed, intersect_tolerance, out);
+                         KernelInputsF& out, double intersect_tolerance, int windows) {
+  build(m, ft, segments, seed, intersect_tolerance, windows, out);
 }
 
 }  // namespace sg

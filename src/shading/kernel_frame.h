@@ -78,13 +78,17 @@ kd::Frame widen(const kf::Frame& f);
 inline constexpr double kDefaultIntersectTolerance = 0.25;
 
 // Builds the inputs of frame `ft` with K = `segments` path segments (1 to kMaxSegments),
-// the sampling `seed` and the displaced intersection's tolerance (pixels; 0: every wave).
+// the sampling `seed`, the displaced intersection's tolerance (pixels; 0: every wave) and
+// the reference's windows of the shutter (kernel/interface.glsl, Frame::windows; the
+// rotations are the last window's).
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsD& out,
-                         double intersect_tolerance = kDefaultIntersectTolerance);
+                         double intersect_tolerance = kDefaultIntersectTolerance,
+                         int windows = 1);
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsF& out,
-                         double intersect_tolerance = kDefaultIntersectTolerance);
+                         double intersect_tolerance = kDefaultIntersectTolerance,
+                         int windows = 1);
 
 // The wave buffer of `in` for the kernel; `vectorised`: with the arrays, so that the CPU
 // engine's vectorised sums run (else the kernel's own loops, the definitions).

@@ -61,9 +61,9 @@ vec2 float_water_height_slope(const WaveBuffer& waves, const Frame& f, int lo, i
   return water_height_slope(waves, f, lo, hi, x, z, dt, ux, uz);
 }
 
-void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, vec2* g,
+void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, real dt, vec2* g,
                             vec2* dg) {
-  const PathDerivatives p = path_derivatives(waves, f, point);
+  const PathDerivatives p = path_derivatives(waves, f, point, dt);
   for (int k = 0; k <= f.segments; ++k) {
     g[k] = p.g[k];
     dg[k] = p.dg[k];

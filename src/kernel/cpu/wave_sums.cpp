@@ -176,21 +176,22 @@ void PathMovingT(const Arrays<T>& w, const T* px, const T* pz, const T* pdt, int
 // kernel/reference.glsl, wave_sum_path_derivatives: the gradients and their time
 // derivatives at the path's instants, theta_k = theta - c (end - t_k) by angle subtraction.
 template <class T>
-void PathDerivativesT(const Arrays<T>& w, T x0, T z0, int K, T* gx_out, T* gz_out, T* dgx_out,
-                      T* dgz_out) {
+void PathDerivativesT(const Arrays<T>& w, T x0, T z0, T dt0, int K, T* gx_out, T* gz_out,
+                      T* dgx_out, T* dgz_out) {
   const hn::ScalableTag<T> d;
   using V = decltype(hn::Zero(d));
   const size_t N = hn::Lanes(d);
-  const auto x = hn::Set(d, x0), z = hn::Set(d, z0), zero = hn::Zero(d);
+  const auto x = hn::Set(d, x0), z = hn::Set(d, z0), dt = hn::Set(d, dt0), zero = hn::Zero(d);
   V gx[kMaxInstants], gz[kMaxInstants], dgx[kMaxInstants], dgz[kMaxInstants];
   for (int k = 0; k <= K; ++k)
     gx[k] = gz[k] = dgx[k] = dgz[k] = zero;
   const size_t n = size_t(w.count);
   for (size_t i = 0; i < n; i += N) {
     const V a = hn::LoadU(d, w.a + i), b = hn::LoadU(d, w.b + i);
-    const V th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), zero, x, z, zero);
+    const V cw = hn::LoadU(d, w.c + i);
+    const V th = Phase(d, a, b, hn::LoadU(d, w.theta0 + i), cw, x, z, dt);
     const V A = hn::LoadU(d, w.A + i);
-    const V Ac = hn::Mul(A, hn::LoadU(d, w.c + i));
+    const V Ac = hn::Mul(A, cw);
     const V s = hn::Sin(d, th), c = hn::Cos(d, th);
     const V gk = hn::Mul(A, c), dk = hn::Mul(Ac, s);
     gx[K] = hn::MulAdd(gk, a, gx[K]);
@@ -453,13 +454,13 @@ void PathMovingF(const Arrays<float>& w, const float* x, const float* z, const f
                  float* gx, float* gz) {
   PathMovingT(w, x, z, dt, K, gx, gz);
 }
-void PathDerivativesD(const Arrays<double>& w, double x, double z, int K, double* gx, double* gz,
-                      double* dgx, double* dgz) {
-  PathDerivativesT(w, x, z, K, gx, gz, dgx, dgz);
+void PathDerivativesD(const Arrays<double>& w, double x, double z, double dt, int K, double* gx,
+                      double* gz, double* dgx, double* dgz) {
+  PathDerivativesT(w, x, z, dt, K, gx, gz, dgx, dgz);
 }
-void PathDerivativesF(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz,
-                      float* dgx, float* dgz) {
-  PathDerivativesT(w, x, z, K, gx, gz, dgx, dgz);
+void PathDerivativesF(const Arrays<float>& w, float x, float z, float dt, int K, float* gx,
+                      float* gz, float* dgx, float* dgz) {
+  PathDerivativesT(w, x, z, dt, K, gx, gz, dgx, dgz);
 }
 void StaaD(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out) {
   StaaT(w, in, out);
@@ -523,13 +524,13 @@ void path_moving(const Arrays<float>& w, const float* x, const float* z, const f
                  float* gx, float* gz) {
   HWY_DYNAMIC_DISPATCH(PathMovingF)(w, x, z, dt, K, gx, gz);
 }
-void path_derivatives(const Arrays<double>& w, double x, double z, int K, double* gx, double* gz,
-                      double* dgx, double* dgz) {
-  HWY_DYNAMIC_DISPATCH(PathDerivativesD)(w, x, z, K, gx, gz, dgx, dgz);
+void path_derivatives(const Arrays<double>& w, double x, double z, double dt, int K, double* gx,
+                      double* gz, double* dgx, double* dgz) {
+  HWY_DYNAMIC_DISPATCH(PathDerivativesD)(w, x, z, dt, K, gx, gz, dgx, dgz);
 }
-void path_derivatives(const Arrays<float>& w, float x, float z, int K, float* gx, float* gz,
-                      float* dgx, float* dgz) {
-  HWY_DYNAMIC_DISPATCH(PathDerivativesF)(w, x, z, K, gx, gz, dgx, dgz);
+void path_derivatives(const Arrays<float>& w, float x, float z, float dt, int K, float* gx,
+                      float* gz, float* dgx, float* dgz) {
+  HWY_DYNAMIC_DISPATCH(PathDerivativesF)(w, x, z, dt, K, gx, gz, dgx, dgz);
 }
 void staa_pass(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out) {
   HWY_DYNAMIC_DISPATCH(StaaD)(w, in, out);

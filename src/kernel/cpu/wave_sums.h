@@ -77,12 +77,12 @@ void path_moving(const Arrays<double>& w, const double* x, const double* z, cons
                  int segments, double* gx, double* gz);
 void path_moving(const Arrays<float>& w, const float* x, const float* z, const float* dt,
                  int segments, float* gx, float* gz);
-// The gradients and their time derivatives at the K + 1 instants of a path
-// (kernel/reference.glsl, wave_sum_path_derivatives).
-void path_derivatives(const Arrays<double>& w, double x, double z, int segments, double* gx,
-                      double* gz, double* dgx, double* dgz);
-void path_derivatives(const Arrays<float>& w, float x, float z, int segments, float* gx, float* gz,
-                      float* dgx, float* dgz);
+// The gradients and their time derivatives at the K + 1 instants of a path whose last
+// instant is dt after the display time (kernel/reference.glsl, wave_sum_path_derivatives).
+void path_derivatives(const Arrays<double>& w, double x, double z, double dt, int segments,
+                      double* gx, double* gz, double* dgx, double* dgz);
+void path_derivatives(const Arrays<float>& w, float x, float z, float dt, int segments, float* gx,
+                      float* gz, float* dgx, float* dgz);
 void staa_pass(const Arrays<double>& w, const StaaPassIn<double>& in, StaaPassOut<double>& out);
 void staa_pass(const Arrays<float>& w, const StaaPassIn<float>& in, StaaPassOut<float>& out);
 

@@ -90,7 +90,8 @@ const SunglintHost = (() => {
       'frame.sky_gradient': scene.sky.gradient, 'frame.sky_exponent': scene.sky.exponent,
       'frame.wave_count': n, 'frame.wave_stride': stride, 'frame.amplitude_bound': amplitudeBound,
       'frame.slope_bound': slopeBound, 'frame.intersect_tolerance': variant.intersect_tolerance,
-      'frame.duration': duration, 'frame.segments': K, 'frame.frame': frame, 'frame.seed': variant.seed,
+      'frame.duration': duration, 'frame.segments': K, 'frame.windows': 1, 'frame.frame': frame,
+      'frame.seed': variant.seed,
     };
     for (let q = 0; q < 8; ++q) { // kMaxCameraKeys (kernel/interface.glsl), unused with count 0
       u[`frame.camera_keys.time[${q}]`] = 0;

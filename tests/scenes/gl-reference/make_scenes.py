@@ -3,7 +3,8 @@
 (docs/reference-renderer.md: "Float crossings"): small flat seas, lit from the
 side or under a Schlick-Fresnel sky, that the shared scenes of scenes/ (sun straight
 ahead, no sky) never exercised. gl_engine_test renders them with both engines and checks
-the image means agree within 4 standard errors. Deterministic; run from this folder:
+the image means agree within 4 standard errors; long-shutter is one whose shutter
+the reference cuts into windows. Deterministic; run from this folder:
 python3 make_scenes.py"""
 import json, math, random
 
@@ -31,7 +32,7 @@ def light_dir(elevation_deg, azimuth_deg):
             round(-math.cos(e) * math.cos(a), 6)]
 
 
-def scene(name, light, sky, fresnel, sea, wave_list, camera_height=2.5, look_at=60.0):
+def scene(name, light, sky, fresnel, sea, wave_list, camera_height=2.5, look_at=60.0, fps=30):
     return {
         "format": "sunglint-scene/2", "name": name,
         "image": {"width": 160, "height": 90},
@@ -40,7 +41,7 @@ def scene(name, light, sky, fresnel, sea, wave_list, camera_height=2.5, look_at=
         "light": light, "sky": sky,
         "surface": {"geometry": "flat", "fresnel": fresnel, "sea_radiance": sea,
                     "waves": wave_list},
-        "animation": {"t0": 0.0, "fps": 30, "frames": 10, "shutter": 1.0},
+        "animation": {"t0": 0.0, "fps": fps, "frames": 10, "shutter": 1.0},
     }
 
 
@@ -56,7 +57,16 @@ fresnel = scene("fresnel-light",
                 {"direction": light_dir(12, 0), "angular_radius_deg": 0.27, "radiance": 1.0,
                  "visible": False},
                 {"radiance": 0.02}, "schlick", 0.005, waves(16, 7, 0.5, 40.0, 0.25))
-for s in (side, fresnel):
+# A 10 s shutter (fps 0.1) over 32 waves with periods of 0.8 to 5 s, Schlick Fresnel under
+# a sky gradient: 32 sub-intervals cannot follow the normals' path over the whole shutter,
+# so the reference integrates windows of it (kernel/reference.glsl; before, on such a
+# random scene, the water came out at 0.2 of its value on both engines).
+long_shutter = scene("long-shutter",
+                     {"direction": light_dir(15, 10), "angular_radius_deg": 0.27, "radiance": 1.0,
+                      "visible": False},
+                     {"zenith": 0.05, "horizon": 0.01, "exponent": 0.5}, "schlick", 0.005,
+                     waves(32, 11, 1.0, 40.0, 0.3), fps=0.1)
+for s in (side, fresnel, long_shutter):
     with open(s["name"] + ".json", "w") as f:
         json.dump(s, f, indent=1)
         f.write("\n")
