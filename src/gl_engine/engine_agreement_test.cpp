@@ -8,15 +8,21 @@
 //     in float, within float's tolerance: at most 2% of the values (and at least one) may
 //     differ by more than 1e-3 of the image's largest value (a binary test at the disk's
 //     rim or a displaced ray's crest that float rounding tips either way), and the RMSE of
-//     the difference at most 1e-2 of that largest value; or, where float itself is that far
-//     off, no further than twice the CPU's float from its double (measured on the scene):
-//     a wave of millimetres seen from kilometres has a phase that float positions carry to
-//     radians, so the two floats' pixels are as unrelated as each is to the double's;
+//     the difference over the other values at most 1e-2 of that largest value (over all
+//     values, one tipped value of 384 would exceed it); or, where float itself is that far
+//     off, no further from the CPU's double than three times the CPU's float, in values
+//     off and in RMSE (or 1e-2 of the largest value): a wave of millimetres seen from kilometres has a phase that float
+//     positions carry to radians, so the two floats' pixels are as unrelated as each is
+//     to the double's, and llvmpipe's sin and exp round worse than glibc's (a camera 1 mm
+//     above a displaced sea of 6.5 km of amplitudes, seed 11 scene 28: `staa`'s GL image
+//     2.1 times as far from the double as the CPU's float);
 //   - reference (2x2x1, 8 batches): GL seed 2 against CPU float seeds 0 and 1: the image
 //     means within 4 standard errors (from the CPU's batches, pooled), the RMSE against
 //     seed 1 within 1.5 times that of the two CPU seeds (or of its expectation from the
 //     standard error, sqrt(2) se, when larger: with a handful of noisy pixels the RMSE of
 //     two seeds is itself noisy), both plus float's tolerance.
+// Every bound also allows float's range: weights below float's smallest normal number,
+// which a GPU flushes to zero, times the scene's largest radiance (float_range).
 // Budget: at most 30 s in Release on the 2-core build machine: 15 scenes, 3.6 s measured
 // once the gl_programs fixture has compiled the programs (the CPU renders on one thread,
 // llvmpipe on both cores). The scenes that once cost minutes were a float march that
@@ -32,8 +38,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "base/atomic_file.h"
 #include "engine/render.h"
@@ -74,6 +82,19 @@ double rmse(const Image& a, const Image& b) {
   return std::sqrt(s / double(a.data.size()));
 }
 
+// The RMSE of a - b over all values but the `drop` farthest apart.
+double rmse_but(const Image& a, const Image& b, long drop) {
+  std::vector<double> d;
+  for (size_t k = 0; k < a.data.size(); ++k)
+    d.push_back(std::fabs(double(a.data[k]) - b.data[k]));
+  std::sort(d.begin(), d.end());
+  const size_t keep = d.size() - std::min(d.size(), size_t(std::max(0L, drop)));
+  double s = 0;
+  for (size_t k = 0; k < keep; ++k)
+    s += d[k] * d[k];
+  return keep > 0 ? std::sqrt(s / double(keep)) : 0.0;
+}
+
 // Sum of a reference's per-pixel variances of the mean (all channels).
 double variance_sum(const Method& m) {
   double s = 0;
@@ -82,6 +103,20 @@ double variance_sum(const Method& m) {
       s += x;
   }
   return s;
+}
+
+// Float's range on the scene: a weight (kernel/interface.glsl: the shares of light, sky and
+// sea) below float's smallest normal number is flushed to zero on a GPU (and by
+// llvmpipe), not on the CPU; 16 of them times the largest radiance bounds what that
+// changes of a value (seen on a sky with exponent 89 seen at 3 to 25 degrees: weights of
+// 1e-37, values of 3e-30, the GL reference's mean 12% below the CPU's).
+double float_range(const SceneModel& m) {
+  double r = 0;
+  const Radiances& q = m.radiances;
+  for (int c = 0; c < 3; ++c)
+    r = std::max({r, std::fabs(q.light[c]), std::fabs(q.zenith[c]), std::fabs(q.horizon[c]),
+                  std::fabs(q.sea[c])});
+  return 16 * double(std::numeric_limits<float>::min()) * r;
 }
 
 Image render_one(const SceneModel& model, Method& m, int frame, uint64_t seed) {
@@ -130,6 +165,7 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
     const Scene s = gen.next(24, 16, frame);
     if (only >= 0 && k != only) continue;
     const SceneModel model(s);
+    const double range = float_range(model);
     const std::string where =
         "random scene " + std::to_string(k) + " frame " + std::to_string(frame) + " (" +
         std::to_string(s.surface.waves.size()) + " waves, " +
@@ -149,20 +185,29 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
                     std::chrono::duration<double>(t2 - t1).count());
       line += part;
       const Image cd = render_one(model, *cpu_double[n], frame, 0);
-      const double peak = largest(c);
-      long off = 0, float_off = 0;
+      const double peak = largest(c), apart = std::max(1e-3 * peak, range);
+      long off = 0, float_off = 0, off_double = 0;
       for (size_t p = 0; p < c.data.size(); ++p) {
-        off += std::fabs(double(g.data[p]) - c.data[p]) > 1e-3 * peak;
-        float_off += std::fabs(double(cd.data[p]) - c.data[p]) > 1e-3 * peak;
+        off += std::fabs(double(g.data[p]) - c.data[p]) > apart;
+        float_off += std::fabs(double(cd.data[p]) - c.data[p]) > apart;
+        off_double += std::fabs(double(g.data[p]) - cd.data[p]) > apart;
       }
-      // Float's tolerance, and float's own error on this scene (CPU float - CPU double).
-      const long allowed = std::max({1L, long(0.02 * double(c.data.size())), 2 * float_off});
-      const double e = rmse(g, c);
-      if (off > allowed || e > std::max(1e-2 * peak, 2 * rmse(cd, c))) {
+      // Float's tolerance against the CPU's float; or, where float itself is off on the
+      // scene, the GL no further from the CPU's double than three times the CPU's float
+      // (llvmpipe's sin and exp err by 2.5 to 18 times glibc's ULPs: docs/gpu.md).
+      const long allowed = std::max(1L, long(0.02 * double(c.data.size())));
+      const double e = rmse_but(g, c, std::min(off, allowed));
+      const bool agree = off <= allowed && e <= std::max(1e-2 * peak, range);
+      const bool float_limited = float_off > 0 && off_double <= 3 * float_off &&
+                                 rmse(g, cd) <= std::max({3 * rmse(c, cd), 1e-2 * peak, range});
+      if (!agree && !float_limited) {
         failed = true;
         ++failures[n];
         ADD_FAILURE() << n << " on " << where << ": " << off << " values of " << c.data.size()
-                      << " off by more than 1e-3 of the largest (" << peak << "), RMSE " << e;
+                      << " off by more than 1e-3 of the largest (" << peak
+                      << "), RMSE over the others " << e << "; against the CPU's double: GL "
+                      << off_double << " values, RMSE " << rmse(g, cd) << ", CPU float "
+                      << float_off << " values, RMSE " << rmse(c, cd);
       }
     }
     {
@@ -181,11 +226,11 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
       const double n = double(c0.data.size());
       const double se_image = std::sqrt(0.5 * (v0 + v1) / n);     // the expected RMSE of one seed
       const double se_mean = std::sqrt(2 * 0.5 * (v0 + v1)) / n;  // of a difference of means
-      const double tol = 1e-3 * std::max(largest(c0), largest(c1));
+      const double tol = 1e-3 * std::max(largest(c0), largest(c1)) + range;
       const double dm = std::fabs(mean(g) - mean(c0));
       const double seeds = rmse(c0, c1), engines = rmse(g, c1);
       const double bound = 1.5 * std::max(seeds, std::sqrt(2.0) * se_image) + tol;
-      if (dm > 4 * se_mean + 1e-3 * tol || engines > bound) {
+      if (dm > 4 * se_mean + 1e-3 * tol + range || engines > bound) {
         failed = true;
         ++failures["reference"];
         ADD_FAILURE() << "reference on " << where << ": means GL " << mean(g) << ", CPU "
