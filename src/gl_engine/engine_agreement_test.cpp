@@ -11,11 +11,11 @@
 //     the difference over the other values at most 1e-2 of that largest value (over all
 //     values, one tipped value of 384 would exceed it); or, where float itself is that far
 //     off, no further from the CPU's double than three times the CPU's float, in values
-//     off and in RMSE (or 1e-2 of the largest value): a wave of millimetres seen from kilometres has a phase that float
-//     positions carry to radians, so the two floats' pixels are as unrelated as each is
-//     to the double's, and llvmpipe's sin and exp round worse than glibc's (a camera 1 mm
-//     above a displaced sea of 6.5 km of amplitudes, seed 11 scene 28: `staa`'s GL image
-//     2.1 times as far from the double as the CPU's float);
+//     off and in RMSE (or 1e-2 of the largest value): a wave of millimetres seen from kilometres
+//     has a phase that float positions carry to radians, so the two floats' pixels are as unrelated
+//     as each is to the double's, and llvmpipe's sin and exp round worse than glibc's (a camera 1
+//     mm above a displaced sea of 6.5 km of amplitudes, seed 11 scene 28: `staa`'s GL image 2.1
+//     times as far from the double as the CPU's float);
 //   - reference (2x2x1, 8 batches): GL seed 2 against CPU float seeds 0 and 1: the image
 //     means within 4 standard errors (from the CPU's batches, pooled), the RMSE against
 //     seed 1 within 1.5 times that of the two CPU seeds (or of its expectation from the

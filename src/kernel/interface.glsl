@@ -85,8 +85,8 @@ struct Frame {
   // duration / W long, integrated exactly with K sub-intervals; the wave buffer's rotations
   // are those of the last window (t_k = end - (duration / W) (K - k) / K). 1 elsewhere.
   int windows;
-  int frame;      // the frame's index (for the sampling streams)
-  uvec2 seed;     // the sampling seed, as a 64-bit word (rng.glsl)
+  int frame;   // the frame's index (for the sampling streams)
+  uvec2 seed;  // the sampling seed, as a 64-bit word (rng.glsl)
 };
 
 // The path tables' shapes (path_table.glsl, shading/path_table.h).

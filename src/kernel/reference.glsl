@@ -568,8 +568,8 @@ SG_FN int reference_batch_samples(IN(ReferenceParams) n, bool busy) {
 // The sum of the weights of samples [begin, end) of pixel (i, j), in the order of the
 // rendered batches' samples (batch, then cell in row-major order, then time stratum; the
 // batches first_batch onwards). The stream is advanced to the first sample's draws (two
-// uniforms per sample, three on displaced water and with windows, two outputs each), so that any split of
-// the samples into ranges gives the same samples as one range: the GL engine renders a
+// uniforms per sample, three on displaced water and with windows, two outputs each), so that any
+// split of the samples into ranges gives the same samples as one range: the GL engine renders a
 // pixel in several passes of a few samples each (gl_engine/gl_engine.cpp: llvmpipe ends
 // every loop of an invocation after 65535 iterations in all, docs/reference-renderer.md).
 SG_FN vec4 reference_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferenceParams) n, bool busy,
@@ -597,8 +597,8 @@ SG_FN vec4 reference_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferencePara
       real dt = (real(q) + pcg32_uniform(rng)) / real(n.nt) * f.duration - f.duration;
       sum += sample_weights(waves, f, px, py, dt);
     } else if (windowed) {
-      int w = min(int((real(q) + pcg32_uniform(rng)) / real(n.nt) * real(f.windows)),
-                  f.windows - 1);
+      int w =
+          min(int((real(q) + pcg32_uniform(rng)) / real(n.nt) * real(f.windows)), f.windows - 1);
       sum += exact_time_sample(waves, f, px, py, -real(w) * (f.duration / real(f.windows)));
     } else {
       sum += exact_time_sample(waves, f, px, py, 0.0);

@@ -126,8 +126,10 @@ TEST(KernelResolvedWaves, RemainderEqualsTheExplicitSum) {
           const double mean = length(a.ndf.mean - b.ndf.mean);
           double path = length(a.path.g[0] - b.path.g[0]);
           path = std::max(path, length(a.path.g[1] - b.path.g[1]));
-          const kd::vec3 dh = a.hess - b.hess;
-          path = std::max({path, std::fabs(dh.x), std::fabs(dh.y), std::fabs(dh.z)});
+          for (int k = 0; k <= f.segments; ++k) {
+            const kd::vec3 dh = a.hess[k] - b.hess[k];
+            path = std::max({path, std::fabs(dh.x), std::fabs(dh.y), std::fabs(dh.z)});
+          }
           const double total = b.ndf.cov.x + b.ndf.cov.z;
           // Uniform NDF: the remainder is the explicit sum, to the rounding of a sum of
           // hundreds of terms; per-pixel NDF: within the remainder's bounds (staa.glsl).

@@ -5,7 +5,7 @@
 //  2. One pass over the waves (staa_wave_pass): each wave's projected frequency splits it
 //     into a resolved share (1 - alpha) and an aliasing share alpha (Eq. 20,
 //     aliasing.glsl); the resolved shares give the gradients at the path's instants
-//     (reflection_path.glsl) and the Hessian; the aliasing shares the NDF's moments
+//     (reflection_path.glsl) and the Hessians there; the aliasing shares the NDF's moments
 //     (Eq. 3 or Eqs. 4-7 with Appendix A, ndf.glsl). Nothing is stored per wave. The pass
 //     visits the waves one by one only up to the remainder (staa_remainder_start): the
 //     waves, sorted by |k|, that certainly alias fully in this pixel (and, for the
@@ -13,15 +13,15 @@
 //  3. No aliasing share and no footprint term: the temporal method exactly (Sec. 3.3).
 //  4. Otherwise (staa_finish) the NDF, centred on the resolved normal, maps to a Gaussian
 //     RDF of covariance J Sigma J^T on the light plane (Eqs. 8-16, rdf.glsl), plus the
-//     footprint term D D^T / 12 (reflection_footprint.glsl); its centre moves along the
-//     resolved reflection path (K straight sub-segments on the light plane). Its
-//     time-averaged mass in the light disk (Eq. 17) is the light's share: the RDF as 1, 3,
-//     5 or 9 circular Gaussians along its major axis (Sec. 3.5, 3.6, Appendix C;
-//     kernel_fit.glsl), each integrated along the path offset by its centre (Fig. 10)
-//     with the path tables (Eqs. 18-19, path_table.glsl); past the elongation threshold
-//     the fallback, the RDF's mass in the disk by quadrature or the paper's Riemann sum
-//     (gaussian.glsl), at the display time or averaged along the path. J and Sigma are
-//     those of the display time.
+//     footprint term D D^T / 12 (reflection_footprint.glsl) averaged over the instants
+//     (staa_footprint_covariance; docs/method.md, "The footprint along the path"); its
+//     centre moves along the resolved reflection path (K straight sub-segments on the light plane).
+//     Its time-averaged mass in the light disk (Eq. 17) is the light's share: the RDF as 1, 3, 5 or
+//     9 circular Gaussians along its major axis (Sec. 3.5, 3.6, Appendix C; kernel_fit.glsl), each
+//     integrated along the path offset by its centre (Fig. 10) with the path tables (Eqs. 18-19,
+//     path_table.glsl); past the elongation threshold the fallback, the RDF's mass in the disk by
+//     quadrature or the paper's Riemann sum (gaussian.glsl), at the display time or averaged along
+//     the path. J and Sigma are those of the display time.
 //  5. The weights. The light's share takes the Fresnel factor of the centre normal. The
 //     smooth terms, Fresnel times the sky and the sea, and the share below the horizon
 //     are integrated over the normals' Gaussian in the NDF plane (smooth_terms.glsl):
@@ -43,9 +43,11 @@
 // What the pass over the waves gathers for one pixel.
 struct StaaSums {
   PathGradients path;  // the resolved waves' gradients at the instants
-  vec3 hess;           // the resolved waves' Hessian at the display time (xx, xz, zz)
-  NdfMoments ndf;      // the aliasing waves' NDF
-  bool any_alias;      // some wave with A > 0 has alpha > 0
+  // The resolved waves' Hessian (xx, xz, zz) at the instants; under a moving camera the
+  // display time's at every instant.
+  vec3 hess[kMaxSegments + 1];
+  NdfMoments ndf;  // the aliasing waves' NDF
+  bool any_alias;  // some wave with A > 0 has alpha > 0
   // The smooth terms (--smooth-cells n > 0): every wave's moments at its full amplitude
   // (not split by Eq. 20) over n x n cells of the pixel (ndf.glsl, box_cells_add), and the
   // remainder's covariance, which every cell shares.
@@ -61,7 +63,8 @@ const real kMinCosToLight = 0.1;
 SG_FN StaaSums staa_sums_zero(int K) {
   StaaSums s;
   s.path = path_gradients_zero(K);
-  s.hess = vec3(0.0);
+  for (int k = 0; k <= kMaxSegments; ++k)
+    s.hess[k] = vec3(0.0);
   s.ndf = ndf_zero();
   s.any_alias = false;
   s.cells = box_cells_zero();
@@ -140,6 +143,30 @@ SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
   return p.smooth_cells;
 }
 
+// Wave i's resolved share A (sine s and cosine c of its display-time phase) in the
+// gradients and Hessians of the path's instants (still camera): instant k's phase is
+// theta - c (end - t_k), its cosine and sine by angle subtraction (waves.glsl,
+// wave_rotation); the gradient A cos k, the Hessian -A sin k k^T.
+SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f, int i, IN(Wave) w,
+                         real A, real s, real c) {
+  vec2 k = vec2(w.a, w.b);
+  vec3 kk = vec3(k.x * k.x, k.x * k.y, k.y * k.y);
+  sums.path.g[f.segments] += (A * c) * k;
+  sums.hess[f.segments] -= (A * s) * kk;
+  for (int q = 0; q < f.segments; ++q) {
+    vec2 rot = wave_rotation(waves, f, i, q);
+    sums.path.g[q] += (A * (c * rot.x + s * rot.y)) * k;
+    sums.hess[q] -= (A * (s * rot.x - c * rot.y)) * kk;
+  }
+}
+
+// Under a moving camera the instants' Hessians are not summed: each is the display time's.
+SG_FN void staa_hessians_held(INOUT(StaaSums) sums, IN(Frame) f, bool moving) {
+  if (!moving) return;
+  for (int q = 0; q < f.segments; ++q)
+    sums.hess[q] = sums.hess[f.segments];
+}
+
 // The one pass over the waves (step 2): the definition; the CPU engine's vectorised
 // equivalent under SG_CPU_WAVE_SUMS (kernel/cpu/wave_sums.h), tested equal to it.
 SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
@@ -175,10 +202,10 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
     real resolved = (1.0 - alpha) * w.A;
     if (moving) {
       path_gradients_add_moving(sums.path, f, v, w, resolved, c);
+      sums.hess[f.segments] -= (resolved * s) * vec3(k.x * k.x, k.x * k.y, k.y * k.y);
     } else {
-      path_gradients_add(sums.path, waves, f, i, w, resolved, s, c);
+      staa_path_add(sums, waves, f, i, w, resolved, s, c);
     }
-    sums.hess -= (resolved * s) * vec3(k.x * k.x, k.x * k.y, k.y * k.y);
     real aliasing = alpha * w.A;
     if (aliasing > 0.0) {
       sums.any_alias = true;
@@ -194,6 +221,7 @@ SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p
     }
   }
   staa_add_remainder(sums, waves, f, c);
+  staa_hessians_held(sums, f, moving);
   return sums;
 }
 
@@ -309,6 +337,27 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
   return m;
 }
 
+// The pixel-footprint term's covariance on the light plane (a unit box has variance 1/12
+// per axis: D D^T / 12, added to the RDF's), averaged along the path. The resolved waves'
+// curvature changes over the shutter as they travel (a wave of period T turns its Hessian
+// by 2 pi / T per second), and the path crosses the light's disk at some instant: each
+// instant's footprint is taken at its own gradient and Hessian, and the average over the
+// shutter is the trapezoid rule's over the K + 1 instants. `display`: the display time's.
+// Under a moving camera (whose instants' footprints are not formed) and with a zero
+// shutter, the display time's alone.
+SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews) v,
+                                     IN(StaaSums) sums, vec2 mean, mat2 display) {
+  int K = f.segments;
+  if (v.moving || !(f.duration > 0.0)) return display;
+  mat2 sum = 0.5 * display;
+  for (int k = 0; k < K; ++k) {
+    ReflectionFootprint rk = reflection_footprint(f.light, fp, sums.path.g[k], sums.hess[k], mean);
+    mat2 ck = rk.valid ? rk.D * transpose(rk.D) / 12.0 : display;
+    sum += (k == 0 ? 0.5 : 1.0) * ck;
+  }
+  return sum / real(K);
+}
+
 // Steps 3 to 5 from the sums.
 SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
                              IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
@@ -367,15 +416,14 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
   // The pixel-footprint term: the pixel square mapped to the light plane by the resolved
   // reflection's derivatives D.
   if (p.footprint != 0) {
-    ReflectionFootprint rf = reflection_footprint(f.light, fp, sums.path.g[K], sums.hess, mean);
+    ReflectionFootprint rf = reflection_footprint(f.light, fp, sums.path.g[K], sums.hess[K], mean);
     if (rf.valid) {
       if (p.footprint == 2 && !sums.any_alias) {
         res.exact_pending = true;
         res.exact_D = rf.D;
         return res;
       }
-      // A unit box has variance 1/12 per axis: covariance D D^T / 12, added to the RDF's.
-      cov_r += rf.D * transpose(rf.D) / 12.0;
+      cov_r += staa_footprint_covariance(f, fp, v, sums, mean, rf.D * transpose(rf.D) / 12.0);
     }
   }
 

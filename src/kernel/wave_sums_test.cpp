@@ -161,7 +161,8 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
             EXPECT_NEAR(a.path.g[k].y, b.path.g[k].y, tol * gscale);
           }
           for (int c = 0; c < 3; ++c) {
-            EXPECT_NEAR(a.hess[c], b.hess[c], tol * kscale * gscale) << c;
+            for (int k = 0; k <= f.segments; ++k)
+              EXPECT_NEAR(a.hess[k][c], b.hess[k][c], tol * kscale * gscale) << k << " " << c;
             EXPECT_NEAR(a.ndf.cov[c], b.ndf.cov[c], tol * gscale * gscale) << c;
           }
           EXPECT_NEAR(a.ndf.mean.x, b.ndf.mean.x, tol * gscale);

@@ -255,7 +255,8 @@ Scene long_shutter() {
 
 TEST(ExactTime, SplitsALongShutterIntoWindowsWithinTheBound) {
   const SceneModel m(long_shutter());
-  const double D = frame_time(m.scene, 3).duration(), tol = kReferencePathTolerance * m.light.radius;
+  const double D = frame_time(m.scene, 3).duration(),
+               tol = kReferencePathTolerance * m.light.radius;
   const ReferenceTimeSplit split = reference_time_split(m, D);
   EXPECT_EQ(split.segments, kd::kMaxSegments);
   ASSERT_GT(split.windows, 1);
@@ -535,8 +536,7 @@ TEST(ReferenceEstimator, LongShutterAgreesWithStratifiedSampling) {
       sum_ref += grey_value(m, p.weights);
       light += p.weights.x;
       var += p.variance(m.radiances, 0);
-      sum_strat +=
-          grey_value(m, stratified_pixel(in, i, j, StratifiedSettings{{8, 8, 64}, false}));
+      sum_strat += grey_value(m, stratified_pixel(in, i, j, StratifiedSettings{{8, 8, 64}, false}));
     }
   }
   EXPECT_GT(ref.windows(), 1);

@@ -83,12 +83,10 @@ inline constexpr double kDefaultIntersectTolerance = 0.25;
 // rotations are the last window's).
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsD& out,
-                         double intersect_tolerance = kDefaultIntersectTolerance,
-                         int windows = 1);
+                         double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1);
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsF& out,
-                         double intersect_tolerance = kDefaultIntersectTolerance,
-                         int windows = 1);
+                         double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1);
 
 // The wave buffer of `in` for the kernel; `vectorised`: with the arrays, so that the CPU
 // engine's vectorised sums run (else the kernel's own loops, the definitions).

@@ -248,11 +248,10 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
     ipz[k] = hn::Set(d, in.pz[k]);
     idt[k] = hn::Set(d, in.dt[k]);
   }
-  V gx[kMaxInstants], gz[kMaxInstants];
+  V gx[kMaxInstants], gz[kMaxInstants], hxx[kMaxInstants], hxz[kMaxInstants], hzz[kMaxInstants];
   for (int k = 0; k <= K; ++k)
-    gx[k] = gz[k] = zero;
-  V hxx = zero, hxz = zero, hzz = zero, mx = zero, mz = zero, cxx = zero, cxz = zero, czz = zero,
-    any = zero;
+    gx[k] = gz[k] = hxx[k] = hxz[k] = hzz[k] = zero;
+  V mx = zero, mz = zero, cxx = zero, cxz = zero, czz = zero, any = zero;
   // kernel/ndf.glsl, box_cells_add: the smooth terms' cells.
   const int side = in.box_side;
   V bmx[kMaxBoxCells], bmz[kMaxBoxCells], bxx[kMaxBoxCells], bxz[kMaxBoxCells], bzz[kMaxBoxCells];
@@ -298,13 +297,19 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
       const V rc = hn::Mul(resolved, c);
       gx[K] = hn::MulAdd(rc, a, gx[K]);
       gz[K] = hn::MulAdd(rc, b, gz[K]);
+      const V aa = hn::Mul(a, a), ab = hn::Mul(a, b), bb = hn::Mul(b, b);
       if (!moving) {
+        // kernel/staa.glsl, staa_path_add: the gradient and the Hessian at each instant.
         for (int k = 0; k < K; ++k) {
-          const V ck = hn::MulAdd(c, hn::LoadU(d, w.rot_c + k * n + i),
-                                  hn::Mul(s, hn::LoadU(d, w.rot_s + k * n + i)));
-          const V rk = hn::Mul(resolved, ck);
+          const V rc = hn::LoadU(d, w.rot_c + k * n + i), rs = hn::LoadU(d, w.rot_s + k * n + i);
+          const V ck = hn::MulAdd(c, rc, hn::Mul(s, rs));
+          const V sk = hn::MulSub(s, rc, hn::Mul(c, rs));
+          const V rk = hn::Mul(resolved, ck), hk = hn::Mul(resolved, sk);
           gx[k] = hn::MulAdd(rk, a, gx[k]);
           gz[k] = hn::MulAdd(rk, b, gz[k]);
+          hxx[k] = hn::NegMulAdd(hk, aa, hxx[k]);
+          hxz[k] = hn::NegMulAdd(hk, ab, hxz[k]);
+          hzz[k] = hn::NegMulAdd(hk, bb, hzz[k]);
         }
       } else {
         // kernel/reflection_path.glsl, path_gradients_add_moving.
@@ -317,9 +322,9 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
         }
       }
       const V rs = hn::Mul(resolved, s);
-      hxx = hn::NegMulAdd(rs, hn::Mul(a, a), hxx);
-      hxz = hn::NegMulAdd(rs, hn::Mul(a, b), hxz);
-      hzz = hn::NegMulAdd(rs, hn::Mul(b, b), hzz);
+      hxx[K] = hn::NegMulAdd(rs, aa, hxx[K]);
+      hxz[K] = hn::NegMulAdd(rs, ab, hxz[K]);
+      hzz[K] = hn::NegMulAdd(rs, bb, hzz[K]);
     }
     if (side > 0) {
       // Half-phases along the pixel's edges, per cell: x = (k . J_0, k . J_1) / (2 n).
@@ -401,10 +406,10 @@ void StaaT(const Arrays<T>& w, const StaaPassIn<T>& in, StaaPassOut<T>& out) {
   for (int k = 0; k <= K; ++k) {
     out.gx[k] = sum(gx[k]);
     out.gz[k] = sum(gz[k]);
+    out.hxx[k] = sum(hxx[k]);
+    out.hxz[k] = sum(hxz[k]);
+    out.hzz[k] = sum(hzz[k]);
   }
-  out.hxx = sum(hxx);
-  out.hxz = sum(hxz);
-  out.hzz = sum(hzz);
   out.mx = sum(mx);
   out.mz = sum(mz);
   out.cxx = sum(cxx);

@@ -50,9 +50,11 @@ inline constexpr int kMaxBoxCells = 9;
 template <class T>
 struct StaaPassOut {
   T gx[kMaxInstants], gz[kMaxInstants];  // resolved gradients at the instants
-  T hxx = 0, hxz = 0, hzz = 0;           // resolved Hessian
-  T mx = 0, mz = 0;                      // NDF mean
-  T cxx = 0, cxz = 0, czz = 0;           // NDF covariance
+  // Resolved Hessians at the instants (under a moving camera only the last, the display
+  // time's, is summed).
+  T hxx[kMaxInstants], hxz[kMaxInstants], hzz[kMaxInstants];
+  T mx = 0, mz = 0;             // NDF mean
+  T cxx = 0, cxz = 0, czz = 0;  // NDF covariance
   bool any = false;
   // The cells' moments (box_side^2 of them, row-major): mean and covariance.
   T bmx[kMaxBoxCells], bmz[kMaxBoxCells], bxx[kMaxBoxCells], bxz[kMaxBoxCells], bzz[kMaxBoxCells];
