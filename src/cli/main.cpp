@@ -23,12 +23,12 @@
 
 namespace {
 
-// The path-integral tables (used by `staa`) are generated once and cached in a 64 MiB file;
+// The path-integral tables (used by `staa`) are generated once and cached in an 8 MiB file;
 // say so when that happens, and where.
 void announce_path_table_cache(const sg::PathTableCacheResult& r) {
   if (r.written) {
     std::fprintf(stderr,
-                 "sunglint: generated the path-integral tables and cached them in %s (64 MiB, "
+                 "sunglint: generated the path-integral tables and cached them in %s (8 MiB, "
                  "reused by later runs; --cache-dir or SUNGLINT_CACHE_DIR choose the folder)\n",
                  r.path.c_str());
   } else {
@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
   app.add_option_function<std::string>(
       "--cache-dir", [](const std::string& dir) { sg::PathTables::set_cache_dir(dir); },
       "Folder of sunglint's cache file, the path-integral tables of staa (path_tables.bin, "
-      "64 MiB; default $SUNGLINT_CACHE_DIR, else $XDG_CACHE_HOME/sunglint, else "
+      "8 MiB; default $SUNGLINT_CACHE_DIR, else $XDG_CACHE_HOME/sunglint, else "
       "~/.cache/sunglint)");
   sg::PathTables::set_cache_notice(announce_path_table_cache);
   // A GL program whose preparation takes a while (its first compile on a driver) is

@@ -21,6 +21,7 @@
 #include "kernel/rdf.glsl"
 #include "kernel/gaussian.glsl"
 #include "kernel/arc.glsl"
+#include "kernel/path_table_grid.glsl"
 #include "kernel/path_table.glsl"
 #include "kernel/path_table_gen.glsl"
 #include "kernel/kernel_fit.glsl"

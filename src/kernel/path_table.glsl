@@ -7,8 +7,11 @@
 //  * F(d, sigma): the mass of N(c, sigma^2 I), |c| = d, inside the unit disk; R32F texture
 //    of n_distance samples of d (x) by n_sigma slices (y).
 //  * S(u, v, sigma) = integral from -R to u of F(sqrt(u'^2 + v^2), sigma) du' (Eq. 18);
-//    R32F texture array of n_u samples of u in [-R, R] (x) by n_v of v in [0, R] (y) by
-//    n_sigma slices (layers). S is even in v.
+//    R32F texture array of n_u samples of u in [-R, 0] (x) by n_v of v in [0, R] (y) by
+//    n_sigma slices (layers). S is even in v, and F is even in u, so S(u) = 2 S(0) - S(-u):
+//    the half u > 0 is not stored.
+// The radial coordinates (d of F, v of S) are sampled densely about the disk's edge, where a
+// narrow Gaussian's F and S change fastest (kernel/path_table_grid.glsl).
 // Slice 0 is sigma = 0; slices 1..n-1 are log-spaced from sigma_min to sigma_max; slice
 // k's extent is R_k = 1 + extent_k sigma_k. Lookups are bilinear within a slice and linear
 // between slices in c(sigma) = sigma / sigma_min below sigma_min and
@@ -40,28 +43,53 @@ SG_FN void locate_sigma(IN(PathTableInfo) t, real sigma, OUT(int) k, OUT(real) w
 }
 
 SG_FN real f_slice(IN(R32Texture2D) F, IN(PathTableInfo) t, int k, real d) {
-  real x = d * real(t.n_distance - 1) / slice_extent(t, k);
-  if (x > real(t.n_distance - 1)) return 0.0;
+  real R = slice_extent(t, k);
+  if (d > R) return 0.0;
+  real x = table_radial(R, d) * real(t.n_distance - 1);
   int i = min(int(x), t.n_distance - 2);
   real a = x - real(i);
   return (1.0 - a) * texelFetch(F, ivec2(i, k), 0).x + a * texelFetch(F, ivec2(i + 1, k), 0).x;
+}
+
+// A row of a slice of S: the v cell (j, j + 1) and the weight b of row j + 1.
+struct SRow {
+  int j;
+  real b;
+};
+
+SG_FN SRow s_row(IN(PathTableInfo) t, real R, real v) {
+  real y = table_radial(R, v) * real(t.n_v - 1);
+  SRow r;
+  r.j = min(int(y), t.n_v - 2);
+  r.b = y - real(r.j);
+  return r;
+}
+
+// The stored half: S(-a, v) for 0 <= a (clamped to R), bilinear.
+SG_FN real s_half(IN(R32Texture3D) S, IN(PathTableInfo) t, int k, real R, SRow r, real a) {
+  real x = (R - min(a, R)) * real(t.n_u - 1) / R;
+  int i = min(int(x), t.n_u - 2);
+  real w = x - real(i);
+  real lo = (1.0 - w) * texelFetch(S, ivec3(i, r.j, k), 0).x +
+            w * texelFetch(S, ivec3(i + 1, r.j, k), 0).x;
+  real hi = (1.0 - w) * texelFetch(S, ivec3(i, r.j + 1, k), 0).x +
+            w * texelFetch(S, ivec3(i + 1, r.j + 1, k), 0).x;
+  return (1.0 - r.b) * lo + r.b * hi;
+}
+
+// S(0, v): the last column, half the line's whole integral.
+SG_FN real s_middle(IN(R32Texture3D) S, IN(PathTableInfo) t, int k, SRow r) {
+  return (1.0 - r.b) * texelFetch(S, ivec3(t.n_u - 1, r.j, k), 0).x +
+         r.b * texelFetch(S, ivec3(t.n_u - 1, r.j + 1, k), 0).x;
 }
 
 SG_FN real s_slice(IN(R32Texture3D) S, IN(PathTableInfo) t, int k, real u, real v) {
   real R = slice_extent(t, k);
   v = abs(v);
   if (v > R) return 0.0;
-  real y = v * real(t.n_v - 1) / R;
-  int j = min(int(y), t.n_v - 2);
-  real b = y - real(j);
-  real x = (clamp(u, -R, R) + R) * real(t.n_u - 1) / (2.0 * R);
-  int i = min(int(x), t.n_u - 2);
-  real a = x - real(i);
-  real lo =
-      (1.0 - a) * texelFetch(S, ivec3(i, j, k), 0).x + a * texelFetch(S, ivec3(i + 1, j, k), 0).x;
-  real hi = (1.0 - a) * texelFetch(S, ivec3(i, j + 1, k), 0).x +
-            a * texelFetch(S, ivec3(i + 1, j + 1, k), 0).x;
-  return (1.0 - b) * lo + b * hi;
+  SRow r = s_row(t, R, v);
+  real h = s_half(S, t, k, R, r, abs(u));
+  return u > 0.0 ? 2.0 * s_middle(S, t, k, r) - h : h;
 }
 
 // One slice's time average along the segment [u0, u1] at distance v (u1 >= u0). Shorter
@@ -71,10 +99,26 @@ SG_FN real s_slice(IN(R32Texture3D) S, IN(PathTableInfo) t, int k, real u, real 
 SG_FN real path_slice(IN(R32Texture2D) F, IN(R32Texture3D) S, IN(PathTableInfo) t, int k, real u0,
                       real u1, real v) {
   real len = u1 - u0;
-  real h = 2.0 * slice_extent(t, k) / real(t.n_u - 1);
+  real R = slice_extent(t, k);
+  real h = R / real(t.n_u - 1);
   real mid = len >= h ? 0.0 : f_slice(F, t, k, length(vec2(0.5 * (u0 + u1), v)));
   if (len <= 0.5 * h) return mid;
-  real quotient = (s_slice(S, t, k, u1, v) - s_slice(S, t, k, u0, v)) / len;
+  real quotient = 0.0;
+  if (v <= R) {
+    // S(u1) - S(u0) from the stored half, S(u) = 2 S(0) - S(-u) for u > 0: S(0) cancels
+    // unless the segment crosses u = 0.
+    SRow r = s_row(t, R, v);
+    real h0 = s_half(S, t, k, R, r, abs(u0));
+    real h1 = s_half(S, t, k, R, r, abs(u1));
+    if (u0 > 0.0) {
+      quotient = h0 - h1;
+    } else if (u1 > 0.0) {
+      quotient = 2.0 * s_middle(S, t, k, r) - h1 - h0;
+    } else {
+      quotient = h1 - h0;
+    }
+    quotient /= len;
+  }
   if (len >= h) return quotient;
   real w = 2.0 * len / h - 1.0;
   return (1.0 - w) * mid + w * quotient;

@@ -15,7 +15,10 @@
 #include <thread>
 
 #include "base/atomic_file.h"
+#include "base/embedded_file.h"
 #include "base/error.h"
+#include "base/fnv1a.h"
+#include "embedded/path_table_sources.h"
 #include "shading/disk_gaussian.h"
 
 namespace sg {
@@ -87,7 +90,7 @@ PathTables PathTables::generate(const PathTableParams& params, int threads) {
     float* f = &t.f_[size_t(k) * p.n_distance];
     for (int i = 0; i < p.n_distance; ++i)
       f[i] = float(disk_gaussian(t.distance_node(i, k), sigma));
-    const double hu = 2 * R / (p.n_u - 1);
+    const double hu = t.u_cell(k);
     if (sigma == 0) {
       for (int j = 0; j < p.n_v; ++j) {
         const double v = t.v_node(j, k);
@@ -107,19 +110,16 @@ PathTables PathTables::generate(const PathTableParams& params, int threads) {
     // Where F is exactly 1 or 0 (|d - 1| >= 40 sigma, disk_gaussian.h) the cell's integral
     // is its width or 0; the fine grid holds those exact values, so skipping is exact.
     const double d_one = 1 - 40 * sigma, d_zero = 1 + 40 * sigma;
-    // S(-u) = S(R) - S(u): integrate up to the first node at or right of u = 0 (index
-    // half) and mirror the rest; u_i = -u_(n_u - 1 - i).
-    const int half = p.n_u / 2;
     for (int j = 0; j < p.n_v; ++j) {
       const double v = t.v_node(j, k), v2 = v * v;
       float* row = &t.s_[(size_t(k) * p.n_v + j) * p.n_u];
-      std::vector<double> S(half + 1);
       double sum = 0;
-      for (int i = 0; i < half; ++i) {
+      row[0] = 0.0f;
+      for (int i = 0; i + 1 < p.n_u; ++i) {
+        // The cell [u_i, u_i + hu] lies left of u = 0: its nearest point to the centre is
+        // its right end.
         const double u0 = t.u_node(i, k), u1 = u0 + hu;
-        const double near = std::min(std::abs(u0), std::abs(u1));
-        const double d_far = std::hypot(std::max(std::abs(u0), std::abs(u1)), v);
-        const double d_near = u0 < 0 && u1 > 0 ? v : std::hypot(near, v);
+        const double d_far = std::hypot(u0, v), d_near = std::hypot(std::min(u1, 0.0), v);
         if (d_near >= d_zero) {
           // nothing to add
         } else if (d_far <= d_one) {
@@ -130,14 +130,8 @@ PathTables PathTables::generate(const PathTableParams& params, int threads) {
             sum += kd::path_cell_panel(line, 0, count, step, c, r, v2);
           }
         }
-        S[i + 1] = sum;
+        row[i + 1] = float(sum);
       }
-      const int mirror = p.n_u - 1 - half;  // == half - 1 (n_u even) or half (odd)
-      const double total = S[half] + S[mirror];
-      for (int i = 0; i <= half; ++i)
-        row[i] = float(S[i]);
-      for (int i = half + 1; i < p.n_u; ++i)
-        row[i] = float(total - S[p.n_u - 1 - i]);
     }
   };
 
@@ -270,6 +264,23 @@ size_t payload_floats(const PathTableParams& p) {
   return size_t(p.n_sigma) * p.n_distance + size_t(p.n_sigma) * p.n_v * p.n_u;
 }
 
+}  // namespace
+
+uint32_t PathTables::source_fingerprint() {
+  static const uint32_t h = [] {
+    uint64_t x = kFnv1aBasis;
+    for (const EmbeddedFile& f : path_table_sources()) {
+      x = fnv1a64(f.name, x);
+      x = fnv1a64(std::string_view("\0", 1), x);
+      x = fnv1a64(f.bytes, x);
+    }
+    return uint32_t(x ^ (x >> 32));
+  }();
+  return h;
+}
+
+namespace {
+
 std::optional<PathTables> reject(std::string* why, const std::string& reason) {
   if (why) *why = reason;
   return std::nullopt;
@@ -286,7 +297,7 @@ std::string PathTables::serialize() const {
   put_u32(out, uint32_t(p_.n_u));
   put_u32(out, uint32_t(p_.n_v));
   put_u32(out, uint32_t(p_.n_sigma));
-  put_u32(out, 0);  // reserved
+  put_u32(out, source_fingerprint());
   put_f64(out, p_.sigma_min);
   put_f64(out, p_.sigma_max);
   put_f64(out, p_.extent_k);
@@ -318,6 +329,11 @@ std::optional<PathTables> PathTables::deserialize(std::string_view in,
   p.sigma_max = get_f64(in, 40);
   p.extent_k = get_f64(in, 48);
   if (!(p == expected)) return reject(why, "parameters differ");
+  if (get_u32(in, 28) != source_fingerprint()) {
+    return reject(why,
+                  "made by other grid or generation sources (kernel/path_table_grid.glsl, "
+                  "kernel/path_table_gen.glsl)");
+  }
   const size_t floats = payload_floats(p);
   if (get_u64(in, 56) != floats * 4) return reject(why, "payload size differs");
   if (in.size() != kHeaderBytes + floats * 4 + 4) return reject(why, "truncated or oversized");

@@ -2,28 +2,39 @@
 // unit disk, with their lookups, their on-disk cache and a process-wide shared instance.
 //
 // Tables (float, as a GPU would hold them; float rounding, 6e-8 relative, is far below the
-// interpolation error):
+// interpolation error), 8 MiB in all (a game engine's budget for two textures):
 //  * F(d, sigma) (disk_gaussian.h), n_distance = 512 samples of d per slice: Sec. 4's 2D
 //    texture, for a reflection that does not move.
 //  * S(u, v, sigma) = integral from -R to u of F(sqrt(u'^2 + v^2), sigma) du' (Eq. 18),
-//    n_u = 512 samples of u in [-R, R] by n_v = 512 samples of v in [0, R]: Sec. 4's 3D
-//    texture. S is even in v, so only v >= 0 is stored; v is the distance of the segment's
-//    line from the disk's centre ("closest distance", Sec. 4), which is >= 0.
+//    n_u = 192 samples of u in [-R, 0] by n_v = 168 samples of v in [0, R]: Sec. 4's 3D
+//    texture. F is even in u, so S(u) = 2 S(0) - S(-u) and only u <= 0 is stored (the same
+//    u step as 383 samples over [-R, R]); S is even in v, so only v >= 0 is stored; v is the
+//    distance of the segment's line from the disk's centre ("closest distance", Sec. 4).
+//  * The radial axes (d of F, v of S) are not uniform: kd::table_radial_node
+//    (kernel/path_table_grid.glsl) crowds the nodes quadratically about the disk's edge
+//    r = 1 from both sides, where a narrow Gaussian's F and S change fastest; the chord
+//    sqrt(1 - v^2) of sigma = 0 is then linear in the grid coordinate near v = 1, and F's
+//    step at d = 1 falls on a node. The u axis is uniform (the edge's u, sqrt(1 - v^2),
+//    moves with v).
 //  * Both share n_sigma = 64 slices. Slice 0 is sigma = 0, filled exactly (F the indicator
 //    of d < 1 with 0.5 at d = 1, S the chord length clamp(u, -c, c) + c, c = sqrt(1 - v^2)).
 //    Slices 1..63 are log-spaced from sigma_min = 2e-3 to sigma_max = 8. Log spacing because
-//    F changes shape at a rate proportional to d sigma / sigma. sigma_min = 2e-3 is the
-//    table's own distance step (1/511): a narrower Gaussian cannot be resolved on the grid,
-//    so slice 0 stands in for it. sigma_max = 8 because beyond it the three-term
-//    wide-Gaussian expansion of disk_gaussian.h is within 3e-10 of F (measured: 2.6e-11 at
-//    sigma = 10, 6.6e-9 at 5), so lookups above sigma_max use that expansion and its
-//    closed-form integral along u (erf and Gaussian moments), with no table at all.
+//    F changes shape at a rate proportional to d sigma / sigma. sigma_min = 2e-3: a
+//    narrower Gaussian is not resolved by the grid, so slice 0 stands in for it. sigma_max =
+//    8 because beyond it the three-term wide-Gaussian expansion of disk_gaussian.h is within
+//    3e-10 of F (measured: 2.6e-11 at sigma = 10, 6.6e-9 at 5), so lookups above sigma_max
+//    use that expansion and its closed-form integral along u (erf and Gaussian moments),
+//    with no table at all.
 //  * Each slice has its own extent R(sigma) = 1 + 6 sigma: F(R, sigma) <= Phi(-6) = 1e-9 for
 //    narrow Gaussians and exp(-18) = 1.5e-8 of the peak for wide ones, below float rounding
 //    of S. Beyond the extent F is taken as 0 and S as constant in u and 0 in v.
+//  * The sizes were chosen by measurement (docs/path-tables.md, "Size"): the slices set the
+//    error above sigma = 0.02 (48 slices make it 1.8 times larger), the u and v steps below;
+//    192 x 168 balances the two within 8 MiB.
 //
 // Lookups (kernel/path_table.glsl, the one implementation, which the methods below wrap):
-// bilinear within a slice (in (d) for F, in (u, v) for S), linear between slices in the
+// bilinear within a slice (in the grid coordinates of d for F, of (u, v) for S; a segment's
+// S(u1) - S(u0) reads S(0) only when it crosses u = 0), linear between slices in the
 // sigma coordinate c(sigma) = sigma / sigma_min below sigma_min (between slice 0 and
 // slice 1) and 1 + log(sigma / sigma_min) / log(q) above, q the slice ratio.
 //
@@ -37,13 +48,14 @@
 // The slices are independent and are computed in parallel, so the bytes do not depend on
 // the number of threads.
 //
-// Cache: one file, path_tables.bin (64 MiB), in the folder set by set_cache_dir (the CLI's
+// Cache: one file, path_tables.bin (8 MiB), in the folder set by set_cache_dir (the CLI's
 // --cache-dir), else $SUNGLINT_CACHE_DIR, else $XDG_CACHE_HOME/sunglint, else
 // $HOME/.cache/sunglint, else <temp>/sunglint. When the shared tables are generated, the
 // notice set by set_cache_notice is called once (the CLI announces the file on stderr).
-// Little-endian: the magic "SGPATHTB", the format version, the dimensions and parameters, the
-// payload size, the F and S floats, and a zlib crc32 of everything before it. A missing, truncated,
-// corrupt or stale (version or parameter mismatch) file is regenerated and rewritten atomically; a
+// Little-endian: the magic "SGPATHTB", the format version, the dimensions, the fingerprint of
+// the grid and generation sources (source_fingerprint), the parameters, the payload size, the F
+// and S floats, and a zlib crc32 of everything before it. A missing, truncated, corrupt or stale
+// (version, parameter or source mismatch) file is regenerated and rewritten atomically; a
 // cache that cannot be written is not an error, the tables then live in memory only.
 #pragma once
 
@@ -62,9 +74,9 @@
 namespace sg {
 
 struct PathTableParams {
-  int n_distance = 512;  // F: samples of d in [0, R] per slice
-  int n_u = 512;         // S: samples of u in [-R, R]
-  int n_v = 512;         // S: samples of v in [0, R]
+  int n_distance = 512;  // F: samples of d in [0, R] per slice (kd::table_radial_node)
+  int n_u = 192;         // S: samples of u in [-R, 0]
+  int n_v = 168;         // S: samples of v in [0, R] (kd::table_radial_node)
   int n_sigma = 64;      // slices: sigma = 0, then n_sigma - 1 log-spaced
   double sigma_min = 2e-3;
   double sigma_max = 8;
@@ -82,7 +94,11 @@ struct PathTableCacheResult {
 
 class PathTables {
  public:
-  static constexpr uint32_t kFormatVersion = 1;
+  static constexpr uint32_t kFormatVersion = 2;
+  // FNV-1a (64 bits folded to 32) of the sources that decide what the tables hold
+  // (kernel/path_table_grid.glsl, kernel/path_table_gen.glsl, built into the program); a
+  // cache file made by other sources is stale.
+  static uint32_t source_fingerprint();
 
   // Computes the tables. threads = 0: one per hardware thread. Throws sg::Error naming a
   // bad parameter.
@@ -150,9 +166,14 @@ class PathTables {
   const PathTableParams& params() const { return p_; }
   double slice_sigma(int k) const { return sigma_[k]; }
   double extent(int k) const { return extent_[k]; }
-  double distance_node(int i, int k) const { return i * extent_[k] / (p_.n_distance - 1); }
-  double u_node(int i, int k) const { return -extent_[k] + i * 2 * extent_[k] / (p_.n_u - 1); }
-  double v_node(int j, int k) const { return j * extent_[k] / (p_.n_v - 1); }
+  double distance_node(int i, int k) const {
+    return kd::table_radial_node(extent_[k], double(i) / (p_.n_distance - 1));
+  }
+  double u_node(int i, int k) const { return -extent_[k] * (p_.n_u - 1 - i) / (p_.n_u - 1); }
+  double u_cell(int k) const { return extent_[k] / (p_.n_u - 1); }  // the u step of slice k
+  double v_node(int j, int k) const {
+    return kd::table_radial_node(extent_[k], double(j) / (p_.n_v - 1));
+  }
   float f_node(int i, int k) const { return f_[size_t(k) * p_.n_distance + i]; }
   float s_node(int iu, int iv, int k) const { return s_[(size_t(k) * p_.n_v + iv) * p_.n_u + iu]; }
   size_t bytes() const { return (f_.size() + s_.size()) * sizeof(float); }

@@ -166,7 +166,7 @@ json tables_json() {
       s["offset"] = fine.size();
       s["count"] = g.values.size();
       s["step"] = g.step;
-      s["panels"] = PathTables::cell_panels(2 * R / (p.n_u - 1), sigma);
+      s["panels"] = PathTables::cell_panels(t.u_cell(k), sigma);
       for (double x : g.values)
         fine.push_back(float(x));
     }

@@ -303,16 +303,16 @@ const SunglintHost = (() => {
       if (this.tablesReady) return;
       const start = performance.now();
       const gl = this.gl, t = this.data.tables, info = t.info;
-      const half = info.n_u / 2;
+      const cellsN = info.n_u - 1;  // the u cells of [-R, 0]
       const fine = base64Floats(t.fine);
       const width = 1024, rows = Math.ceil(fine.length / width);  // as glsl_es_prelude.glsl reads it
       const padded = new Float32Array(width * rows);
       padded.set(fine);
       const fineTexture = this.texture(gl.R32F, width, rows, padded);
-      const a = this.texture(gl.R32F, half, info.n_v, null, info.n_sigma);
-      const b = this.texture(gl.R32F, half, info.n_v, null, info.n_sigma);
+      const a = this.texture(gl.R32F, cellsN, info.n_v, null, info.n_sigma);
+      const b = this.texture(gl.R32F, cellsN, info.n_v, null, info.n_sigma);
       this.tableS = this.texture(gl.R32F, info.n_u, info.n_v, null, info.n_sigma);
-      const sources = ['kernel/glsl_es_prelude.glsl', 'kernel/path_table_gen.glsl', 'web/shaders/tables.glsl'];
+      const sources = ['kernel/glsl_es_prelude.glsl', 'kernel/path_table_gen.glsl', 'kernel/path_table_grid.glsl', 'web/shaders/tables.glsl'];
       const cells = this.program('cells', '#define SG_PASS_CELLS\n', sources);
       const scan = this.program('scan', '#define SG_PASS_SCAN\n', sources);
       const assemble = this.program('assemble', '#define SG_PASS_ASSEMBLE\n', sources);
@@ -320,13 +320,13 @@ const SunglintHost = (() => {
         if (k === 0) return;  // sigma = 0: the chord, in the assembly
         this.use(cells, { fine_offset: s.offset, fine_count: s.count, fine_step: s.step, extent: s.extent,
           n_u: info.n_u, n_v: info.n_v, panels: s.panels }, { fine: fineTexture });
-        this.draw([[a, k]], half, info.n_v);
+        this.draw([[a, k]], cellsN, info.n_v);
       });
       let from = a, to = b;
-      for (let shift = 1; shift < half; shift *= 2) {
+      for (let shift = 1; shift < cellsN; shift *= 2) {
         for (let k = 1; k < info.n_sigma; k++) {
           this.use(scan, { layer: k, shift }, { src: from });
-          this.draw([[to, k]], half, info.n_v);
+          this.draw([[to, k]], cellsN, info.n_v);
         }
         [from, to] = [to, from];
       }

@@ -1,13 +1,13 @@
-// The web page makes the path table S in the browser (docs/web.md: 64 MiB of floats do not
+// The web page makes the path table S in the browser (docs/web.md: 8 MiB of floats do not
 // fit a 2 MiB page; the fine grids of F they are integrated from take 0.6 MiB) with the
 // kernel's own functions (kernel/path_table_gen.glsl), as the host does in
 // shading/path_table.cpp, in three passes over each sigma slice (a layer of a 2D array
 // texture, drawn one layer at a time):
-//   SG_PASS_CELLS     the integral of each u cell [u_i, u_i+1] left of u = 0, per row v_j;
+//   SG_PASS_CELLS     the integral of each u cell [u_i, u_i+1] (all left of u = 0: the table
+//                     holds u in [-R, 0]), per row v_j (kernel/path_table.glsl's radial grid);
 //   SG_PASS_SCAN      one step of an inclusive prefix sum along u (Hillis and Steele 1986:
 //                     shift 1, 2, 4, ...), so that texel i holds the cells 0..i;
-//   SG_PASS_ASSEMBLE  S: 0 at u_0, the prefix sums up to the middle, the rest mirrored,
-//                     S(-u) = S(R) - S(u) (the host's order); slice 0 (sigma = 0) the chord.
+//   SG_PASS_ASSEMBLE  S: 0 at u_0, then the prefix sums; slice 0 (sigma = 0) the chord.
 // The host sums the cells of a row one after the other in double; here the sums are float,
 // in the prefix sum's order: S differs from the host's by float rounding (docs/web.md).
 #if defined(SG_PASS_CELLS)
@@ -22,9 +22,9 @@ uniform int panels;
 out vec4 cell_out;
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);  // (u cell i, v row j)
-  float hu = 2.0 * extent / float(n_u - 1);
-  float u0 = -extent + float(p.x) * 2.0 * extent / float(n_u - 1);
-  float v = float(p.y) * extent / float(n_v - 1);
+  float hu = extent / float(n_u - 1);
+  float u0 = -extent * float(n_u - 1 - p.x) / float(n_u - 1);
+  float v = table_radial_node(extent, float(p.y) / float(n_v - 1));
   float w = hu / float(panels);
   float sum = 0.0;
   for (int m = 0; m < panels; ++m) {
@@ -58,18 +58,11 @@ float S_at(int i, int j) {
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);  // (u node i, v row j)
   if (chord) {
-    float u = -extent + float(p.x) * 2.0 * extent / float(n_u - 1);
-    s_out = vec4(path_table_chord(u, float(p.y) * extent / float(n_v - 1)), 0.0, 0.0, 0.0);
+    float u = -extent * float(n_u - 1 - p.x) / float(n_u - 1);
+    float v = table_radial_node(extent, float(p.y) / float(n_v - 1));
+    s_out = vec4(path_table_chord(u, v), 0.0, 0.0, 0.0);
     return;
   }
-  int half_n = n_u / 2;
-  float s = 0.0;
-  if (p.x <= half_n) {
-    s = S_at(p.x, p.y);
-  } else {
-    float total = S_at(half_n, p.y) + S_at(n_u - 1 - half_n, p.y);
-    s = total - S_at(n_u - 1 - p.x, p.y);
-  }
-  s_out = vec4(s, 0.0, 0.0, 0.0);
+  s_out = vec4(S_at(p.x, p.y), 0.0, 0.0, 0.0);
 }
 #endif
