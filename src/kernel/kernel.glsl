@@ -30,5 +30,8 @@
 #include "kernel/smooth_terms.glsl"
 #include "kernel/staa.glsl"
 #include "kernel/sampling.glsl"
+#include "kernel/reference_path.glsl"
+#include "kernel/poly6_roots.glsl"
+#include "kernel/light_conic.glsl"
 #include "kernel/reference.glsl"
 // clang-format on

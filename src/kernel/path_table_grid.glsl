@@ -9,7 +9,9 @@
 // crowd quadratically about the edge r = 1 from both sides, so the chord sqrt(1 - v^2) of
 // sigma = 0 (a square root at v = 1) is linear in y there and F's step at d = 1 falls on a
 // node; the narrower the slice's Gaussian, the more nodes lie inside [0, 1].
-SG_FN real table_radial_split(real R) { return 1.0 / (1.0 + 0.35 * sqrt(max(R - 1.0, 0.0))); }
+SG_FN real table_radial_split(real R) {
+  return 1.0 / (1.0 + 0.35 * sqrt(max(R - 1.0, 0.0)));
+}
 
 SG_FN real table_radial_node(real R, real y) {
   real y1 = table_radial_split(R);

@@ -1,5 +1,9 @@
 #include "methods/kernel_inputs.h"
 
+#include <string>
+
+#include "base/error.h"
+
 namespace sg {
 
 void KernelFrameInputs::build(const FrameContext& ctx) {
@@ -25,8 +29,10 @@ bool KernelFrameInputs::current(const FrameContext& ctx) const {
 
 void KernelFrameInputs::check(const FrameContext& ctx) const {
   if (current(ctx)) return;
-  std::lock_guard<std::mutex> lock(lazy_);
-  if (!current(ctx)) const_cast<KernelFrameInputs*>(this)->build(ctx);
+  throw Error(
+      "kernel inputs: frame " + std::to_string(ctx.time.frame) +
+      (built_ ? " differs from the frame they were built for" : " shaded before they were built") +
+      " (the engine calls the method's begin_frame before its tiles: engine/render.h)");
 }
 
 }  // namespace sg

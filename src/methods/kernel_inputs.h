@@ -3,8 +3,6 @@
 // begin_frame in the method's precision and read by every tile of the frame.
 #pragma once
 
-#include <mutex>
-
 #include "methods/method.h"
 #include "shading/kernel_frame.h"
 
@@ -23,9 +21,9 @@ class KernelFrameInputs {
         intersect_tolerance_(intersect_tolerance) {}
   // Builds the inputs of ctx's frame.
   void build(const FrameContext& ctx);
-  // Makes sure the inputs are ctx's frame's: the engine's begin_frame has built them, so
-  // this is a comparison; a caller that shades without begin_frame (a test, one thread)
-  // gets them built here.
+  // Checks that the inputs are ctx's frame's, as the engine's begin_frame built them
+  // (engine/render.h); sg::Error when they are not (a caller that shades without
+  // begin_frame): the shading threads only read them, nothing is built behind their back.
   void check(const FrameContext& ctx) const;
 
   Precision precision() const { return precision_; }
@@ -46,7 +44,6 @@ class KernelFrameInputs {
   double start_ = 0, end_ = 0;
   uint64_t seed_ = 0;
   bool built_ = false;
-  mutable std::mutex lazy_;
 };
 
 // A kernel result in float or double as the host's weights.

@@ -346,6 +346,7 @@ TEST(Lean, CalmWaterIsThePointSampleOfTheMirroredDisk) {
   PointMethod point;
   FrameContext ctx{m, frame_time(s, 3), 0};
   lean.begin_frame(ctx);
+  point.begin_frame(ctx);
   double cx, cy;
   ASSERT_TRUE(m.camera.project(vec3(m.light.L.x, -m.light.L.y, m.light.L.z), cx, cy));
   const int i0 = static_cast<int>(cx) - 5, j0 = static_cast<int>(cy) - 5, n = 11;

@@ -34,6 +34,10 @@ class Method {
   virtual ~Method() = default;
   virtual std::string name() const = 0;
 
+  // Called once per frame, on one thread, before any pixel of the frame is shaded: what a
+  // frame's pixels share is built here (the kernel methods refuse a frame they were not
+  // begun with: methods/kernel_inputs.h). Tests shading single pixels call it too
+  // (testing/begun.h).
   virtual void begin_frame(const FrameContext&) {}
   // The radiance weights of pixel (i, j). Must be thread-safe and depend on nothing but
   // its arguments and the state set by begin_frame.

@@ -72,7 +72,16 @@ ReferenceMethod::ReferenceMethod(ReferenceSettings settings, Precision precision
 }
 
 void ReferenceMethod::begin_frame(const FrameContext& ctx) {
-  inputs(ctx);
+  // K and W depend on the waves and the shutter only (reference_time_split).
+  const ReferenceTimeSplit k = reference_time_split(ctx.model, ctx.time.duration());
+  if (!inputs_ || k.segments != split_.segments || k.windows != split_.windows) {
+    inputs_ = std::make_unique<KernelFrameInputs>(
+        k.segments, precision_,
+        intersect_tolerance_ / std::max({settings_.samples.sx, settings_.samples.sy, 1}),
+        k.windows);
+    split_ = k;
+  }
+  inputs_->build(ctx);
   resize_variance(ctx);
 }
 
@@ -85,21 +94,9 @@ void ReferenceMethod::resize_variance(const FrameContext& ctx) const {
 }
 
 const KernelFrameInputs& ReferenceMethod::inputs(const FrameContext& ctx) const {
-  // K depends on the waves and the shutter only; begin_frame settles it, so the check is a
-  // comparison (a caller without begin_frame, a test on one thread, gets it built here).
-  if (!(inputs_ && model_ == ctx.model.id && duration_ == ctx.time.duration())) {
-    std::lock_guard<std::mutex> lock(lazy_);
-    auto* self = const_cast<ReferenceMethod*>(this);
-    const ReferenceTimeSplit k = reference_time_split(ctx.model, ctx.time.duration());
-    if (!inputs_ || k.segments != split_.segments || k.windows != split_.windows) {
-      self->inputs_ = std::make_unique<KernelFrameInputs>(
-          k.segments, precision_,
-          intersect_tolerance_ / std::max({settings_.samples.sx, settings_.samples.sy, 1}),
-          k.windows);
-      self->split_ = k;
-    }
-    self->model_ = ctx.model.id;
-    self->duration_ = ctx.time.duration();
+  if (!inputs_) {
+    throw Error("reference: frame " + std::to_string(ctx.time.frame) +
+                " shaded before begin_frame (engine/render.h)");
   }
   inputs_->check(ctx);
   return *inputs_;
@@ -150,10 +147,8 @@ RadianceWeights ReferenceMethod::weights(const FrameContext& ctx, int i, int j) 
 
 void ReferenceMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                                  Image& out) const {
-  {
-    std::lock_guard<std::mutex> lock(lazy_);
-    resize_variance(ctx);
-  }
+  // variance_ has ctx's size: begin_frame sized it (pixel() refuses a frame it did not
+  // begin).
   for (int j = y0; j < y1; ++j) {
     for (int i = x0; i < x1; ++i) {
       const ReferencePixel p = pixel(ctx, i, j);

@@ -17,7 +17,6 @@
 
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <vector>
 
 #include "methods/kernel_inputs.h"
@@ -116,10 +115,7 @@ class ReferenceMethod final : public Method {
   Precision precision_;
   double intersect_tolerance_;
   ReferenceTimeSplit split_{0, 0};
-  uint64_t model_ = 0;
-  double duration_ = -1;
-  std::unique_ptr<KernelFrameInputs> inputs_;
-  mutable std::mutex lazy_;
+  std::unique_ptr<KernelFrameInputs> inputs_;  // built by begin_frame
   mutable Image variance_;
 };
 

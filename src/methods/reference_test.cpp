@@ -421,6 +421,7 @@ TEST(ReferenceEstimator, AgreesWithStratifiedSamplingOnTheSharedScenes) {
     const SceneModel m(s);
     const FrameContext ctx{m, frame_time(s, 7), 0};
     ReferenceMethod coarse(ReferenceSettings{{2, 2, 1}, 2});
+    coarse.begin_frame(ctx);
     int best_i = 0, best_j = 0;
     double best = -1;
     for (int j = 40; j + 8 <= 90; j += 4) {
@@ -435,6 +436,7 @@ TEST(ReferenceEstimator, AgreesWithStratifiedSamplingOnTheSharedScenes) {
     }
     ASSERT_GT(best, 0.05) << name;
     ReferenceMethod ref(ReferenceSettings{{16, 16, 1}, 8});
+    ref.begin_frame(ctx);
     std::vector<std::unique_ptr<KernelFrameInputs>> strat;
     const int seeds = 8;
     for (int k = 0; k < seeds; ++k) {
@@ -494,6 +496,7 @@ TEST(ReferenceEstimator, CalmWaterEqualsAnalyticCoverage) {
   const int i0 = static_cast<int>(cx) - 5, j0 = static_cast<int>(cy) - 5, n = 11;
   const FrameContext ctx{m, frame_time(s, 3), 0};
   ReferenceMethod ref(ReferenceSettings{{12, 12, 1}, 8});
+  ref.begin_frame(ctx);
   double sum = 0, sum_exact = 0, var_sum = 0;
   int partial = 0;
   for (int j = j0; j < j0 + n; ++j) {
@@ -527,6 +530,7 @@ TEST(ReferenceEstimator, LongShutterAgreesWithStratifiedSampling) {
   const SceneModel m(s);
   const FrameContext ctx{m, frame_time(s, 3), 0};
   ReferenceMethod ref(ReferenceSettings{{4, 4, 4}, 4});
+  ref.begin_frame(ctx);
   KernelFrameInputs in(1, Precision::float64);
   in.build(ctx);
   double sum_ref = 0, sum_strat = 0, var = 0, light = 0;
@@ -551,6 +555,7 @@ TEST(ReferenceEstimator, DisplacedWaterAgreesWithStratifiedSampling) {
   const SceneModel m(s);
   const FrameContext ctx{m, frame_time(s, 2), 0};
   ReferenceMethod ref(ReferenceSettings{{4, 4, 4}, 4});
+  ref.begin_frame(ctx);
   // The same displaced intersection for both (the reference's tolerance is per sample
   // cell: kDefaultIntersectTolerance / 4 here), so that only the estimators differ.
   KernelFrameInputs in(1, Precision::float64, kDefaultIntersectTolerance / 4);
@@ -582,11 +587,13 @@ TEST(ReferenceEstimator, OneBatchAloneEqualsThatBatchOfTheWhole) {
     const FrameContext ctx{m, frame_time(s, 2), 5};
     for (const Precision p : {Precision::float64, Precision::float32}) {
       ReferenceMethod all(ReferenceSettings{{2, 2, 2}, 3}, p);
+      all.begin_frame(ctx);
       ReferenceSettings one_rs{{2, 2, 2}, 3};
       std::vector<std::unique_ptr<ReferenceMethod>> one;
       for (int b = 0; b < 3; ++b) {
         one_rs.only_batch = b;
         one.push_back(std::make_unique<ReferenceMethod>(one_rs, p));
+        one.back()->begin_frame(ctx);
       }
       int busy = 0;
       for (int j = 0; j < s.height; ++j) {

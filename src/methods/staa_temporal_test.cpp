@@ -16,6 +16,7 @@
 #include "shading/aliasing.h"
 #include "shading/radiance.h"
 #include "shading/reflection_path.h"
+#include "testing/begun.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -51,7 +52,7 @@ TEST(StaaTemporal, MatchesTheReferenceWhereTheWaveIsResolved) {
         }
         const double se = std::sqrt(std::max(0.0, mean2 - mean * mean) / 3);
         FrameContext c{m, frame_time(s, frame), 0};
-        const double v = staa.shade(c, i, j);
+        const double v = testing::begun(staa, c).shade(c, i, j);
         // Within 5 standard errors of the reference's mean, plus 0.01 for the two models'
         // difference: the path is 8 great-circle arcs instead of the true curve, and the
         // pixel is one point instead of its ~0.07-degree spread of reflections (2% of the

@@ -19,6 +19,7 @@
 #include "metrics/metrics.h"
 #include "scene/footprint.h"
 #include "shading/aliasing.h"
+#include "testing/begun.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -37,9 +38,11 @@ TEST(Staa, EqualsTheTemporalMethodWhereNothingAliases) {
   StaaMethod staa(o);
   StaaTemporalMethod temporal(4);
   int lit = 0;
+  FrameContext c{m, frame_time(s, 4), 0};
+  staa.begin_frame(c);
+  temporal.begin_frame(c);
   for (int j = 0; j < s.height; ++j) {
     for (int i = 0; i < s.width; ++i) {
-      FrameContext c{m, frame_time(s, 4), 0};
       ASSERT_FALSE(staa.shares(c, i, j).aliasing);
       const double a = staa.shade(c, i, j);
       EXPECT_EQ(a, temporal.shade(c, i, j));
@@ -111,7 +114,7 @@ TEST(Staa, ContinuousWhereAWaveStartsToAlias) {
         o.segments = 2;
         StaaMethod staa(o);
         FrameContext c{m, frame_time(s, 0), 0};
-        return staa.shade(c, i, j);
+        return testing::begun(staa, c).shade(c, i, j);
       };
       const double above = value_at(f * (1 + 1e-9)), below = value_at(f * (1 - 1e-6));
       // alpha of the wave goes from 0 to ~1e-9: the value may move by O(alpha) plus the
@@ -163,6 +166,8 @@ SeamStep seam_step(FootprintMode mode, double transition_width) {
     StratifiedMethod ref("reference", {{8, 8, 4}, false});
     for (int f = 0; f < 16; ++f) {
       FrameContext c{m, frame_time(s, f), 0};
+      staa.begin_frame(c);
+      ref.begin_frame(c);
       for (int i = static_cast<int>(cx) - 30; i < static_cast<int>(cx) + 30; ++i) {
         for (int j = row - 12; j < row + 12; ++j) {
           // (i, j) farther, (i, j + 1) nearer: a pair across the switch.
@@ -226,14 +231,14 @@ TEST(Staa, KernelsConvergeToTheExactRdfMass) {
       exact_o.elongation_threshold = 1e-9;  // always the quadrature fallback
       StaaMethod exact(exact_o);
       FrameContext c{m, frame_time(s, 1), 0};
-      auto e = exact.shares(c, i, j);
+      auto e = testing::begun(exact, c).shares(c, i, j);
       if (!e.aliasing || e.in_light < 1e-3) continue;
       ++n;
       for (int q = 0; q < 4; ++q) {
         StaaOptions o;
         o.kernels = counts[q];
         o.elongation_threshold = 1e9;  // kernels at any elongation
-        err[q] += std::fabs(StaaMethod(o).shares(c, i, j).in_light - e.in_light);
+        err[q] += std::fabs(testing::begun(StaaMethod(o), c).shares(c, i, j).in_light - e.in_light);
       }
     }
   }
@@ -256,7 +261,8 @@ TEST(Staa, FallbackAlongThePathEqualsTheCurrentTimeWithoutMotion) {
   b.fallback_along_path = false;
   for (int j = 50; j < 90; j += 5) {
     FrameContext c{m, frame_time(s, 2), 0};
-    EXPECT_NEAR(StaaMethod(a).shade(c, 80, j), StaaMethod(b).shade(c, 80, j), 1e-12);
+    EXPECT_NEAR(testing::begun(StaaMethod(a), c).shade(c, 80, j),
+                testing::begun(StaaMethod(b), c).shade(c, 80, j), 1e-12);
   }
 }
 

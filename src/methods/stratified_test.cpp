@@ -197,6 +197,7 @@ TEST(Point, CentreRayAtTheDisplayTime) {
   SceneModel m(s);
   FrameContext ctx{m, frame_time(s, 7), 0};
   PointMethod p;
+  p.begin_frame(ctx);
   for (int j : {200, 260, 300}) {
     for (int i : {100, 320}) {
       EXPECT_EQ(

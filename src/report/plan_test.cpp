@@ -26,6 +26,7 @@ class Ema final : public Method {
  public:
   std::string name() const override { return "ema"; }
   bool stateful() const override { return true; }
+  void begin_frame(const FrameContext& ctx) override { point_.begin_frame(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {
     return point_.weights(ctx, i, j);
   }

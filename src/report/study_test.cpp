@@ -27,6 +27,7 @@ class Ema final : public Method {
   explicit Ema(int* frames_rendered) : count_(frames_rendered) {}
   std::string name() const override { return "ema"; }
   bool stateful() const override { return true; }
+  void begin_frame(const FrameContext& ctx) override { point_.begin_frame(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {
     return point_.weights(ctx, i, j);
   }
