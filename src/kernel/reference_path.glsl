@@ -31,11 +31,9 @@ SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) 
     p.g[f.segments] += (w.A * c) * k;
     p.dg[f.segments] -= (w.A * w.c * s) * k;
     for (int q = 0; q < f.segments; ++q) {
-      vec2 rot = wave_rotation(waves, f, i, q);
-      real ck = c * rot.x + s * rot.y;
-      real sk = s * rot.x - c * rot.y;
-      p.g[q] += (w.A * ck) * k;
-      p.dg[q] -= (w.A * w.c * sk) * k;
+      vec2 cs = wave_instant_cos_sin(waves, f, i, q, s, c);
+      p.g[q] += (w.A * cs.x) * k;
+      p.dg[q] -= (w.A * w.c * cs.y) * k;
     }
   }
   return p;

@@ -41,8 +41,7 @@ SG_FN void path_gradients_add(INOUT(PathGradients) p, IN(WaveBuffer) waves, IN(F
   vec2 k = vec2(w.a, w.b);
   p.g[f.segments] += (A * c) * k;
   for (int q = 0; q < f.segments; ++q) {
-    vec2 rot = wave_rotation(waves, f, i, q);
-    p.g[q] += (A * (c * rot.x + s * rot.y)) * k;
+    p.g[q] += (A * wave_instant_cos_sin(waves, f, i, q, s, c).x) * k;
   }
 }
 

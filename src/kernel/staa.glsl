@@ -146,7 +146,7 @@ SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
 // Wave i's resolved share A (sine s and cosine c of its display-time phase) in the
 // gradients and Hessians of the path's instants (still camera): instant k's phase is
 // theta - c (end - t_k), its cosine and sine by angle subtraction (waves.glsl,
-// wave_rotation); the gradient A cos k, the Hessian -A sin k k^T.
+// wave_instant_cos_sin); the gradient A cos k, the Hessian -A sin k k^T.
 SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f, int i, IN(Wave) w,
                          real A, real s, real c) {
   vec2 k = vec2(w.a, w.b);
@@ -154,9 +154,9 @@ SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f
   sums.path.g[f.segments] += (A * c) * k;
   sums.hess[f.segments] -= (A * s) * kk;
   for (int q = 0; q < f.segments; ++q) {
-    vec2 rot = wave_rotation(waves, f, i, q);
-    sums.path.g[q] += (A * (c * rot.x + s * rot.y)) * k;
-    sums.hess[q] -= (A * (s * rot.x - c * rot.y)) * kk;
+    vec2 cs = wave_instant_cos_sin(waves, f, i, q, s, c);
+    sums.path.g[q] += (A * cs.x) * k;
+    sums.hess[q] -= (A * cs.y) * kk;
   }
 }
 

@@ -51,6 +51,13 @@ SG_FN vec2 wave_rotation(IN(WaveBuffer) waves, IN(Frame) f, int i, int k) {
   return (k % 2) == 0 ? vec2(t.x, t.y) : vec2(t.z, t.w);
 }
 
+// (cos, sin) of wave i's phase at instant k < K, theta_k = theta - c (end - t_k), from the
+// sine s and cosine c of its display-time phase theta, by angle subtraction.
+SG_FN vec2 wave_instant_cos_sin(IN(WaveBuffer) waves, IN(Frame) f, int i, int k, real s, real c) {
+  vec2 rot = wave_rotation(waves, f, i, k);
+  return vec2(c * rot.x + s * rot.y, s * rot.x - c * rot.y);
+}
+
 // Wave i's phase at (x, z) and dt, reduced to [-pi, pi] for sin and cos.
 SG_FN real wave_phase(IN(Wave) w, real x, real z, real dt) {
   return wrap_angle(w.a * x + w.b * z + w.theta0 + w.c * dt);
