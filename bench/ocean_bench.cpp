@@ -1,8 +1,12 @@
 // The cost of `sunglint ocean`: sampling a sea (ocean/ocean.h) and writing it as a scene
-// file's JSON, for 1024 to 65536 waves and each kind of spreading (docs/ocean.md).
+// file's JSON, for 1024 to 65536 waves and each kind of spreading (docs/ocean.md); a
+// lattice ocean's cascades (ocean/lattice_ocean.h) and one cascade's per-frame FFT and
+// moment chain (scene/cascade_fft.h) at lattices of 64 to 512.
 #include <benchmark/benchmark.h>
 
+#include "ocean/lattice_ocean.h"
 #include "ocean/ocean.h"
+#include "scene/cascade_fft.h"
 
 namespace {
 
@@ -32,6 +36,35 @@ void BM_SceneJson(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * p.waves);
 }
 BENCHMARK(BM_SceneJson)->Arg(1024)->Arg(65536)->Unit(benchmark::kMillisecond);
+
+void BM_GenerateLattice(benchmark::State& state) {
+  OceanParams p;
+  sg::ocean::CascadeParams c;
+  c.lattice = static_cast<int>(state.range(0));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(sg::ocean::generate_lattice(p, c));
+  state.SetItemsProcessed(state.iterations() * c.cascades * c.lattice * c.lattice);
+}
+BENCHMARK(BM_GenerateLattice)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);
+
+// One cascade at one time: height and slopes (two inverse 2-D FFTs), then the moment chain.
+void BM_CascadeFft(benchmark::State& state) {
+  OceanParams p;
+  sg::ocean::CascadeParams c;
+  c.lattice = static_cast<int>(state.range(0));
+  const sg::ocean::LatticeOcean o = sg::ocean::generate_lattice(p, c);
+  const sg::CascadeFft fft(c.lattice);
+  const sg::Dispersion water{o.depth};
+  double t = 0;
+  for (auto _ : state) {
+    const sg::CascadeGrid g = fft.evaluate(o.cascades[1], water, t += 1.0 / 30);
+    if (state.range(1)) benchmark::DoNotOptimize(sg::moment_chain(g));
+    benchmark::DoNotOptimize(g.height.data());
+  }
+  state.SetLabel(state.range(1) ? "fft + moment chain" : "fft");
+  state.SetItemsProcessed(state.iterations() * c.lattice * c.lattice);
+}
+BENCHMARK(BM_CascadeFft)->ArgsProduct({{64, 256, 512}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

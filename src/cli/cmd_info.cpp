@@ -186,11 +186,12 @@ void run_info(const InfoArgs& a) {
                       {"staa_visited", b.visited},
                       {"intersection_summed", b.intersect}});
   }
-  WaveField w(s.surface.waves);
+  const std::vector<Wave> all_waves = surface_waves(s.surface);  // cascades' included
+  WaveField w(all_waves);
   LightModel light(s.light);
   double lmin = std::numeric_limits<double>::infinity(), lmax = 0;
   double sxx = 0, sxz = 0, szz = 0;
-  for (const Wave& wv : s.surface.waves) {
+  for (const Wave& wv : all_waves) {
     double k = length(wv.wave_vector);
     if (k > 0) {
       lmin = std::min(lmin, kTwoPi / k);
@@ -209,7 +210,7 @@ void run_info(const InfoArgs& a) {
       {"image", {s.width, s.height}},
       {"geometry", s.surface.geometry == Geometry::flat ? "flat" : "displaced"},
       {"fresnel", s.surface.fresnel == FresnelMode::none ? "none" : "schlick"},
-      {"waves", s.surface.waves.size()},
+      {"waves", all_waves.size()},
       {"wavelength_min_m", std::isfinite(lmin) ? lmin : 0.0},
       {"wavelength_max_m", lmax},
       {"amplitude_sum_m", w.amplitude_bound()},
@@ -240,6 +241,26 @@ void run_info(const InfoArgs& a) {
         {"water_row_first", res.water_row_first},
         {"bands", jbands}}},
   };
+  // Lattice cascades (format /3): each one's band and significant wave height.
+  if (!s.surface.cascades.empty()) {
+    nlohmann::json cs = nlohmann::json::array();
+    for (const CascadeDesc& c : s.surface.cascades) {
+      size_t waves = 0;
+      for (double amp : c.data->amplitude)
+        waves += amp > 0;
+      cs.push_back(
+          {{"file", c.file},
+           {"patch_size_m", c.patch_size},
+           {"lattice", c.lattice},
+           {"band_rad_per_m", {c.band_min, c.band_max}},
+           {"wavelengths_m", {kTwoPi / c.band_max, c.band_min > 0 ? kTwoPi / c.band_min : 0.0}},
+           {"waves", waves},
+           {"significant_wave_height_m", 4 * std::sqrt(cascade_variance(c))}});
+    }
+    j["cascades"] = cs;
+    j["explicit_waves"] = s.surface.waves.size();
+    if (std::isfinite(s.surface.depth)) j["depth_m"] = s.surface.depth;
+  }
   // A moving camera (format /3): each segment's speed and mean turn rate.
   const std::vector<CameraSegmentMotion> motion = camera_motion(s.camera);
   if (!motion.empty()) {
@@ -262,7 +283,24 @@ void run_info(const InfoArgs& a) {
               j["geometry"].get<std::string>().c_str(), j["fresnel"].get<std::string>().c_str(),
               rgb_text(s.surface.sea_radiance).c_str());
   std::printf("waves        %zu, wavelengths %.4g to %.4g m, amplitude sum %.4g m\n",
-              s.surface.waves.size(), std::isfinite(lmin) ? lmin : 0.0, lmax, w.amplitude_bound());
+              all_waves.size(), std::isfinite(lmin) ? lmin : 0.0, lmax, w.amplitude_bound());
+  if (!s.surface.cascades.empty()) {
+    std::printf("             %zu explicit, the rest in %zu cascades; %s water\n",
+                s.surface.waves.size(), s.surface.cascades.size(),
+                std::isfinite(s.surface.depth)
+                    ? (std::to_string(s.surface.depth) + " m deep").c_str()
+                    : "deep");
+    size_t k = 0;
+    for (const nlohmann::json& c : j["cascades"]) {
+      std::printf(
+          "cascade %zu    %s: patch %.4g m, lattice %d, wavelengths %.4g to %.4g m, %zu waves, "
+          "Hs %.4g m\n",
+          k++, c["file"].get<std::string>().c_str(), c["patch_size_m"].get<double>(),
+          c["lattice"].get<int>(), c["wavelengths_m"][0].get<double>(),
+          c["wavelengths_m"][1].get<double>(), c["waves"].get<size_t>(),
+          c["significant_wave_height_m"].get<double>());
+    }
+  }
   std::printf("slopes       variance %.5g (xx %.5g, xz %.5g, zz %.5g), rms %.4g, bound %.4g\n",
               sxx + szz, sxx, sxz, szz, std::sqrt(sxx + szz), w.slope_bound());
   std::printf("light        elevation %.3f deg, azimuth %.3f deg, radius %.4g deg, radiance %s%s\n",
@@ -304,8 +342,8 @@ void run_info(const InfoArgs& a) {
   }
   if (a.waves) {
     std::printf("\n   #  amplitude  wavelength  direction(deg)  period(s)  phase\n");
-    for (size_t k = 0; k < s.surface.waves.size(); ++k) {
-      const Wave& wv = s.surface.waves[k];
+    for (size_t k = 0; k < all_waves.size(); ++k) {
+      const Wave& wv = all_waves[k];
       double kk = length(wv.wave_vector);
       std::printf(
           "%4zu  %9.5f  %10.4f  %14.2f  %9.4f  %6.3f\n", k, wv.amplitude,

@@ -19,7 +19,9 @@
 #include "base/error.h"
 #include "cli/commands.h"
 #include "math/vec.h"
+#include "ocean/lattice_ocean.h"
 #include "ocean/ocean.h"
+#include "scene/lattice.h"
 
 namespace sg {
 namespace {
@@ -34,6 +36,8 @@ struct OceanArgs {
   std::string spectrum = "jonswap", spreading = "cos2s";
   std::string wind_speed, wind_direction, fetch, depth, gamma, waves, wavelengths, seed;
   std::string swell_height, swell_period, swell_direction, swell_spread, swell_gamma, swell_waves;
+  std::string cascades, lattice, patch_sizes;
+  bool expand = false;
   CLI::App* app = nullptr;
   bool given(const std::string& flag) const { return app->count(flag) > 0; }
 };
@@ -143,6 +147,92 @@ ocean::OceanParams params_of(const OceanArgs& a) {
   return p;
 }
 
+// `--cascades C --lattice N [--patch-sizes ...] [--expand]`: the sea as lattice cascades in
+// sidecar files beside the scene (ocean/lattice_ocean.h), or expanded into explicit waves.
+void run_lattice_ocean(const OceanArgs& a, const ocean::OceanParams& p, Scene scene) {
+  if (!a.given("--cascades")) usage("--lattice, --patch-sizes, --expand: need --cascades");
+  if (a.given("--waves") || a.given("--swell-waves"))
+    usage("--waves, --swell-waves: not with --cascades (the lattice sets the waves)");
+  ocean::CascadeParams cp;
+  cp.cascades = parse_int(a.cascades, "--cascades");
+  if (a.given("--lattice")) cp.lattice = parse_int(a.lattice, "--lattice");
+  if (a.given("--patch-sizes")) {
+    std::string rest = a.patch_sizes;
+    while (true) {
+      const size_t comma = rest.find(',');
+      cp.patch_sizes.push_back(parse_double(rest.substr(0, comma), "--patch-sizes"));
+      if (comma == std::string::npos) break;
+      rest = rest.substr(comma + 1);
+    }
+  }
+  ocean::LatticeOcean o;
+  try {
+    o = ocean::generate_lattice(p, cp);
+  } catch (const Error& e) {
+    usage(e.what());
+  }
+  const std::filesystem::path out(a.out);
+  const std::string name = a.name.empty() ? out.stem().string() : a.name;
+  scene.name = name;
+  scene.surface.waves.clear();
+  scene.surface.cascades.clear();
+  scene.surface.depth = o.depth;
+  if (a.expand) {
+    size_t waves = 0;
+    for (const CascadeDesc& c : o.cascades)
+      for (double amp : c.data->amplitude)
+        waves += amp > 0;
+    if (waves > static_cast<size_t>(ocean::kWavesRange.hi)) {
+      usage("--expand: the lattices hold " + std::to_string(waves) +
+            " waves, more than a scene's explicit list takes (65536): a smaller --lattice or "
+            "fewer --cascades");
+    }
+    const Dispersion water{o.depth};
+    for (const CascadeDesc& c : o.cascades) {
+      const std::vector<Wave> w = cascade_waves(c, water);
+      scene.surface.waves.insert(scene.surface.waves.end(), w.begin(), w.end());
+    }
+    // Explicit waves carry their frequencies; the depth is the lattices' only.
+    scene.surface.depth = std::numeric_limits<double>::infinity();
+  } else {
+    for (size_t c = 0; c < o.cascades.size(); ++c) {
+      CascadeDesc desc = o.cascades[c];
+      desc.file = out.stem().string() + ".cascade" + std::to_string(c) + ".npy";
+      write_lattice((out.parent_path() / desc.file).string(), *desc.data);
+      scene.surface.cascades.push_back(desc);
+    }
+  }
+  write_file_atomic(a.out, scene_to_json(scene) + "\n");
+  load_scene(a.out);  // what was written reads back (the loader's checks)
+
+  std::printf(
+      "%s: %zu cascades of %d x %d, Hs %.4g m (the spectrum's over the bands: %.4g m, "
+      "%+.2f%%) -> %s%s\n",
+      name.c_str(), o.cascades.size(), cp.lattice, cp.lattice, 4 * std::sqrt(o.variance),
+      4 * std::sqrt(o.spectrum_variance), 100 * (std::sqrt(o.variance / o.spectrum_variance) - 1),
+      a.out.c_str(), a.expand ? " (expanded into explicit waves)" : "");
+  if (o.k_reached < o.k_max * (1 - 1e-12)) {
+    std::printf(
+        "  note: the lattices reach wavelengths down to %.4g m; the spectrum's %.4g to %.4g m "
+        "is left out (more --cascades, a larger --lattice or smaller --patch-sizes)\n",
+        kTwoPi / o.k_reached, kTwoPi / o.k_max, kTwoPi / o.k_reached);
+  }
+  for (size_t c = 0; c < o.cascades.size(); ++c) {
+    const CascadeDesc& d = o.cascades[c];
+    size_t waves = 0;
+    for (double amp : d.data->amplitude)
+      waves += amp > 0;
+    std::printf("  cascade %zu  patch %.4g m, wavelengths %.4g to %.4g m, %zu waves, Hs %.4g m%s\n",
+                c, d.patch_size, kTwoPi / d.band_max, kTwoPi / d.band_min, waves,
+                4 * std::sqrt(cascade_variance(d)),
+                a.expand ? ""
+                         : ("  " + (out.parent_path() /
+                                    (out.stem().string() + ".cascade" + std::to_string(c) + ".npy"))
+                                       .string())
+                               .c_str());
+  }
+}
+
 void run_ocean(const OceanArgs& a) {
   const ocean::OceanParams p = params_of(a);
   const std::filesystem::path out(a.out);
@@ -157,6 +247,10 @@ void run_ocean(const OceanArgs& a) {
   }
   Scene templ = a.template_path.empty() ? ocean::sea_template() : load_scene(a.template_path);
   if (a.given("--geometry")) templ.surface.geometry = geometry;
+  if (a.given("--cascades") || a.given("--lattice") || a.given("--patch-sizes") || a.expand) {
+    run_lattice_ocean(a, p, templ);
+    return;
+  }
   ocean::Ocean o;
   try {
     o = ocean::generate(p);
@@ -167,7 +261,7 @@ void run_ocean(const OceanArgs& a) {
   const Scene scene = ocean::ocean_scene(templ, o, name);
   write_file_atomic(a.out, scene_to_json(scene) + "\n");
 
-  const ocean::Dispersion water = ocean::water(p);
+  const Dispersion water = ocean::water(p);
   auto describe = [&](const char* what, const ocean::SampledComponent& c,
                       const ocean::Spectrum& s) {
     const double wp = s.peak(), kp = water.wavenumber(wp);
@@ -237,6 +331,17 @@ void add_ocean_command(CLI::App& app) {
                 "Swell's cos-2s spreading parameter s_max, 1 to 200 (75: a long-travelled swell)");
   c->add_option("--swell-gamma", a->swell_gamma, "Swell's peak enhancement, 1 to 10 (3.3)");
   c->add_option("--swell-waves", a->swell_waves, "Waves of the swell, 16 to 65536 (64)");
+  c->add_option("--cascades", a->cascades,
+                "Write the sea as C lattice cascades (1 to 8) in .npy files beside the scene, "
+                "as FFT oceans are made (format /3; docs/ocean.md, \"Cascades\")");
+  c->add_option("--lattice", a->lattice,
+                "Lattice of each cascade, N x N wave vectors, a power of two 4 to 1024 (256)");
+  c->add_option("--patch-sizes", a->patch_sizes,
+                "Patch sides L1,L2,... in m, decreasing, one per cascade (default: 20 peak "
+                "wavelengths, then shrinking by a power of two that reaches the band's top)");
+  c->add_flag("--expand", a->expand,
+              "With --cascades: write the lattices' waves as explicit waves instead (the same "
+              "sea; at most 65536 waves)");
   c->callback([a] { run_ocean(*a); });
 }
 

@@ -77,36 +77,47 @@ Spreading wind_spreading(const OceanParams& p, const Spectrum& s) {
   return d;
 }
 
+Component wind_component(const OceanParams& p) {
+  Component wind;
+  wind.spectrum = wind_spectrum(p);
+  wind.spreading = wind_spreading(p, wind.spectrum);
+  wind.direction_rad = radians(p.wind_direction_deg);
+  wind.waves = p.waves;
+  wind.stream = 1;
+  return wind;
+}
+
+Component swell_component(const OceanParams& p) {
+  Component swell;
+  swell.spectrum = swell_spectrum(p.swell.height, p.swell.period, p.swell.gamma);
+  swell.spreading.kind = SpreadingKind::cos2s;
+  swell.spreading.omega_peak = swell.spectrum.omega_peak;
+  swell.spreading.s_peak = p.swell.spread;
+  swell.direction_rad = radians(p.swell.direction_deg);
+  swell.waves = p.swell.waves;
+  // A swell has no tail of its own under the wind sea: sampled where its spectrum is
+  // above 1e-3 of its peak (the tail beyond holds under 0.1% of its variance).
+  swell.low_cut = swell.high_cut = 1e-3;
+  swell.stream = 2;
+  return swell;
+}
+
 Ocean generate(const OceanParams& p) {
   validate(p);
   Ocean o;
   const Dispersion w = water(p);
   const double k_min = kTwoPi / p.wavelength_max, k_max = kTwoPi / p.wavelength_min;
 
-  Component wind;
-  wind.spectrum = o.wind_spectrum = wind_spectrum(p);
-  wind.spreading = wind_spreading(p, wind.spectrum);
-  wind.direction_rad = radians(p.wind_direction_deg);
-  wind.waves = p.waves;
-  wind.stream = 1;
+  const Component wind = wind_component(p);
+  o.wind_spectrum = wind.spectrum;
   if (p.spectrum != SpectrumKind::pierson_moskowitz)
     o.fetch = jonswap_fetch_laws(p.wind_speed, p.fetch_km * 1000);
   o.wind = sample_component(wind, w, k_min, k_max, p.seed, "--wavelengths");
   o.waves = o.wind.waves;
 
   if (p.swell.enabled) {
-    Component swell;
-    swell.spectrum = o.swell_spectrum =
-        swell_spectrum(p.swell.height, p.swell.period, p.swell.gamma);
-    swell.spreading.kind = SpreadingKind::cos2s;
-    swell.spreading.omega_peak = swell.spectrum.omega_peak;
-    swell.spreading.s_peak = p.swell.spread;
-    swell.direction_rad = radians(p.swell.direction_deg);
-    swell.waves = p.swell.waves;
-    // A swell has no tail of its own under the wind sea: sampled where its spectrum is
-    // above 1e-3 of its peak (the tail beyond holds under 0.1% of its variance).
-    swell.low_cut = swell.high_cut = 1e-3;
-    swell.stream = 2;
+    const Component swell = swell_component(p);
+    o.swell_spectrum = swell.spectrum;
     o.swell = sample_component(swell, w, k_min, k_max, p.seed, "--wavelengths");
     o.waves.insert(o.waves.end(), o.swell.waves.begin(), o.swell.waves.end());
     std::stable_sort(o.waves.begin(), o.waves.end(), [](const Wave& a, const Wave& b) {

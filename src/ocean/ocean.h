@@ -68,6 +68,9 @@ void validate(const OceanParams& p);
 Spectrum wind_spectrum(const OceanParams& p);
 Spreading wind_spreading(const OceanParams& p, const Spectrum& s);
 Dispersion water(const OceanParams& p);
+// The wind sea's and the swell's spectra, spreadings and directions as sampling.h takes them.
+Component wind_component(const OceanParams& p);
+Component swell_component(const OceanParams& p);
 
 struct Ocean {
   std::vector<Wave> waves;  // wind sea and swell, in order of increasing |k|

@@ -41,8 +41,8 @@ double travel_direction(const Wave& w) {
   return std::atan2(-sign * w.wave_vector.x, sign * w.wave_vector.y);
 }
 
-SampledComponent sample_component(const Component& c, const Dispersion& water, double k_min,
-                                  double k_max, uint64_t seed, const char* band_flag) {
+Band trimmed_band(const Component& c, const Dispersion& water, double k_min, double k_max,
+                  const char* band_flag) {
   const Spectrum& S = c.spectrum;
   const double w_peak = S.peak(), s_peak = S(w_peak);
   double w_lo = water.omega(k_min), w_hi = water.omega(k_max);
@@ -59,12 +59,25 @@ SampledComponent sample_component(const Component& c, const Dispersion& water, d
     if (S(std::max(w_lo, w_peak)) < c.high_cut * s_peak) no_energy();
     w_hi = crossing(S, std::max(w_lo, w_peak), w_hi, c.high_cut * s_peak, false);
   }
+  Band b;
+  b.omega_min = w_lo;
+  b.omega_max = w_hi;
+  b.k_min = water.wavenumber(w_lo);
+  b.k_max = water.wavenumber(w_hi);
+  if (w_lo == water.omega(k_min)) b.k_min = k_min;  // exact where untrimmed
+  if (w_hi == water.omega(k_max)) b.k_max = k_max;
+  if (!(b.k_max > b.k_min) || !(S.variance(w_lo, w_hi) > 0)) no_energy();
+  return b;
+}
+
+SampledComponent sample_component(const Component& c, const Dispersion& water, double k_min,
+                                  double k_max, uint64_t seed, const char* band_flag) {
+  const Spectrum& S = c.spectrum;
+  const Band band = trimmed_band(c, water, k_min, k_max, band_flag);
+  const double w_lo = band.omega_min, w_hi = band.omega_max;
   SampledComponent out;
-  out.k_min = water.wavenumber(w_lo);
-  out.k_max = water.wavenumber(w_hi);
-  if (w_lo == water.omega(k_min)) out.k_min = k_min;  // exact where untrimmed
-  if (w_hi == water.omega(k_max)) out.k_max = k_max;
-  if (!(out.k_max > out.k_min) || !(S.variance(w_lo, w_hi) > 0)) no_energy();
+  out.k_min = band.k_min;
+  out.k_max = band.k_max;
 
   const int n = c.waves;
   Pcg32 rng(seed, c.stream);

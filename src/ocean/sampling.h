@@ -34,9 +34,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "ocean/dispersion.h"
 #include "ocean/spectra.h"
 #include "ocean/spreading.h"
+#include "scene/dispersion.h"
 #include "scene/scene.h"
 
 namespace sg::ocean {
@@ -59,6 +59,14 @@ struct SampledComponent {
   double variance = 0;          // sum A^2 / 2, m^2
   double max_steepness = 0;     // max A |k|
 };
+
+// The band [k_min, k_max] trimmed as above (low_cut, high_cut), in wavenumber and
+// frequency. Throws sg::Error (naming `band_flag`) when it holds no energy.
+struct Band {
+  double k_min = 0, k_max = 0, omega_min = 0, omega_max = 0;
+};
+Band trimmed_band(const Component& c, const Dispersion& water, double k_min, double k_max,
+                  const char* band_flag);
 
 // Throws sg::Error (naming `band_flag`) when the band holds no energy.
 SampledComponent sample_component(const Component& c, const Dispersion& water, double k_min,

@@ -45,7 +45,7 @@
 
 #include <string>
 
-#include "ocean/dispersion.h"
+#include "scene/dispersion.h"
 
 namespace sg::ocean {
 

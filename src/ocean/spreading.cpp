@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "math/vec.h"
-#include "ocean/dispersion.h"
+#include "scene/dispersion.h"
 
 namespace sg::ocean {
 namespace {

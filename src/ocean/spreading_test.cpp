@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "math/vec.h"
-#include "ocean/dispersion.h"
+#include "scene/dispersion.h"
 #include "testing/quadrature.h"
 
 namespace sg::ocean {

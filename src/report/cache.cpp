@@ -66,7 +66,15 @@ std::string frame_key(const Scene& scene, const std::string& label, int frame, i
       "\nsize=" + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
       "\nframe=" + std::to_string(frame) + "\nmethod=" + canonical_label(label) + "\n";
   if (history_from >= 0) key += "history_from=" + std::to_string(history_from) + "\n";
-  return key + "scene=" + scene_to_json(scene) + "\n";
+  key += "scene=" + scene_to_json(scene) + "\n";
+  // A cascade's sidecar by its contents (the scene names only the file).
+  for (const CascadeDesc& c : scene.surface.cascades) {
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx",
+                  static_cast<unsigned long long>(c.data ? c.data->fingerprint : 0));
+    key += "lattice=" + c.file + " " + hex + "\n";
+  }
+  return key;
 }
 
 std::string variance_key(const std::string& frame_key) {

@@ -45,7 +45,7 @@ struct SceneModel {
 
   explicit SceneModel(const Scene& s)
       : scene(s),
-        waves(s.surface.waves),
+        waves(surface_waves(s.surface)),
         camera(s.camera, s.width, s.height),
         light(s.light),
         radiances(s),

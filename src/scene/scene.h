@@ -5,15 +5,18 @@
 //
 // Radiances are linear RGB triples (Rec. 709 primaries). Format /1 has grey radiances
 // only (three equal channels) and a constant sky; format /2 adds colour and a sky
-// gradient; format /3 a moving camera (keyframes of position and look-at). Every method computes a
+// gradient; format /3 a moving camera (keyframes of position and look-at) and lattice
+// cascades (scene/lattice.h). Every method computes a
 // pixel as weights of the four radiances (light, zenith, horizon, sea; shading/radiance.h), so
 // colour costs nothing in the methods.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "math/vec.h"
+#include "scene/lattice.h"
 
 namespace sg {
 
@@ -72,6 +75,10 @@ struct SurfaceDesc {
   FresnelMode fresnel = FresnelMode::none;
   Rgb sea_radiance{0.0};
   std::vector<Wave> waves;
+  // Format /3: lattice cascades (scene/lattice.h) and the water depth their waves'
+  // frequencies follow (infinite: deep water; the explicit waves give theirs).
+  double depth = std::numeric_limits<double>::infinity();
+  std::vector<CascadeDesc> cascades;
 };
 
 struct AnimationDesc {
@@ -83,6 +90,9 @@ struct AnimationDesc {
 
 struct Scene {
   std::string name;
+  // The folder the scene was read from: where its cascades' relative sidecar files are
+  // (empty: the working directory). Not part of the scene's JSON.
+  std::string source_dir;
   int width = 640;
   int height = 360;
   CameraDesc camera;
@@ -93,8 +103,8 @@ struct Scene {
 
   // True when every radiance has three equal channels (a grey image renders the scene).
   bool grey() const;
-  // The format the scene needs: 3 with camera keyframes, else 2 with colour or a gradient
-  // sky, else 1 (scene_to_json).
+  // The format the scene needs: 3 with camera keyframes, cascades or a depth, else 2 with colour or
+  // a gradient sky, else 1 (scene_to_json).
   int format_version() const;
 
   // Frame f is displayed at t_f = t0 + f / fps and integrates [t_f - shutter/fps, t_f].
@@ -107,7 +117,9 @@ struct Scene {
 // Loading and checking. Every error names the key path and the rule, for example
 // "surface.waves[3].amplitude: must be >= 0"; file errors are prefixed by the file name.
 Scene load_scene(const std::string& path);
-Scene parse_scene(const std::string& json_text, const std::string& name_for_errors);
+// Cascade files named by a relative path are read from `source_dir` (scene/lattice.h).
+Scene parse_scene(const std::string& json_text, const std::string& name_for_errors,
+                  const std::string& source_dir = "");
 
 // The scene as canonical JSON (every key written, defaults included): what `info`
 // prints and what cache keys hash.

@@ -14,6 +14,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "scene/lattice.h"
 #include "scene/scene.h"
 #include "scene/scene_limits.h"
 
@@ -172,6 +173,7 @@ double check_radiance(double v, const std::string& path) {
 }
 
 const std::string kNeeds2 = std::string("needs \"format\": \"") + kFormat2 + "\"";
+const std::string kNeeds3 = std::string("needs \"format\": \"") + kFormat3 + "\"";
 
 // A radiance (format /2): a number (grey: three equal channels) or [r, g, b], each finite
 // in [0, kMaxRadiance]. Format /1 (version 1) has numbers only.
@@ -405,7 +407,46 @@ Wave read_wave(ObjectReader o) {
   return w;
 }
 
-SurfaceDesc read_surface(ObjectReader o, int version) {
+// A cascade (format /3, scene/lattice.h): its patch, lattice and band, then its sidecar
+// read from `dir` and checked against them.
+CascadeDesc read_cascade(ObjectReader o, const std::string& dir) {
+  CascadeDesc c;
+  c.file = o.string("file");
+  require(!c.file.empty(), o.key_path("file"), "must name a .npy file");
+  c.lattice = o.integer("lattice");
+  const int n = c.lattice;
+  require(n >= kMinLattice && n <= kMaxLattice && (n & (n - 1)) == 0, o.key_path("lattice"),
+          "must be a power of two in [" + std::to_string(kMinLattice) + ", " +
+              std::to_string(kMaxLattice) + "] (got " + std::to_string(n) + ")");
+  c.patch_size = o.number("patch_size");
+  // Its longest wave (L) and its shortest (L / (N/2 sqrt 2), the lattice's corner) within
+  // the scene's wavelengths.
+  require_in(c.patch_size, limits::kMinWavelength * n, limits::kMaxWavelength,
+             o.key_path("patch_size"), "m");
+  const std::string bpath = o.key_path("band");
+  const json& band = o.get("band");
+  require(band.is_array() && band.size() == 2 && band[0].is_number() && band[1].is_number(), bpath,
+          "must be [min, max], |k| in rad/m");
+  c.band_min = band[0].get<double>();
+  c.band_max = band[1].get<double>();
+  const double corner = kTwoPi / c.patch_size * (n / 2) * std::sqrt(2.0);
+  require(std::isfinite(c.band_min) && std::isfinite(c.band_max) && c.band_min >= 0 &&
+              c.band_min < c.band_max,
+          bpath,
+          "must be [min, max] with 0 <= min < max (got [" + num(c.band_min) + ", " +
+              num(c.band_max) + "])");
+  require(c.band_max <= corner * (1 + 1e-12), bpath,
+          "max must be at most the lattice's largest |k|, 2 pi / patch_size * N / 2 * sqrt 2 = " +
+              num(corner) + " rad/m (got " + num(c.band_max) + ")");
+  o.finish();
+  const std::filesystem::path f(c.file);
+  const std::string path =
+      f.is_absolute() || dir.empty() ? c.file : (std::filesystem::path(dir) / f).string();
+  c.data = read_lattice(path, c, o.key_path("file"));
+  return c;
+}
+
+SurfaceDesc read_surface(ObjectReader o, int version, const std::string& dir) {
   SurfaceDesc s;
   s.geometry = o.choice_or("geometry", {"flat", "displaced"}, "flat") == "flat"
                    ? Geometry::flat
@@ -421,10 +462,40 @@ SurfaceDesc read_surface(ObjectReader o, int version) {
     s.waves.push_back(read_wave(ObjectReader(waves[k], wpath + "[" + std::to_string(k) + "]")));
     slope_sum += s.waves.back().amplitude * length(s.waves.back().wave_vector);
   }
+  if (o.has("depth")) {
+    require(version >= 3, o.key_path("depth"), kNeeds3);
+    s.depth = o.number("depth");
+    require_in(s.depth, 0.01, 1e5, o.key_path("depth"), "m");
+  }
+  if (o.has("cascades")) {
+    const std::string cpath = o.key_path("cascades");
+    require(version >= 3, cpath, kNeeds3);
+    const json& cs = o.get("cascades");
+    require(cs.is_array(), cpath, "must be an array of cascade objects");
+    for (size_t k = 0; k < cs.size(); ++k) {
+      const std::string key = cpath + "[" + std::to_string(k) + "]";
+      s.cascades.push_back(read_cascade(ObjectReader(cs[k], key), dir));
+      const CascadeDesc& c = s.cascades.back();
+      for (size_t q = 0; q < k; ++q) {
+        const CascadeDesc& p = s.cascades[q];
+        if (c.band_min < p.band_max && p.band_min < c.band_max) {
+          ObjectReader::fail(key + ".band", "overlaps the band of " + cpath + "[" +
+                                                std::to_string(q) + "]: a wavelength " +
+                                                "would be counted twice");
+        }
+      }
+      for (size_t e = 0; e < c.data->amplitude.size(); ++e) {
+        const int i = static_cast<int>(e % c.lattice), j = static_cast<int>(e / c.lattice);
+        slope_sum +=
+            c.data->amplitude[e] * length(lattice_wave_vector(c.patch_size, c.lattice, i, j));
+      }
+    }
+  }
   if (!(slope_sum <= limits::kMaxSlopeSum)) {
     ObjectReader::fail(wpath,
                        "the sum of the steepnesses amplitude * |wave_vector| must be at most " +
-                           num(limits::kMaxSlopeSum) + " (got " + num(slope_sum) + ")");
+                           num(limits::kMaxSlopeSum) + " (got " + num(slope_sum) +
+                           (s.cascades.empty() ? "" : ", the cascades' included") + ")");
   }
   o.finish();
   return s;
@@ -559,7 +630,7 @@ std::string line_col(const std::string& text, size_t byte) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& text, const std::string& name) {
+Scene parse_scene(const std::string& text, const std::string& name, const std::string& dir) {
   json j;
   JsonReader check(j);
   if (!json::sax_parse(text, &check)) {
@@ -598,7 +669,8 @@ Scene parse_scene(const std::string& text, const std::string& name) {
     s.camera = read_camera(top.object("camera"), version);
     s.light = read_light(top.object("light"), version);
     if (top.has("sky")) s.sky = read_sky(top.object("sky"), version);
-    s.surface = read_surface(top.object("surface"), version);
+    s.source_dir = dir;
+    s.surface = read_surface(top.object("surface"), version, dir);
     s.animation = read_animation(top.object("animation"));
     top.finish();
     return s;
@@ -608,7 +680,8 @@ Scene parse_scene(const std::string& text, const std::string& name) {
 }
 
 Scene load_scene(const std::string& path) {
-  return parse_scene(read_file(path, limits::kMaxSceneFileBytes), path);
+  return parse_scene(read_file(path, limits::kMaxSceneFileBytes), path,
+                     std::filesystem::path(path).parent_path().string());
 }
 
 bool Scene::grey() const {
@@ -617,7 +690,7 @@ bool Scene::grey() const {
 }
 
 int Scene::format_version() const {
-  if (camera.moving()) return 3;
+  if (camera.moving() || !surface.cascades.empty() || std::isfinite(surface.depth)) return 3;
   return grey() && !sky.gradient ? 1 : 2;
 }
 
@@ -641,6 +714,21 @@ std::string scene_to_json(const Scene& s) {
                      {"phase", w.phase}});
   }
   const int version = s.format_version();
+  json surface = {{"geometry", s.surface.geometry == Geometry::flat ? "flat" : "displaced"},
+                  {"fresnel", s.surface.fresnel == FresnelMode::none ? "none" : "schlick"},
+                  {"sea_radiance", radiance(s.surface.sea_radiance)},
+                  {"waves", waves}};
+  if (std::isfinite(s.surface.depth)) surface["depth"] = s.surface.depth;
+  if (!s.surface.cascades.empty()) {
+    json cs = json::array();
+    for (const CascadeDesc& c : s.surface.cascades) {
+      cs.push_back({{"file", c.file},
+                    {"patch_size", c.patch_size},
+                    {"lattice", c.lattice},
+                    {"band", {c.band_min, c.band_max}}});
+    }
+    surface["cascades"] = cs;
+  }
   json camera = {{"position", v3(s.camera.position)},
                  {"look_at", v3(s.camera.look_at)},
                  {"up", v3(s.camera.up)},
@@ -666,11 +754,7 @@ std::string scene_to_json(const Scene& s) {
         {"radiance", radiance(s.light.radiance)},
         {"visible", s.light.visible}}},
       {"sky", sky},
-      {"surface",
-       {{"geometry", s.surface.geometry == Geometry::flat ? "flat" : "displaced"},
-        {"fresnel", s.surface.fresnel == FresnelMode::none ? "none" : "schlick"},
-        {"sea_radiance", radiance(s.surface.sea_radiance)},
-        {"waves", waves}}},
+      {"surface", surface},
       {"animation",
        {{"t0", s.animation.t0},
         {"fps", s.animation.fps},

@@ -17,7 +17,7 @@ Scene moving_view_scene(const Scene& scene, const CameraDesc& previous, const Fr
   s.camera.keyframes = {{ft.start, before.position, before.look_at},
                         {ft.end, now.position, now.look_at}};
   try {
-    return parse_scene(scene_to_json(s), "the view's motion");
+    return parse_scene(scene_to_json(s), "the view's motion", s.source_dir);
   } catch (const Error&) {
     return scene;
   }
@@ -48,7 +48,7 @@ Scene CameraRecorder::scene(const Scene& base) const {
   a.t0 = keys_.front().time;
   const double span = keys_.back().time - keys_.front().time;
   a.frames = 1 + static_cast<int>(std::floor(span * a.fps + 1e-9));
-  return parse_scene(scene_to_json(s), "the recorded path");
+  return parse_scene(scene_to_json(s), "the recorded path", s.source_dir);
 }
 
 void write_recording(const std::string& path, const Scene& scene) {

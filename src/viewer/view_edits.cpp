@@ -37,7 +37,7 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
       w.amplitude *= e.amplitude_scale;
   }
   // The loader's checks, on the edited values.
-  return parse_scene(scene_to_json(s), "the view's edits");
+  return parse_scene(scene_to_json(s), "the view's edits", s.source_dir);
 }
 
 FrameTime view_time(const Scene& scene, double position) {

@@ -240,6 +240,11 @@ WebPage write_web_page(const WebPageOptions& o) {
                   ": camera.keyframes: the page renders a fixed camera (a moving one: "
                   "sunglint render)");
     }
+    if (!s.surface.cascades.empty()) {
+      throw Error(path +
+                  ": surface.cascades: the page reads explicit waves only (`sunglint ocean "
+                  "--cascades C --lattice N --expand` writes the same sea as explicit waves)");
+    }
     set_image_size(s, w.width > 0 ? w.width : s.width, w.height > 0 ? w.height : s.height);
     if (!names.insert(s.name).second) {
       throw Error(path + ": a second scene named '" + s.name +

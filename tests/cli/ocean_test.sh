@@ -145,5 +145,36 @@ for s in ocean-wind ocean-swell; do
   fi
 done
 
+# Lattice cascades: bad flags named, the sidecars beside the scene, `info` lists each
+# cascade's band and Hs, --expand writes the same sea as explicit waves (the same pixels),
+# a damaged sidecar refused naming the key and the file.
+usage "cascades range" "--cascades: must be in [1, 8] (got 9)" --cascades 9
+usage "lattice power of two" "--lattice: must be a power of two in [4, 1024] (got 48)" --cascades 2 --lattice 48
+usage "lattice without cascades" "--lattice, --patch-sizes, --expand: need --cascades" --lattice 64
+usage "waves with cascades" "--waves, --swell-waves: not with --cascades" --cascades 2 --waves 64
+usage "patch count" "--patch-sizes: 1 sizes for 2 cascades" --cascades 2 --patch-sizes 100
+usage "patch ratio" "--patch-sizes: must decrease, each at most 2 times the next" \
+  --cascades 2 --lattice 32 --patch-sizes 100,10
+usage "expand too many" "--expand: the lattices hold" --cascades 4 --lattice 512 --expand
+mkdir -p "$work/lat"
+expect_rc "cascades" 0 "2 cascades of 32 x 32" "$bin" ocean -o "$work/lat/sea.json" --cascades 2 \
+  --lattice 32 --wavelengths 0.5-1000 --template "$src/scripts/templates/plain.json"
+[ -f "$work/lat/sea.cascade0.npy" ] && [ -f "$work/lat/sea.cascade1.npy" ] && ok ||
+  bad "the cascades' sidecars are not beside the scene"
+grep -q '"file": "sea.cascade1.npy"' "$work/lat/sea.json" && ok || bad "scene does not name its sidecar"
+expect_rc "cascades info" 0 "cascade 1    sea.cascade1.npy: patch" "$bin" info "$work/lat/sea.json"
+expect_rc "cascades info json" 0 '"significant_wave_height_m"' "$bin" info --json "$work/lat/sea.json"
+expect_rc "expanded" 0 "(expanded into explicit waves)" "$bin" ocean -o "$work/lat/sea-x.json" \
+  --cascades 2 --lattice 32 --wavelengths 0.5-1000 --template "$src/scripts/templates/plain.json" --expand
+[ ! -e "$work/lat/sea-x.cascade0.npy" ] && ok || bad "--expand wrote sidecars"
+"$bin" render "$work/lat/sea.json" -m staa --width 48 --height 27 -f 2 -o "$work/lat/l.pfm" >/dev/null 2>&1
+"$bin" render "$work/lat/sea-x.json" -m staa --width 48 --height 27 -f 2 -o "$work/lat/x.pfm" >/dev/null 2>&1
+expect_rc "lattice and expanded render alike" 0 "max_abs  0" "$bin" diff "$work/lat/l.pfm" "$work/lat/x.pfm"
+cp "$work/lat/sea.json" "$work/lat/cut.json"
+sed -i 's/sea.cascade1.npy/cut.npy/' "$work/lat/cut.json"
+head -c 5000 "$work/lat/sea.cascade1.npy" >"$work/lat/cut.npy"
+expect_rc "truncated sidecar" 1 "surface.cascades[1].file ($work/lat/cut.npy): truncated" \
+  "$bin" info "$work/lat/cut.json"
+
 echo "ocean CLI checks: $passes passed, $fails failed"
 [ $fails -eq 0 ]

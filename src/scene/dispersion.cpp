@@ -1,8 +1,8 @@
-#include "ocean/dispersion.h"
+#include "scene/dispersion.h"
 
 #include <cmath>
 
-namespace sg::ocean {
+namespace sg {
 
 double Dispersion::omega(double k) const {
   if (deep()) return std::sqrt(kGravity * k);
@@ -40,4 +40,4 @@ double Dispersion::wavenumber(double w) const {
   return k;
 }
 
-}  // namespace sg::ocean
+}  // namespace sg

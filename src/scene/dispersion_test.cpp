@@ -1,5 +1,5 @@
 // The dispersion relation against wave-table values and its own definition.
-#include "ocean/dispersion.h"
+#include "scene/dispersion.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "math/vec.h"
 
-namespace sg::ocean {
+namespace sg {
 namespace {
 
 // Wavelength of a wave of period T in depth h.
@@ -52,4 +52,4 @@ TEST(Dispersion, GroupSpeedIsTheDerivative) {
 }
 
 }  // namespace
-}  // namespace sg::ocean
+}  // namespace sg

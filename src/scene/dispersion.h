@@ -11,7 +11,7 @@
 
 #include <limits>
 
-namespace sg::ocean {
+namespace sg {
 
 inline constexpr double kGravity = 9.81;  // m/s^2, as the scene spec's dispersion note
 
@@ -28,4 +28,4 @@ struct Dispersion {
   double group_speed(double k) const;
 };
 
-}  // namespace sg::ocean
+}  // namespace sg

@@ -1,0 +1,140 @@
+// The lattice generator (ocean/lattice_ocean.h): each cascade ocean's significant wave
+// height against the spectrum's integral over its bands (the target: within 5%), bands that
+// tile the spectrum without overlap, the files the loader accepts, the same bytes for the
+// same parameters, and bad flags refused by name.
+#include "ocean/lattice_ocean.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "math/vec.h"
+#include "scene/scene.h"
+#include "testing/paths.h"
+
+namespace sg::ocean {
+namespace {
+
+std::string error_of(const OceanParams& p, const CascadeParams& c) {
+  try {
+    generate_lattice(p, c);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(LatticeOcean, SignificantHeightIsTheSpectrumsWithinFivePerCent) {
+  struct Case {
+    const char* what;
+    OceanParams p;
+    CascadeParams c;
+  };
+  std::vector<Case> cases;
+  for (double u : {5.0, 10.0, 15.0}) {
+    OceanParams p;
+    p.wind_speed = u;
+    cases.push_back({"jonswap", p, {}});
+  }
+  {
+    OceanParams p;
+    p.spectrum = SpectrumKind::pierson_moskowitz;
+    p.wind_speed = 12;
+    cases.push_back({"pierson-moskowitz", p, {}});
+  }
+  {
+    OceanParams p;
+    p.spectrum = SpectrumKind::tma;
+    p.depth = 8;
+    cases.push_back({"tma 8 m", p, {}});
+  }
+  {
+    OceanParams p;
+    p.swell.enabled = true;
+    p.swell.height = 1.5;
+    p.swell.period = 11;
+    p.swell.direction_deg = 40;
+    cases.push_back({"wind and swell", p, {}});
+  }
+  {
+    OceanParams p;
+    p.wind_speed = 8;
+    CascadeParams c;
+    c.cascades = 2;
+    c.lattice = 64;
+    cases.push_back({"2 x 64", p, c});
+  }
+  for (const Case& k : cases) {
+    const LatticeOcean o = generate_lattice(k.p, k.c);
+    const double hs = 4 * std::sqrt(o.variance), hs_spec = 4 * std::sqrt(o.spectrum_variance);
+    std::printf("%-18s Hs %.4f m, spectrum %.4f m (%+.2f%%)\n", k.what, hs, hs_spec,
+                100 * (hs / hs_spec - 1));
+    EXPECT_NEAR(hs / hs_spec, 1, 0.05) << k.what;
+    // Bands: contiguous from the trimmed low end, each inside its lattice.
+    ASSERT_EQ(static_cast<int>(o.cascades.size()), k.c.cascades);
+    EXPECT_DOUBLE_EQ(o.cascades[0].band_min, o.k_min);
+    for (size_t c = 0; c < o.cascades.size(); ++c) {
+      const CascadeDesc& d = o.cascades[c];
+      EXPECT_LT(d.band_min, d.band_max);
+      EXPECT_LE(d.band_max, (d.lattice / 2) * kTwoPi / d.patch_size * (1 + 1e-12));
+      if (c > 0) {
+        EXPECT_EQ(d.band_min, o.cascades[c - 1].band_max);
+      }
+    }
+  }
+}
+
+TEST(LatticeOcean, FilesLoadAndRepeatBitForBit) {
+  OceanParams p;
+  p.wind_speed = 9;
+  p.seed = 4;
+  CascadeParams c;
+  c.cascades = 3;
+  c.lattice = 32;
+  const LatticeOcean a = generate_lattice(p, c), b = generate_lattice(p, c);
+  p.seed = 5;
+  const LatticeOcean other = generate_lattice(p, c);
+  const std::string dir = sg::testing::binary_dir() + "/test_out/lattice_ocean_test";
+  std::filesystem::create_directories(dir);
+  Scene s = plain_template();
+  s.surface.waves.clear();
+  s.surface.depth = a.depth;
+  for (size_t k = 0; k < a.cascades.size(); ++k) {
+    EXPECT_EQ(lattice_npy_bytes(*a.cascades[k].data), lattice_npy_bytes(*b.cascades[k].data));
+    EXPECT_EQ(a.cascades[k].data->amplitude, other.cascades[k].data->amplitude);
+    EXPECT_NE(a.cascades[k].data->phase, other.cascades[k].data->phase);
+    CascadeDesc d = a.cascades[k];
+    d.file = std::string("c").append(std::to_string(k)).append(".npy");
+    write_lattice(dir + "/" + d.file, *d.data);
+    s.surface.cascades.push_back(d);
+  }
+  write_file_atomic(dir + "/sea.json", scene_to_json(s));
+  const Scene back = load_scene(dir + "/sea.json");
+  ASSERT_EQ(back.surface.cascades.size(), 3u);
+  for (size_t k = 0; k < 3; ++k)
+    EXPECT_EQ(back.surface.cascades[k].data->amplitude, a.cascades[k].data->amplitude);
+}
+
+TEST(LatticeOcean, BadFlagsNamed) {
+  OceanParams p;
+  CascadeParams c;
+  c.lattice = 100;
+  EXPECT_EQ(error_of(p, c), "--lattice: must be a power of two in [4, 1024] (got 100)");
+  c = {};
+  c.cascades = 9;
+  EXPECT_EQ(error_of(p, c), "--cascades: must be in [1, 8] (got 9)");
+  c = {};
+  c.patch_sizes = {1000, 100};
+  EXPECT_EQ(error_of(p, c), "--patch-sizes: 2 sizes for 4 cascades (--cascades)");
+  c.cascades = 2;
+  c.patch_sizes = {1000, 10};
+  EXPECT_EQ(error_of(p, c),
+            "--patch-sizes: must decrease, each at most 16 times the next (N / 16: the finer "
+            "lattice resolves its band's edge); got 1000 then 10");
+}
+
+}  // namespace
+}  // namespace sg::ocean

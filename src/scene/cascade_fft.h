@@ -1,0 +1,70 @@
+// A cascade's water on its patch's N x N grid at one time, by inverse FFT (scene/lattice.h
+// defines the cascade), and the LEAN-style chain of its slopes' moments.
+//
+// On the grid x_pq = (p, q) L / N the lattice's phases are k_mn . x_pq = 2 pi (m p + n q) / N,
+// so with Z_mn = A_mn exp(i (omega_mn t + phi_mn)) (Tessendorf 2001, "Simulating Ocean
+// Water", Sec. 3.4, in the scene's sine form):
+//     h(x_pq)      = Im  sum_mn Z_mn e^{2 pi i (m p + n q) / N}          = Im  IDFT[Z]
+//     dh/dx(x_pq)  = Re  sum_mn k_x Z_mn e^{...}                         = Re  IDFT[k_x Z]
+//     dh/dz(x_pq)  = Re  IDFT[k_z Z]
+// (IDFT the unnormalised inverse transform). Two transforms carry the three real fields:
+// Re IDFT[Y] = IDFT[E(Y)] and Im IDFT[Y] = IDFT[O(Y)] with E(Y)_k = (Y_k + conj Y_-k) / 2,
+// O(Y)_k = (Y_k - conj Y_-k) / 2i (-k modulo N, exact on the grid, the Nyquist row
+// included), so IDFT[E(k_x Z) + i O(Z)] = dh/dx + i h and IDFT[E(k_z Z)] = dh/dz. Exact at
+// the grid's points to rounding; between them the field is what the renderer interpolates.
+//
+// The FFT is kissfft's (`kissfft.hh`, Debian's libkissfft-dev: BSD-licensed, so an engine
+// that ports sunglint may ship it; templated on the scalar, so the CPU engine runs it in
+// double; mixed radix), along rows then columns.
+//
+// The moment chain (Olano and Baker 2010, "LEAN Mapping", Sec. 3: a filtered normal is
+// the mean of the slopes and their second moments over the footprint): level 0 holds each
+// grid point's slope s = (dh/dx, dh/dz) and s s^T; level l + 1 the mean of 2 x 2 blocks
+// of level l, down to one texel, so the mean and covariance of the slopes over any
+// aligned 2^l x 2^l block is one fetch: cov = E[s s^T] - E[s] E[s]^T.
+#pragma once
+
+#include <complex>
+#include <memory>
+#include <vector>
+
+#include "scene/dispersion.h"
+#include "scene/lattice.h"
+
+namespace sg {
+
+// Height and slopes on the grid, entry q * n + p at x = (p, q) L / n.
+struct CascadeGrid {
+  int n = 0;
+  double patch_size = 0;
+  double time = 0;
+  std::vector<double> height, slope_x, slope_z;
+};
+
+class CascadeFft {
+ public:
+  explicit CascadeFft(int n);
+  ~CascadeFft();
+  int n() const { return n_; }
+  // The cascade's height and slopes at time t (its lattice must be n).
+  CascadeGrid evaluate(const CascadeDesc& c, const Dispersion& water, double t) const;
+  // The unnormalised inverse 2-D DFT of `data` (n x n, row q holds entries q * n + p), in
+  // place: out[q][p] = sum_mn in[n][m] exp(2 pi i (m p + n q) / N).
+  void inverse_2d(std::vector<std::complex<double>>& data) const;
+
+ private:
+  int n_;
+  struct Plan;
+  std::unique_ptr<Plan> plan_;
+};
+
+// One level of the moment chain: n x n texels of the slopes' mean and second moments.
+struct MomentLevel {
+  int n = 0;
+  std::vector<double> mx, mz, mxx, mxz, mzz;  // E[s_x], E[s_z], E[s_x^2], E[s_x s_z], E[s_z^2]
+};
+
+// Levels 0 (the grid, n x n) to log2 n (one texel: the whole patch).
+std::vector<MomentLevel> moment_chain(const CascadeGrid& g);
+
+}  // namespace sg

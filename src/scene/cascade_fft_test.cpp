@@ -1,0 +1,176 @@
+// The cascades' FFT (scene/cascade_fft.h) against an analytic impulse, a naive DFT and the
+// direct sum of the lattice's sines at random grid points and times (the Nyquist rows
+// included); the moment chain against direct averaging over each level's blocks.
+#include "scene/cascade_fft.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "math/rng.h"
+#include "scene/scene.h"
+#include "scene/waves.h"
+
+namespace sg {
+namespace {
+
+// Every lattice point non-zero (Nyquist rows and columns too), band the whole lattice.
+CascadeDesc full_cascade(int n, double patch, uint64_t seed) {
+  CascadeDesc c;
+  c.patch_size = patch;
+  c.lattice = n;
+  c.band_min = 0;
+  c.band_max = 1e9;
+  auto d = std::make_shared<LatticeData>();
+  d->n = n;
+  d->amplitude.resize(static_cast<size_t>(n) * n);
+  d->phase.resize(static_cast<size_t>(n) * n);
+  Pcg32 rng(seed, 9);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const size_t e = static_cast<size_t>(j) * n + i;
+      const double k = length(lattice_wave_vector(patch, n, i, j));
+      d->amplitude[e] = k > 0 ? 0.1 * rng.uniform() / k : 0.0;
+      d->phase[e] = kTwoPi * rng.uniform();
+    }
+  }
+  c.data = d;
+  return c;
+}
+
+TEST(CascadeFft, InverseTransformIsTheNaiveDft) {
+  const int n = 8;
+  CascadeFft fft(n);
+  Pcg32 rng(1, 1);
+  std::vector<std::complex<double>> in(n * n);
+  for (auto& v : in)
+    v = {rng.uniform() - 0.5, rng.uniform() - 0.5};
+  std::vector<std::complex<double>> out = in;
+  fft.inverse_2d(out);
+  for (int q = 0; q < n; ++q) {
+    for (int p = 0; p < n; ++p) {
+      std::complex<double> s = 0;
+      for (int b = 0; b < n; ++b)
+        for (int a = 0; a < n; ++a)
+          s += in[b * n + a] * std::polar(1.0, kTwoPi * (a * p + b * q) / n);
+      EXPECT_NEAR(std::abs(out[q * n + p] - s), 0, 1e-13);
+    }
+  }
+}
+
+TEST(CascadeFft, ImpulseIsOneSine) {
+  // One lattice point (m, n) = (3, -2) of amplitude 0.5: h = 0.5 sin(k.x + omega t + phi)
+  // exactly, slopes 0.5 k cos(...), at every grid point.
+  const int n = 16;
+  const double L = 40, t = 1.7, phi = 0.3;
+  CascadeDesc c;
+  c.patch_size = L;
+  c.lattice = n;
+  auto d = std::make_shared<LatticeData>();
+  d->n = n;
+  d->amplitude.assign(n * n, 0.0);
+  d->phase.assign(n * n, 0.0);
+  const int i = 3, j = n - 2;
+  d->amplitude[j * n + i] = 0.5;
+  d->phase[j * n + i] = phi;
+  c.data = d;
+  const Dispersion water{12};
+  const CascadeGrid g = CascadeFft(n).evaluate(c, water, t);
+  const vec2 k = lattice_wave_vector(L, n, i, j);
+  const double w = water.omega(length(k));
+  for (int q = 0; q < n; ++q) {
+    for (int p = 0; p < n; ++p) {
+      const double x = p * L / n, z = q * L / n, th = k.x * x + k.y * z + w * t + phi;
+      EXPECT_NEAR(g.height[q * n + p], 0.5 * std::sin(th), 1e-14);
+      EXPECT_NEAR(g.slope_x[q * n + p], 0.5 * k.x * std::cos(th), 1e-14);
+      EXPECT_NEAR(g.slope_z[q * n + p], 0.5 * k.y * std::cos(th), 1e-14);
+    }
+  }
+}
+
+TEST(CascadeFft, GridIsTheDirectSumOfTheLatticesSines) {
+  for (int n : {16, 64}) {
+    const CascadeDesc c = full_cascade(n, 50, static_cast<uint64_t>(n));
+    const Dispersion water{};
+    std::vector<Wave> waves = cascade_waves(c, water);
+    ASSERT_EQ(waves.size(), static_cast<size_t>(n * n - 1));
+    const WaveField field(waves);
+    double amp_sum = 0, slope_sum = 0;
+    for (const Wave& w : waves) {
+      amp_sum += w.amplitude;
+      slope_sum += w.amplitude * length(w.wave_vector);
+    }
+    CascadeFft fft(n);
+    Pcg32 rng(7, static_cast<uint64_t>(n));
+    double worst_h = 0, worst_s = 0;
+    for (int trial = 0; trial < 4; ++trial) {
+      const double t = 100 * rng.uniform();
+      const CascadeGrid g = fft.evaluate(c, water, t);
+      for (int s = 0; s < 40; ++s) {
+        const int p = static_cast<int>(rng.uniform() * n), q = static_cast<int>(rng.uniform() * n);
+        const double x = p * c.patch_size / n, z = q * c.patch_size / n;
+        double h = 0, sx = 0, sz = 0;
+        for (const Wave& w : waves) {
+          const double th =
+              w.wave_vector.x * x + w.wave_vector.y * z + w.angular_frequency * t + w.phase;
+          h += w.amplitude * std::sin(th);
+          sx += w.amplitude * w.wave_vector.x * std::cos(th);
+          sz += w.amplitude * w.wave_vector.y * std::cos(th);
+        }
+        worst_h = std::max(worst_h, std::fabs(g.height[q * n + p] - h));
+        worst_s = std::max(worst_s, std::max(std::fabs(g.slope_x[q * n + p] - sx),
+                                             std::fabs(g.slope_z[q * n + p] - sz)));
+        // The scene's wave field agrees (the same sines, another code path).
+        const double hf = field.height(x, z, t);
+        EXPECT_NEAR(hf, h, 1e-12 * amp_sum);
+      }
+    }
+    // Double rounding: the phases' (omega t ~ 1e3 rad) dominate.
+    EXPECT_LT(worst_h, 1e-11 * amp_sum) << n;
+    EXPECT_LT(worst_s, 1e-11 * slope_sum) << n;
+    std::printf("lattice %d: max |FFT - direct| height %.3g (sum A %.3g), slope %.3g\n", n, worst_h,
+                amp_sum, worst_s);
+  }
+}
+
+TEST(CascadeFft, MomentChainIsTheBlockAverage) {
+  const int n = 32;
+  const CascadeDesc c = full_cascade(n, 20, 3);
+  const CascadeGrid g = CascadeFft(n).evaluate(c, Dispersion{}, 0.4);
+  const std::vector<MomentLevel> chain = moment_chain(g);
+  ASSERT_EQ(chain.size(), 6u);  // 32, 16, 8, 4, 2, 1
+  for (size_t l = 0; l < chain.size(); ++l) {
+    const MomentLevel& lv = chain[l];
+    const int block = n / lv.n;
+    ASSERT_EQ(block, 1 << l);
+    for (int q = 0; q < lv.n; ++q) {
+      for (int p = 0; p < lv.n; ++p) {
+        double mx = 0, mz = 0, mxx = 0, mxz = 0, mzz = 0;
+        for (int b = 0; b < block; ++b) {
+          for (int a = 0; a < block; ++a) {
+            const size_t e = static_cast<size_t>(q * block + b) * n + p * block + a;
+            mx += g.slope_x[e];
+            mz += g.slope_z[e];
+            mxx += g.slope_x[e] * g.slope_x[e];
+            mxz += g.slope_x[e] * g.slope_z[e];
+            mzz += g.slope_z[e] * g.slope_z[e];
+          }
+        }
+        const double inv = 1.0 / (block * block);
+        const size_t e = static_cast<size_t>(q) * lv.n + p;
+        EXPECT_NEAR(lv.mx[e], mx * inv, 1e-14);
+        EXPECT_NEAR(lv.mz[e], mz * inv, 1e-14);
+        EXPECT_NEAR(lv.mxx[e], mxx * inv, 1e-13);
+        EXPECT_NEAR(lv.mxz[e], mxz * inv, 1e-13);
+        EXPECT_NEAR(lv.mzz[e], mzz * inv, 1e-13);
+      }
+    }
+  }
+  // The whole patch: the slopes' mean is 0 (no k = 0 term).
+  const MomentLevel& top = chain.back();
+  EXPECT_NEAR(top.mx[0], 0, 1e-14);
+  EXPECT_NEAR(top.mz[0], 0, 1e-14);
+}
+
+}  // namespace
+}  // namespace sg
