@@ -6,6 +6,15 @@
 #include <cmath>
 
 #include "base/error.h"
+#include "kernel/cpp_prelude.h"
+
+namespace sg::kd {
+#define SG_KERNEL_REAL double
+#include "kernel/cpp_types.h"
+// (after the types it uses)
+#include "kernel/cascade_spectrum.glsl"
+#undef SG_KERNEL_REAL
+}  // namespace sg::kd
 
 namespace sg {
 
@@ -59,33 +68,27 @@ CascadeGrid CascadeFft::evaluate(const CascadeDesc& c, const Dispersion& water, 
   using cd = std::complex<double>;
   const int n = n_;
   const size_t count = static_cast<size_t>(n) * n;
-  // Z = A e^{i (omega t + phi)}.
-  std::vector<cd> z(count);
+  // Z = A e^{i (omega t + phi)}, in double; the spectra by the shared text
+  // (kernel/cascade_spectrum.glsl).
+  std::vector<kd::vec2> z(count, kd::vec2(0.0));
   for (size_t e = 0; e < count; ++e) {
     const double a = c.data->amplitude[e];
     if (a == 0) continue;
     const vec2 k =
         lattice_wave_vector(c.patch_size, n, static_cast<int>(e % n), static_cast<int>(e / n));
-    z[e] = std::polar(a, water.omega(length(k)) * t + c.data->phase[e]);
+    z[e] = kd::cascade_z(a, water.omega(length(k)) * t + c.data->phase[e]);
   }
-  // E(kx Z) + i O(Z) and E(kz Z): the spectra of dh/dx + i h and of dh/dz (k_-k = -k on
-  // the lattice, so E(kx Z)_k = kx (Z_k - conj Z_-k) / 2; at the Nyquist index, whose
-  // negative is itself, the lattice's own kx is used on both sides: see the header).
   std::vector<cd> a(count), b(count);
-  const double dk = kTwoPi / c.patch_size;
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
       const size_t e = static_cast<size_t>(j) * n + i;
-      const size_t m = static_cast<size_t>((n - j) % n) * n + static_cast<size_t>((n - i) % n);
-      const double kx = dk * lattice_frequency(i, n), kz = dk * lattice_frequency(j, n);
-      const double kxm = dk * lattice_frequency((n - i) % n, n);
-      const double kzm = dk * lattice_frequency((n - j) % n, n);
-      const cd zc = std::conj(z[m]);
-      // (Y_k + conj Y_-k) / 2 with Y = k Z; (Z_k - conj Z_-k) / 2i = -i/2 (Z_k - conj Z_-k).
-      const cd even_x = 0.5 * (kx * z[e] + kxm * zc);
-      const cd odd = cd(0, -0.5) * (z[e] - zc);
-      a[e] = even_x + cd(-odd.imag(), odd.real());  // + i odd
-      b[e] = 0.5 * (kz * z[e] + kzm * zc);
+      const int im = (n - i) % n, jm = (n - j) % n;
+      const size_t m = static_cast<size_t>(jm) * n + static_cast<size_t>(im);
+      const vec2 k = lattice_wave_vector(c.patch_size, n, i, j);
+      const vec2 km = lattice_wave_vector(c.patch_size, n, im, jm);
+      const kd::vec4 s = kd::cascade_spectra(z[e], z[m], kd::vec2(k.x, k.y), kd::vec2(km.x, km.y));
+      a[e] = cd(s.x, s.y);
+      b[e] = cd(s.z, s.w);
     }
   }
   inverse_2d(a);

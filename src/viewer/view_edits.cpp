@@ -2,6 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+
+#include "base/error.h"
+#include "base/fnv1a.h"
+#include "scene/lattice.h"
+#include "scene/scene_limits.h"
 
 namespace sg::viewer {
 namespace {
@@ -18,7 +26,18 @@ ViewEdits edits_of(const Scene& scene) {
   e.sun_radius_deg = scene.light.angular_radius_deg;
   e.amplitude_scale = 1;
   e.camera = scene.camera;
+  e.sea_params = sea_params_of(scene);
   return e;
+}
+
+ocean::OceanParams sea_params_of(const Scene& scene) {
+  ocean::OceanParams p;
+  size_t waves = scene.surface.waves.size();
+  for (const CascadeDesc& c : scene.surface.cascades)
+    for (double a : c.data->amplitude)
+      waves += a > 0;
+  p.waves = static_cast<int>(std::clamp<size_t>(waves, 16, 4096));
+  return p;
 }
 
 Scene edited_scene(const Scene& base, const ViewEdits& e) {
@@ -32,12 +51,43 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
   }
   s.light.angular_radius_deg = e.sun_radius_deg;
   s.camera = e.camera;
+  if (e.sea) {
+    // ocean::generate's own checks name the flag of a bad value ("--wind-speed: ...").
+    s.surface.waves = ocean::generate(e.sea_params).waves;
+    s.surface.cascades.clear();
+    s.surface.depth = std::numeric_limits<double>::infinity();
+  }
   if (e.amplitude_scale != 1) {
     for (Wave& w : s.surface.waves)
       w.amplitude *= e.amplitude_scale;
   }
-  // The loader's checks, on the edited values.
-  return parse_scene(scene_to_json(s), "the view's edits", s.source_dir);
+  // The loader's checks, on the edited values (the cascades read again from their files).
+  Scene out = parse_scene(scene_to_json(s), "the view's edits", s.source_dir);
+  if (e.amplitude_scale != 1) {
+    // The cascades' amplitudes scale too, checked by the loader's steepness rule; their
+    // fingerprints change with the scale (frame cache keys).
+    for (size_t c = 0; c < out.surface.cascades.size(); ++c) {
+      CascadeDesc& cascade = out.surface.cascades[c];
+      auto data = std::make_shared<LatticeData>(*cascade.data);
+      const int n = data->n;
+      for (size_t i = 0; i < data->amplitude.size(); ++i) {
+        data->amplitude[i] *= e.amplitude_scale;
+        const double k = length(lattice_wave_vector(cascade.patch_size, n, static_cast<int>(i % n),
+                                                    static_cast<int>(i / n)));
+        if (!(data->amplitude[i] * k <= limits::kMaxSteepness)) {
+          throw Error("the view's edits: amplitude scale " + std::to_string(e.amplitude_scale) +
+                      ": surface.cascades[" + std::to_string(c) +
+                      "]: a wave would be steeper than Stokes' limit " +
+                      std::to_string(limits::kMaxSteepness));
+        }
+      }
+      char scale[32];
+      std::snprintf(scale, sizeof scale, "%.17g", e.amplitude_scale);
+      data->fingerprint = fnv1a64(scale, data->fingerprint);
+      cascade.data = data;
+    }
+  }
+  return out;
 }
 
 FrameTime view_time(const Scene& scene, double position) {

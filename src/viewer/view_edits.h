@@ -1,6 +1,8 @@
 // What the viewer changes in a scene while it runs: the camera (moved by
 // viewer/view_camera.h), the light's elevation, azimuth and angular radius, and one scale
-// on every wave's amplitude; and the animation time of a
+// on every wave's amplitude, or a sea regenerated from a wind spectrum (wind speed,
+// direction, fetch: ocean/ocean.h's JONSWAP with the scene's number of waves, 16 to 4096);
+// and the animation time of a
 // fractional frame position (slow motion and scrubbing land between frames). The edited
 // scene is an ordinary Scene, so saving the view writes it as a scene file that `render`
 // reproduces, and an unedited view is the scene itself, bit for bit.
@@ -9,6 +11,7 @@
 // measured in the horizontal plane from -z (where the default camera looks) towards +x.
 #pragma once
 
+#include "ocean/ocean.h"
 #include "scene/model.h"
 #include "scene/scene.h"
 
@@ -20,7 +23,15 @@ struct ViewEdits {
   double sun_radius_deg = 0.27;
   double amplitude_scale = 1;
   CameraDesc camera;  // the view's camera; edits_of: the scene's, exactly
+  // The sea from a spectrum: when `sea` is set, the scene's waves and cascades are replaced
+  // by ocean::generate(sea_params) (explicit waves; the amplitude scale applies on top).
+  bool sea = false;
+  ocean::OceanParams sea_params;
 };
+
+// The spectrum sea's parameters the viewer starts from for `scene`: JONSWAP, 10 m/s, its
+// wave count (explicit waves and the cascades' non-zero lattice points) within [16, 4096].
+ocean::OceanParams sea_params_of(const Scene& scene);
 
 // The edits that leave `scene` as it is (its camera, its light's angles, radius, scale 1).
 ViewEdits edits_of(const Scene& scene);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "base/error.h"
 #include "scene/scene.h"
@@ -54,6 +55,68 @@ TEST(ViewEdits, AmplitudeScaleAndRadius) {
     EXPECT_DOUBLE_EQ(t.surface.waves[i].amplitude, 0.5 * s.surface.waves[i].amplitude);
   EXPECT_EQ(t.light.angular_radius_deg, 1.5);
   EXPECT_EQ(t.light.direction, s.light.direction);  // angles unedited: the file's vector
+}
+
+TEST(ViewEdits, AmplitudeScaleScalesTheCascades) {
+  Scene s = simple();
+  CascadeDesc c;
+  c.file = "unused.npy";
+  c.patch_size = 64;
+  c.lattice = 8;
+  c.band_min = 0.05;
+  c.band_max = 0.5;
+  auto d = std::make_shared<LatticeData>();
+  d->n = 8;
+  d->amplitude.assign(64, 0.0);
+  d->phase.assign(64, 0.0);
+  d->amplitude[1] = 0.5;  // |k| = 2 pi / 64: steepness 0.049
+  c.data = d;
+  const std::string dir = sg::testing::binary_dir() + "/test_out/view_edits_test";
+  std::filesystem::create_directories(dir);
+  write_lattice(dir + "/unused.npy", *d);
+  s.source_dir = dir;
+  s.surface.waves.clear();  // the cascade alone meets the limit below
+  s.surface.cascades.push_back(c);
+  ViewEdits e = edits_of(s);
+  e.amplitude_scale = 2;
+  const Scene t = edited_scene(s, e);
+  ASSERT_EQ(t.surface.cascades.size(), 1u);
+  EXPECT_DOUBLE_EQ(t.surface.cascades[0].data->amplitude[1], 1.0);
+  EXPECT_NE(t.surface.cascades[0].data->fingerprint,
+            edited_scene(s, edits_of(s)).surface.cascades[0].data->fingerprint);
+  // Past Stokes' limit: refused, naming the cascade.
+  e.amplitude_scale = 10;
+  try {
+    edited_scene(s, e);
+    FAIL() << "a steepness of 0.49 was accepted";
+  } catch (const Error& err) {
+    EXPECT_NE(std::string(err.what()).find("surface.cascades[0]"), std::string::npos) << err.what();
+  }
+}
+
+TEST(ViewEdits, SeaFromAWindSpectrum) {
+  const Scene s = simple();
+  ViewEdits e = edits_of(s);
+  EXPECT_FALSE(e.sea);
+  EXPECT_EQ(e.sea_params.waves, 16);  // the scene's 4 waves, raised to the least
+  e.sea = true;
+  e.sea_params.wind_speed = 7;
+  e.sea_params.wind_direction_deg = 30;
+  const Scene t = edited_scene(s, e);
+  const std::vector<Wave> want = ocean::generate(e.sea_params).waves;
+  ASSERT_EQ(t.surface.waves.size(), want.size());
+  for (size_t i = 0; i < want.size(); ++i)
+    EXPECT_EQ(t.surface.waves[i].amplitude, want[i].amplitude);
+  // Another wind, another sea; a wind out of range refused by its flag's name.
+  e.sea_params.wind_speed = 12;
+  EXPECT_NE(edited_scene(s, e).surface.waves[10].amplitude, t.surface.waves[10].amplitude);
+  e.sea_params.wind_speed = 45;
+  try {
+    edited_scene(s, e);
+    FAIL() << "a 45 m/s wind was accepted";
+  } catch (const Error& err) {
+    EXPECT_NE(std::string(err.what()).find("--wind-speed"), std::string::npos) << err.what();
+  }
 }
 
 TEST(ViewEdits, OutOfRangeIsRefusedByName) {

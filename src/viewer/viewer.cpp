@@ -629,6 +629,31 @@ class Viewer {
       e.amplitude_scale = amp;
       edited = true;
     }
+    // The sea from a wind spectrum, regenerated as the sliders move (explicit waves).
+    bool sea = e.sea;
+    if (ImGui::Checkbox("sea from a wind spectrum", &sea)) {
+      e.sea = sea;
+      edited = true;
+    }
+    if (e.sea) {
+      float wind = float(e.sea_params.wind_speed), dir = float(e.sea_params.wind_direction_deg);
+      float fetch = float(e.sea_params.fetch_km);
+      if (ImGui::SliderFloat("wind speed", &wind, 1.0f, 30.0f, "%.1f m/s")) {
+        e.sea_params.wind_speed = wind;
+        edited = true;
+      }
+      if (ImGui::SliderFloat("wind direction", &dir, -180.0f, 180.0f, "%.0f deg")) {
+        e.sea_params.wind_direction_deg = dir;
+        edited = true;
+      }
+      if (ImGui::SliderFloat("fetch", &fetch, 1.0f, 10000.0f, "%.0f km",
+                             ImGuiSliderFlags_Logarithmic)) {
+        e.sea_params.fetch_km = fetch;
+        edited = true;
+      }
+      ImGui::TextWrapped("JONSWAP, %d waves (the scene's, 16 to 4096), seed %llu",
+                         e.sea_params.waves, static_cast<unsigned long long>(e.sea_params.seed));
+    }
     if (edited) set_edits(e, dirty);
     if (ImGui::Button("scene as loaded")) {
       set_edits(edits_of(base_), dirty);

@@ -170,6 +170,8 @@ expect_rc "expanded" 0 "(expanded into explicit waves)" "$bin" ocean -o "$work/l
 "$bin" render "$work/lat/sea.json" -m staa --width 48 --height 27 -f 2 -o "$work/lat/l.pfm" >/dev/null 2>&1
 "$bin" render "$work/lat/sea-x.json" -m staa --width 48 --height 27 -f 2 -o "$work/lat/x.pfm" >/dev/null 2>&1
 expect_rc "lattice and expanded render alike" 0 "max_abs  0" "$bin" diff "$work/lat/l.pfm" "$work/lat/x.pfm"
+expect_rc "web refuses cascades" 1 "surface.cascades: the page reads explicit waves only" \
+  "$bin" web "$work/lat/sea.json" -o "$work/lat/web"
 cp "$work/lat/sea.json" "$work/lat/cut.json"
 sed -i 's/sea.cascade1.npy/cut.npy/' "$work/lat/cut.json"
 head -c 5000 "$work/lat/sea.cascade1.npy" >"$work/lat/cut.npy"
