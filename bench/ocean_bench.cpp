@@ -53,11 +53,11 @@ void BM_CascadeFft(benchmark::State& state) {
   sg::ocean::CascadeParams c;
   c.lattice = static_cast<int>(state.range(0));
   const sg::ocean::LatticeOcean o = sg::ocean::generate_lattice(p, c);
-  const sg::CascadeFft fft(c.lattice);
-  const sg::Dispersion water{o.depth};
+  sg::CascadeFft fft(c.lattice);
+  fft.set_lattice(o.cascades[1], sg::Dispersion{o.depth});
   double t = 0;
   for (auto _ : state) {
-    const sg::CascadeGrid g = fft.evaluate(o.cascades[1], water, t += 1.0 / 30);
+    const sg::CascadeGrid g = fft.evaluate(t += 1.0 / 30);
     if (state.range(1)) benchmark::DoNotOptimize(sg::moment_chain(g));
     benchmark::DoNotOptimize(g.height.data());
   }

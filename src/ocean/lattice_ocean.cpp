@@ -76,6 +76,11 @@ LatticeOcean generate_lattice(const OceanParams& p, const CascadeParams& cp) {
   const int count = cp.cascades;
   std::vector<double> L = cp.patch_sizes;
   const double max_ratio = n / 16.0;
+  if (count > 1 && max_ratio < 2) {
+    throw Error("--cascades: " + std::to_string(count) + " cascades need --lattice 32 or more (a " +
+                "patch may be at most N / 16 times the next; with " + std::to_string(n) +
+                " only one cascade)");
+  }
   if (L.empty()) {
     L.push_back(std::min(20 * longest_peak, limits::kMaxWavelength));
     double r = 2;

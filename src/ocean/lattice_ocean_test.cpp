@@ -129,6 +129,11 @@ TEST(LatticeOcean, BadFlagsNamed) {
   c.cascades = 9;
   EXPECT_EQ(error_of(p, c), "--cascades: must be in [1, 8] (got 9)");
   c = {};
+  c.lattice = 16;
+  EXPECT_EQ(error_of(p, c),
+            "--cascades: 4 cascades need --lattice 32 or more (a patch may be at most N / 16 "
+            "times the next; with 16 only one cascade)");
+  c = {};
   c.patch_sizes = {1000, 100};
   EXPECT_EQ(error_of(p, c), "--patch-sizes: 2 sizes for 4 cascades (--cascades)");
   c.cascades = 2;

@@ -1,5 +1,7 @@
 #include "scene/cascade_fft.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <kissfft/kissfft.hh>
 
 #include <algorithm>
@@ -18,16 +20,9 @@ namespace sg::kd {
 
 namespace sg {
 
-struct CascadeFft::Plan {
-  kissfft<double> fft;
-  explicit Plan(int n) : fft(static_cast<size_t>(n), true) {}
-};
-
-CascadeFft::CascadeFft(int n) : n_(n), plan_(std::make_unique<Plan>(n)) {
+CascadeFft::CascadeFft(int n) : n_(n) {
   if (n < 1) throw Error("CascadeFft: the lattice must be >= 1");
 }
-
-CascadeFft::~CascadeFft() = default;
 
 namespace {
 
@@ -45,65 +40,94 @@ void transpose(std::vector<std::complex<double>>& d, size_t n) {
   }
 }
 
+// Every row transformed, the rows shared among oneTBB's threads (a plan per chunk: kissfft
+// keeps scratch for odd radices).
+void inverse_rows(std::vector<std::complex<double>>& d, size_t n) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& r) {
+    const kissfft<double> fft(n, true);
+    std::vector<std::complex<double>> out(n);
+    for (size_t q = r.begin(); q < r.end(); ++q) {
+      fft.transform(&d[q * n], out.data());
+      std::copy(out.begin(), out.end(), d.begin() + static_cast<std::ptrdiff_t>(q * n));
+    }
+  });
+}
+
 }  // namespace
 
 void CascadeFft::inverse_2d(std::vector<std::complex<double>>& d) const {
   const size_t n = static_cast<size_t>(n_);
-  std::vector<std::complex<double>> out(n);
-  auto rows = [&] {
-    for (size_t q = 0; q < n; ++q) {
-      plan_->fft.transform(&d[q * n], out.data());
-      std::copy(out.begin(), out.end(), d.begin() + static_cast<std::ptrdiff_t>(q * n));
-    }
-  };
-  rows();  // along p (x)
+  inverse_rows(d, n);  // along p (x)
   transpose(d, n);
-  rows();  // along q (z)
+  inverse_rows(d, n);  // along q (z)
   transpose(d, n);
 }
 
-CascadeGrid CascadeFft::evaluate(const CascadeDesc& c, const Dispersion& water, double t) const {
+void CascadeFft::set_lattice(const CascadeDesc& c, const Dispersion& water) {
   if (!c.data || c.data->n != n_)
     throw Error("CascadeFft: the cascade's lattice is not " + std::to_string(n_));
+  patch_size_ = c.patch_size;
+  points_.clear();
+  const size_t count = static_cast<size_t>(n_) * n_;
+  for (size_t e = 0; e < count; ++e) {
+    const double a = c.data->amplitude[e];
+    if (a == 0) continue;
+    const vec2 k =
+        lattice_wave_vector(c.patch_size, n_, static_cast<int>(e % n_), static_cast<int>(e / n_));
+    points_.push_back({e, a, water.omega(length(k)), c.data->phase[e]});
+  }
+}
+
+CascadeGrid CascadeFft::evaluate(const CascadeDesc& c, const Dispersion& water, double t) {
+  set_lattice(c, water);
+  return evaluate(t);
+}
+
+CascadeGrid CascadeFft::evaluate(double t) {
   using cd = std::complex<double>;
   const int n = n_;
   const size_t count = static_cast<size_t>(n) * n;
   // Z = A e^{i (omega t + phi)}, in double; the spectra by the shared text
   // (kernel/cascade_spectrum.glsl).
-  std::vector<kd::vec2> z(count, kd::vec2(0.0));
-  for (size_t e = 0; e < count; ++e) {
-    const double a = c.data->amplitude[e];
-    if (a == 0) continue;
-    const vec2 k =
-        lattice_wave_vector(c.patch_size, n, static_cast<int>(e % n), static_cast<int>(e / n));
-    z[e] = kd::cascade_z(a, water.omega(length(k)) * t + c.data->phase[e]);
+  z_.assign(count, cd(0.0));
+  for (const Point& p : points_) {
+    const kd::vec2 z = kd::cascade_z(p.amplitude, p.omega * t + p.phase);
+    z_[p.index] = cd(z.x, z.y);
   }
-  std::vector<cd> a(count), b(count);
+  a_.resize(count);
+  b_.resize(count);
+  const double dk = kTwoPi / patch_size_;
   for (int j = 0; j < n; ++j) {
+    const int jm = (n - j) % n;
     for (int i = 0; i < n; ++i) {
       const size_t e = static_cast<size_t>(j) * n + i;
-      const int im = (n - i) % n, jm = (n - j) % n;
+      const int im = (n - i) % n;
       const size_t m = static_cast<size_t>(jm) * n + static_cast<size_t>(im);
-      const vec2 k = lattice_wave_vector(c.patch_size, n, i, j);
-      const vec2 km = lattice_wave_vector(c.patch_size, n, im, jm);
-      const kd::vec4 s = kd::cascade_spectra(z[e], z[m], kd::vec2(k.x, k.y), kd::vec2(km.x, km.y));
-      a[e] = cd(s.x, s.y);
-      b[e] = cd(s.z, s.w);
+      if (z_[e] == cd(0.0) && z_[m] == cd(0.0)) {
+        a_[e] = b_[e] = cd(0.0);
+        continue;
+      }
+      const kd::vec2 k(dk * lattice_frequency(i, n), dk * lattice_frequency(j, n));
+      const kd::vec2 km(dk * lattice_frequency(im, n), dk * lattice_frequency(jm, n));
+      const kd::vec4 s = kd::cascade_spectra(kd::vec2(z_[e].real(), z_[e].imag()),
+                                             kd::vec2(z_[m].real(), z_[m].imag()), k, km);
+      a_[e] = cd(s.x, s.y);
+      b_[e] = cd(s.z, s.w);
     }
   }
-  inverse_2d(a);
-  inverse_2d(b);
+  inverse_2d(a_);
+  inverse_2d(b_);
   CascadeGrid g;
   g.n = n;
-  g.patch_size = c.patch_size;
+  g.patch_size = patch_size_;
   g.time = t;
   g.height.resize(count);
   g.slope_x.resize(count);
   g.slope_z.resize(count);
   for (size_t e = 0; e < count; ++e) {
-    g.slope_x[e] = a[e].real();
-    g.height[e] = a[e].imag();
-    g.slope_z[e] = b[e].real();
+    g.slope_x[e] = a_[e].real();
+    g.height[e] = a_[e].imag();
+    g.slope_z[e] = b_[e].real();
   }
   return g;
 }

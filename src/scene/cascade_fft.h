@@ -15,7 +15,8 @@
 //
 // The FFT is kissfft's (`kissfft.hh`, Debian's libkissfft-dev: BSD-licensed, so an engine
 // that ports sunglint may ship it; templated on the scalar, so the CPU engine runs it in
-// double; mixed radix), along rows then columns.
+// double; mixed radix), along rows then columns (a blocked transpose between), the rows
+// shared among oneTBB's threads.
 //
 // The moment chain (Olano and Baker 2010, "LEAN Mapping", Sec. 3: a filtered normal is
 // the mean of the slopes and their second moments over the footprint): level 0 holds each
@@ -44,18 +45,28 @@ struct CascadeGrid {
 class CascadeFft {
  public:
   explicit CascadeFft(int n);
-  ~CascadeFft();
   int n() const { return n_; }
-  // The cascade's height and slopes at time t (its lattice must be n).
-  CascadeGrid evaluate(const CascadeDesc& c, const Dispersion& water, double t) const;
+  // Keeps the cascade's non-zero lattice points, their wave vectors and their frequencies
+  // at `water`'s depth (its lattice must be n), for the evaluations that follow.
+  void set_lattice(const CascadeDesc& c, const Dispersion& water);
+  // The height and slopes at time t of the lattice set last. The rows and columns of the
+  // transform run in parallel (oneTBB); one CascadeFft serves one caller at a time.
+  CascadeGrid evaluate(double t);
+  // set_lattice, then evaluate(t).
+  CascadeGrid evaluate(const CascadeDesc& c, const Dispersion& water, double t);
   // The unnormalised inverse 2-D DFT of `data` (n x n, row q holds entries q * n + p), in
   // place: out[q][p] = sum_mn in[n][m] exp(2 pi i (m p + n q) / N).
   void inverse_2d(std::vector<std::complex<double>>& data) const;
 
  private:
+  struct Point {
+    size_t index;
+    double amplitude, omega, phase;
+  };
   int n_;
-  struct Plan;
-  std::unique_ptr<Plan> plan_;
+  double patch_size_ = 0;
+  std::vector<Point> points_;
+  std::vector<std::complex<double>> z_, a_, b_;  // scratch of evaluate
 };
 
 // One level of the moment chain: n x n texels of the slopes' mean and second moments.
