@@ -120,6 +120,10 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
                  "this many pixels of the ray's footprint (0: every wave)")
       ->capture_default_str()
       ->check(number_in(0, 16));
+  choice(app, "--cascades", o.cascade_fields, {{"fields", true}, {"waves", false}},
+         "point, staa-temporal, staa on flat water: shade lattice cascades from their FFT "
+         "fields (a cost fixed per cascade) or as their lattice's sines among the waves "
+         "(exact, a cost that follows the waves)");
 
   // staa, staa-temporal (methods/staa.h)
   StaaOptions& s = o.staa;
@@ -248,6 +252,7 @@ static void scope_method_flags(const std::vector<const CLI::Option*>& options, M
       {"--precision", kernel},
       {"--intersect-tolerance", kernel},
       {"--segments", staa_both},
+      {"--cascades", {"point", "staa-temporal", "staa"}},
   };
   // staa's own (methods/staa.h).
   const std::vector<std::string> staa = {"--ndf",

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/lattice.h"
+
 #include <cmath>
 
 #include "gl/dispatch.h"
@@ -17,30 +19,9 @@
 namespace sg::gl_engine {
 namespace {
 
-using CascadeFftGlTest = sg::testing::GlTest;
+using testing::full_cascade;
 
-CascadeDesc full_cascade(int n, double patch, uint64_t seed) {
-  CascadeDesc c;
-  c.patch_size = patch;
-  c.lattice = n;
-  c.band_min = 0;
-  c.band_max = 1e9;
-  auto d = std::make_shared<LatticeData>();
-  d->n = n;
-  d->amplitude.resize(static_cast<size_t>(n) * n);
-  d->phase.resize(static_cast<size_t>(n) * n);
-  Pcg32 rng(seed, 9);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const size_t e = static_cast<size_t>(j) * n + i;
-      const double k = length(lattice_wave_vector(patch, n, i, j));
-      d->amplitude[e] = k > 0 ? 0.1 * rng.uniform() / k : 0.0;
-      d->phase[e] = kTwoPi * rng.uniform();
-    }
-  }
-  c.data = d;
-  return c;
-}
+using CascadeFftGlTest = sg::testing::GlTest;
 
 double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) {
   double m = 0;

@@ -71,6 +71,8 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::Frame& f) {
   u.set(n + ".duration", f.duration);
   u.set(n + ".segments", f.segments);
   u.set(n + ".windows", f.windows);
+  u.set(n + ".cascade_count", f.cascade_count);
+  u.set(n + ".cascade_base", f.cascade_base);
   u.set(n + ".frame", f.frame);
   u.set(n + ".seed", f.seed);
 }

@@ -24,3 +24,20 @@ SG_FN vec4 cascade_spectra(vec2 z, vec2 z_mirror, vec2 k, vec2 k_mirror) {
   vec2 b = 0.5 * (k.y * z + k_mirror.y * zc);
   return vec4(a.x, a.y, b.x, b.y);
 }
+
+// The curvatures' spectra at lattice point k, for a second pass of transforms beside
+// cascade_spectra's: h's second derivatives are Im IDFT[-k_i k_j Z], so with
+// O(w Z)_k = (w(k) Z_k - w(k_m) conj Z_-k) / 2i (w(k_m) the mirror's own factor: at a
+// Nyquist row k_m is not -k) the result is
+//   xy: i O(-k_x k_z Z), to add to cascade_spectra's second spectrum (dh/dz + i d2h/dxdz);
+//   zw: O(-k_x^2 Z) + i O(-k_z^2 Z) (d2h/dx2 + i d2h/dz2).
+SG_FN vec4 cascade_curvature_spectra(vec2 z, vec2 z_mirror, vec2 k, vec2 k_mirror) {
+  vec2 zc = vec2(z_mirror.x, -z_mirror.y);
+  // (w z - w_m zc) for each factor; O = that / 2i = (d.y / 2, -d.x / 2); i O = (d.x / 2, d.y / 2).
+  vec2 dxz = -k.x * k.y * z + k_mirror.x * k_mirror.y * zc;
+  vec2 dxx = -k.x * k.x * z + k_mirror.x * k_mirror.x * zc;
+  vec2 dzz = -k.y * k.y * z + k_mirror.y * k_mirror.y * zc;
+  vec2 b = 0.5 * dxz;
+  vec2 c = vec2(0.5 * dxx.y, -0.5 * dxx.x) + 0.5 * dzz;
+  return vec4(b.x, b.y, c.x, c.y);
+}

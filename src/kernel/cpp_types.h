@@ -40,6 +40,7 @@ using glm::inverse;
 using glm::inversesqrt;
 using glm::length;
 using glm::log;
+using glm::log2;
 using glm::max;
 using glm::min;
 using glm::mix;

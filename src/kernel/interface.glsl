@@ -85,6 +85,11 @@ struct Frame {
   // duration / W long, integrated exactly with K sub-intervals; the wave buffer's rotations
   // are those of the last window (t_k = end - (duration / W) (K - k) / K). 1 elsewhere.
   int windows;
+  // Lattice cascades shaded from their FFT fields (cascade_fields.glsl): how many, and the
+  // wave buffer texel where their headers start; 0: none (a cascade ocean's lattices are
+  // then among the waves, or the scene has none).
+  int cascade_count;
+  int cascade_base;
   int frame;   // the frame's index (for the sampling streams)
   uvec2 seed;  // the sampling seed, as a 64-bit word (rng.glsl)
 };

@@ -28,6 +28,7 @@
 #include "kernel/reflection_path.glsl"
 #include "kernel/reflection_footprint.glsl"
 #include "kernel/smooth_terms.glsl"
+#include "kernel/cascade_fields.glsl"
 #include "kernel/staa.glsl"
 #include "kernel/sampling.glsl"
 #include "kernel/reference_path.glsl"

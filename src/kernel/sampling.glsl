@@ -27,6 +27,9 @@ SG_FN vec4 sample_weights(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, r
   }
   if (!hit.hit) return miss_weights(f, d);
   vec2 g = water_gradient(waves, f, hit.point.x, hit.point.z, dt);
+  // Cascades shaded from their fields are sampled at the display time only (the host
+  // builds fields for `point` and `staa-temporal` alone, whose rays all have dt = 0).
+  if (f.cascade_count > 0) g += cascade_gradient(waves, f, f.segments, hit.point.x, hit.point.z);
   return water_weights(f, normal_direction(g), -d);
 }
 
@@ -113,6 +116,13 @@ SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) 
     g = path_gradients_moving(waves, f, v);
   } else {
     g = path_gradients(waves, f, fp.point);
+  }
+  // Cascades shaded from their fields: point-sampled at each instant's water point.
+  for (int k = 0; k <= f.segments; ++k) {
+    if (f.cascade_count > 0) {
+      vec2 at = v.moving ? v.point[k] : vec2(fp.point.x, fp.point.z);
+      g.g[k] += cascade_gradient(waves, f, k, at.x, at.y);
+    }
   }
   return with_sky_part(f, pw, i, j, temporal_shares_along(f, g, v).weights);
 }

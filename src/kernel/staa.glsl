@@ -235,6 +235,27 @@ SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) 
 }
 #endif
 
+// The lattice cascades' share (cascade_fields.glsl), after the pass over the waves: their
+// filtered slopes and curvatures in the path's gradients and Hessians, their sub-footprint
+// covariance in the aliasing NDF and, as the remainder's, in every smooth-terms cell; the
+// cells' means move by the display time's filtered slope (NDF-plane coordinates: minus).
+SG_FN void staa_cascades_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f,
+                             IN(StaaParams) p, IN(Footprint) fp, IN(PathViews) v) {
+  int side = staa_smooth_side(f, p);
+  for (int c = 0; c < f.cascade_count; ++c) {
+    CascadeShare s = cascade_staa_share(waves, f, p, fp, v, cascade_at(waves, f, c));
+    for (int k = 0; k <= f.segments; ++k) {
+      sums.path.g[k] += s.g[k];
+      sums.hess[k] += s.hess[k];
+    }
+    sums.ndf.cov += s.cov;
+    sums.remainder += s.cov;
+    sums.any_alias = sums.any_alias || s.cov.x + s.cov.z > 0.0;
+    for (int q = 0; q < side * side; ++q)
+      sums.cells.m[q].mean -= s.g[f.segments];
+  }
+}
+
 SG_FN StaaResult staa_result_miss() {
   StaaResult r;
   r.weights = vec4(0.0);
@@ -574,6 +595,7 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
   if (pw.share < 1.0 && q.footprint == 2) q.footprint = 1;
   PathViews v = path_views(f, fp, pw.centre.x, pw.centre.y);
   StaaSums sums = staa_wave_pass(waves, f, q, fp, v);
+  staa_cascades_add(sums, waves, f, q, fp, v);
   StaaResult r = staa_finish(table_f, table_s, tinfo, fits, finfo, f, q, fp, v, sums, path);
   r.weights = with_sky_part(f, pw, i, j, r.weights);
   return r;

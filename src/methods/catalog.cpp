@@ -62,13 +62,15 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                               StratifiedSettings{o.samples, o.samples.st == 1},
                                               o.precision, stratified_intersect_tolerance(o));
   }
-  if (name == "point") return std::make_unique<PointMethod>(o.precision, o.intersect_tolerance);
+  if (name == "point")
+    return std::make_unique<PointMethod>(o.precision, o.intersect_tolerance, o.cascade_fields);
   if (name == "staa-temporal") {
-    return std::make_unique<StaaTemporalMethod>(o.staa.segments, o.precision,
-                                                o.intersect_tolerance);
+    return std::make_unique<StaaTemporalMethod>(o.staa.segments, o.precision, o.intersect_tolerance,
+                                                o.cascade_fields);
   }
   if (name == "staa") {
-    return std::make_unique<StaaMethod>(o.staa, o.precision, o.intersect_tolerance);
+    return std::make_unique<StaaMethod>(o.staa, o.precision, o.intersect_tolerance,
+                                        o.cascade_fields);
   }
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);

@@ -13,12 +13,16 @@ class KernelFrameInputs {
   // Inputs with K = segments path sub-arcs, in `precision`, with the displaced
   // intersection's tolerance in pixels (shading/kernel_frame.h; 0: every wave).
   // `windows`: the reference's windows of the shutter (kernel/interface.glsl).
+  // `cascade_fields`: a scene's cascades as FFT fields where they apply
+  // (shading/kernel_frame.h), else as sines among the waves.
   KernelFrameInputs(int segments, Precision precision,
-                    double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1)
+                    double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1,
+                    bool cascade_fields = false)
       : precision_(precision),
         segments_(segments),
         windows_(windows),
-        intersect_tolerance_(intersect_tolerance) {}
+        intersect_tolerance_(intersect_tolerance),
+        cascade_fields_(cascade_fields) {}
   // Builds the inputs of ctx's frame.
   void build(const FrameContext& ctx);
   // Checks that the inputs are ctx's frame's, as the engine's begin_frame built them
@@ -37,6 +41,7 @@ class KernelFrameInputs {
   int segments_;
   int windows_;
   double intersect_tolerance_;
+  bool cascade_fields_;
   KernelInputsD d_;
   KernelInputsF f_;
   uint64_t model_ = 0;

@@ -58,7 +58,8 @@ extern template kf::StaaParams staa_kernel_params<kf::StaaParams>(const StaaOpti
 class StaaMethod final : public Method {
  public:
   explicit StaaMethod(const StaaOptions& o, Precision precision = Precision::float64,
-                      double intersect_tolerance = kDefaultIntersectTolerance);
+                      double intersect_tolerance = kDefaultIntersectTolerance,
+                      bool cascade_fields = true);
   std::string name() const override { return "staa"; }
   void begin_frame(const FrameContext& ctx) override;
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;

@@ -16,9 +16,10 @@ namespace fs = std::filesystem;
 
 namespace {
 // The revision of the methods computed outside the shading kernel (lean, taa, microspec,
-// specaa, bruneton, the exact footprint's host finish): raise it when a change alters
-// their pictures, so that the frame cache renders them again.
-constexpr int kHostMethodsRevision = 3;
+// specaa, bruneton, the exact footprint's host finish, the cascades' fields of
+// shading/cascade_fields.h): raise it when a change alters their pictures, so that the
+// frame cache renders them again.
+constexpr int kHostMethodsRevision = 4;
 }  // namespace
 
 std::string canonical_label(const std::string& label) {

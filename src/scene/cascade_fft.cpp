@@ -83,7 +83,7 @@ CascadeGrid CascadeFft::evaluate(const CascadeDesc& c, const Dispersion& water, 
   return evaluate(t);
 }
 
-CascadeGrid CascadeFft::evaluate(double t) {
+CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
   using cd = std::complex<double>;
   const int n = n_;
   const size_t count = static_cast<size_t>(n) * n;
@@ -96,6 +96,7 @@ CascadeGrid CascadeFft::evaluate(double t) {
   }
   a_.resize(count);
   b_.resize(count);
+  if (curvatures) c_.resize(count);
   const double dk = kTwoPi / patch_size_;
   for (int j = 0; j < n; ++j) {
     const int jm = (n - j) % n;
@@ -105,6 +106,7 @@ CascadeGrid CascadeFft::evaluate(double t) {
       const size_t m = static_cast<size_t>(jm) * n + static_cast<size_t>(im);
       if (z_[e] == cd(0.0) && z_[m] == cd(0.0)) {
         a_[e] = b_[e] = cd(0.0);
+        if (curvatures) c_[e] = cd(0.0);
         continue;
       }
       const kd::vec2 k(dk * lattice_frequency(i, n), dk * lattice_frequency(j, n));
@@ -113,10 +115,17 @@ CascadeGrid CascadeFft::evaluate(double t) {
                                              kd::vec2(z_[m].real(), z_[m].imag()), k, km);
       a_[e] = cd(s.x, s.y);
       b_[e] = cd(s.z, s.w);
+      if (curvatures) {
+        const kd::vec4 h = kd::cascade_curvature_spectra(
+            kd::vec2(z_[e].real(), z_[e].imag()), kd::vec2(z_[m].real(), z_[m].imag()), k, km);
+        b_[e] += cd(h.x, h.y);
+        c_[e] = cd(h.z, h.w);
+      }
     }
   }
   inverse_2d(a_);
   inverse_2d(b_);
+  if (curvatures) inverse_2d(c_);
   CascadeGrid g;
   g.n = n;
   g.patch_size = patch_size_;
@@ -128,6 +137,16 @@ CascadeGrid CascadeFft::evaluate(double t) {
     g.slope_x[e] = a_[e].real();
     g.height[e] = a_[e].imag();
     g.slope_z[e] = b_[e].real();
+  }
+  if (curvatures) {
+    g.curv_xx.resize(count);
+    g.curv_xz.resize(count);
+    g.curv_zz.resize(count);
+    for (size_t e = 0; e < count; ++e) {
+      g.curv_xx[e] = c_[e].real();
+      g.curv_xz[e] = b_[e].imag();
+      g.curv_zz[e] = c_[e].imag();
+    }
   }
   return g;
 }
@@ -147,6 +166,10 @@ std::vector<MomentLevel> moment_chain(const CascadeGrid& g) {
     l0.mxz[e] = g.slope_x[e] * g.slope_z[e];
     l0.mzz[e] = g.slope_z[e] * g.slope_z[e];
   }
+  l0.hxx = g.curv_xx;
+  l0.hxz = g.curv_xz;
+  l0.hzz = g.curv_zz;
+  const bool curvatures = !g.curv_xx.empty();
   levels.push_back(std::move(l0));
   while (levels.back().n > 1 && levels.back().n % 2 == 0) {
     const MomentLevel& f = levels.back();
@@ -155,6 +178,10 @@ std::vector<MomentLevel> moment_chain(const CascadeGrid& g) {
     const size_t cc = static_cast<size_t>(c.n) * c.n;
     for (auto* v : {&c.mx, &c.mz, &c.mxx, &c.mxz, &c.mzz})
       v->resize(cc);
+    if (curvatures) {
+      for (auto* v : {&c.hxx, &c.hxz, &c.hzz})
+        v->resize(cc);
+    }
     auto avg = [&](const std::vector<double>& src, std::vector<double>& dst) {
       for (int q = 0; q < c.n; ++q) {
         for (int p = 0; p < c.n; ++p) {
@@ -169,6 +196,11 @@ std::vector<MomentLevel> moment_chain(const CascadeGrid& g) {
     avg(f.mxx, c.mxx);
     avg(f.mxz, c.mxz);
     avg(f.mzz, c.mzz);
+    if (curvatures) {
+      avg(f.hxx, c.hxx);
+      avg(f.hxz, c.hxz);
+      avg(f.hzz, c.hzz);
+    }
     levels.push_back(std::move(c));
   }
   return levels;

@@ -40,6 +40,9 @@ struct CascadeGrid {
   double patch_size = 0;
   double time = 0;
   std::vector<double> height, slope_x, slope_z;
+  // The second derivatives d2h/dx2, d2h/dxdz, d2h/dz2 (evaluate with curvatures only;
+  // else empty).
+  std::vector<double> curv_xx, curv_xz, curv_zz;
 };
 
 class CascadeFft {
@@ -49,9 +52,12 @@ class CascadeFft {
   // Keeps the cascade's non-zero lattice points, their wave vectors and their frequencies
   // at `water`'s depth (its lattice must be n), for the evaluations that follow.
   void set_lattice(const CascadeDesc& c, const Dispersion& water);
-  // The height and slopes at time t of the lattice set last. The rows and columns of the
-  // transform run in parallel (oneTBB); one CascadeFft serves one caller at a time.
-  CascadeGrid evaluate(double t);
+  // The height and slopes at time t of the lattice set last, and with `curvatures` the
+  // second derivatives too (one more transform: IDFT[E(k_z Z) + i O(-k_x k_z Z)] carries
+  // dh/dz and d2h/dxdz, IDFT[O(-k_x^2 Z) + i O(-k_z^2 Z)] the other two;
+  // kernel/cascade_spectrum.glsl). The rows and columns of the transform run in parallel
+  // (oneTBB); one CascadeFft serves one caller at a time.
+  CascadeGrid evaluate(double t, bool curvatures = false);
   // set_lattice, then evaluate(t).
   CascadeGrid evaluate(const CascadeDesc& c, const Dispersion& water, double t);
   // The unnormalised inverse 2-D DFT of `data` (n x n, row q holds entries q * n + p), in
@@ -66,13 +72,16 @@ class CascadeFft {
   int n_;
   double patch_size_ = 0;
   std::vector<Point> points_;
-  std::vector<std::complex<double>> z_, a_, b_;  // scratch of evaluate
+  std::vector<std::complex<double>> z_, a_, b_, c_;  // scratch of evaluate
 };
 
 // One level of the moment chain: n x n texels of the slopes' mean and second moments.
 struct MomentLevel {
   int n = 0;
   std::vector<double> mx, mz, mxx, mxz, mzz;  // E[s_x], E[s_z], E[s_x^2], E[s_x s_z], E[s_z^2]
+  // The block means of the second derivatives (the box-filtered field's curvatures; when
+  // the grid has them, else empty).
+  std::vector<double> hxx, hxz, hzz;
 };
 
 // Levels 0 (the grid, n x n) to log2 n (one texel: the whole patch).

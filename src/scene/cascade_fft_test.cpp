@@ -10,33 +10,12 @@
 #include "math/rng.h"
 #include "scene/scene.h"
 #include "scene/waves.h"
+#include "testing/lattice.h"
 
 namespace sg {
 namespace {
 
-// Every lattice point non-zero (Nyquist rows and columns too), band the whole lattice.
-CascadeDesc full_cascade(int n, double patch, uint64_t seed) {
-  CascadeDesc c;
-  c.patch_size = patch;
-  c.lattice = n;
-  c.band_min = 0;
-  c.band_max = 1e9;
-  auto d = std::make_shared<LatticeData>();
-  d->n = n;
-  d->amplitude.resize(static_cast<size_t>(n) * n);
-  d->phase.resize(static_cast<size_t>(n) * n);
-  Pcg32 rng(seed, 9);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const size_t e = static_cast<size_t>(j) * n + i;
-      const double k = length(lattice_wave_vector(patch, n, i, j));
-      d->amplitude[e] = k > 0 ? 0.1 * rng.uniform() / k : 0.0;
-      d->phase[e] = kTwoPi * rng.uniform();
-    }
-  }
-  c.data = d;
-  return c;
-}
+using testing::full_cascade;
 
 TEST(CascadeFft, InverseTransformIsTheNaiveDft) {
   const int n = 8;
@@ -130,6 +109,50 @@ TEST(CascadeFft, GridIsTheDirectSumOfTheLatticesSines) {
     EXPECT_LT(worst_s, 1e-11 * slope_sum) << n;
     std::printf("lattice %d: max |FFT - direct| height %.3g (sum A %.3g), slope %.3g\n", n, worst_h,
                 amp_sum, worst_s);
+  }
+}
+
+// The curvatures (the third transform) against the direct sum of -A k_i k_j sin: a full
+// lattice, Nyquist rows included, where the mirror's factor k_m differs from -k.
+TEST(CascadeFft, CurvaturesAreTheDirectSum) {
+  for (int n : {8, 32}) {
+    const CascadeDesc c = full_cascade(n, 30, static_cast<uint64_t>(n) + 11);
+    const Dispersion water{};
+    const std::vector<Wave> waves = cascade_waves(c, water);
+    double bound = 0;
+    for (const Wave& w : waves)
+      bound += w.amplitude * dot(w.wave_vector, w.wave_vector);
+    CascadeFft fft(n);
+    const double t = 3.7;
+    const CascadeGrid g = fft.evaluate(c, water, t);
+    fft.set_lattice(c, water);
+    const CascadeGrid gc = fft.evaluate(t, true);
+    ASSERT_EQ(gc.curv_xx.size(), static_cast<size_t>(n * n));
+    EXPECT_TRUE(g.curv_xx.empty());
+    double worst = 0;
+    for (int q = 0; q < n; ++q) {
+      for (int p = 0; p < n; ++p) {
+        const double x = p * c.patch_size / n, z = q * c.patch_size / n;
+        double hxx = 0, hxz = 0, hzz = 0;
+        for (const Wave& w : waves) {
+          const vec2 k = w.wave_vector;
+          const double s =
+              w.amplitude * std::sin(k.x * x + k.y * z + w.angular_frequency * t + w.phase);
+          hxx -= s * k.x * k.x;
+          hxz -= s * k.x * k.y;
+          hzz -= s * k.y * k.y;
+        }
+        const size_t e = static_cast<size_t>(q) * n + p;
+        worst = std::max({worst, std::fabs(gc.curv_xx[e] - hxx), std::fabs(gc.curv_xz[e] - hxz),
+                          std::fabs(gc.curv_zz[e] - hzz)});
+        // The slopes are unchanged by the extra transform.
+        EXPECT_NEAR(gc.slope_z[e], g.slope_z[e], 1e-13 * bound);
+        EXPECT_NEAR(gc.slope_x[e], g.slope_x[e], 1e-13 * bound);
+      }
+    }
+    EXPECT_LT(worst, 1e-12 * bound) << n;
+    std::printf("lattice %d: max |FFT - direct| curvature %.3g (sum A k^2 %.3g)\n", n, worst,
+                bound);
   }
 }
 

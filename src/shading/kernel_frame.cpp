@@ -74,7 +74,7 @@ void fill_camera_keys(const CameraDesc& c, const FrameTime& ft, const vec3& orig
 
 template <class In>
 void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-           double intersect_tolerance, int windows, In& out) {
+           double intersect_tolerance, int windows, bool cascade_fields, In& out) {
   using Frame = decltype(out.frame);
   using R = decltype(out.frame.duration);
   using V3 = decltype(out.frame.light.L);
@@ -105,12 +105,16 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
   f.displaced = m.displaced();
   f.sky_gradient = m.scene.sky.gradient;
   f.sky_exponent = R(m.scene.sky.exponent);
-  const WaveField& w = m.waves;
+  const bool fields = cascade_fields && cascade_fields_apply(m);
+  if (fields && !out.cascades) out.cascades = std::make_shared<CascadeFields>();
+  const WaveField& w = fields ? out.cascades->explicit_waves(m) : m.waves;
   const int n = static_cast<int>(w.size());
   f.wave_count = n;
   f.wave_stride = wave_stride(segments);
-  f.amplitude_bound = R(w.amplitude_bound());
-  f.slope_bound = R(w.slope_bound());
+  f.amplitude_bound = R(w.amplitude_bound() + (fields ? out.cascades->amplitude_sum(m) : 0.0));
+  f.slope_bound = R(w.slope_bound() + (fields ? out.cascades->slope_sum(m) : 0.0));
+  f.cascade_count = 0;
+  f.cascade_base = 0;
   f.intersect_tolerance = R(intersect_tolerance);
   f.duration = R(ft.duration());
   f.segments = segments;
@@ -189,6 +193,11 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
     out.texels[base + 2 * q] = V4(R(sxx), R(sxz), R(szz), R(sA2));
     out.texels[base + 2 * q + 1] = V4(R(sA), R(pre_A[q]), R(pre_Ak[q]), R(pre_Ak2[q]));
   }
+  // The cascades' fields after the sums (kernel/cascade_fields.glsl).
+  if (fields) {
+    f.cascade_count = static_cast<int>(m.scene.surface.cascades.size());
+    f.cascade_base = out.cascades->append(m, ft, segments, xc, zc, out.texels);
+  }
 }
 
 }  // namespace
@@ -262,18 +271,22 @@ kd::Frame widen(const kf::Frame& f) {
   d.duration = f.duration;
   d.segments = f.segments;
   d.windows = f.windows;
+  d.cascade_count = f.cascade_count;
+  d.cascade_base = f.cascade_base;
   d.frame = f.frame;
   d.seed = f.seed;
   return d;
 }
 
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-                         KernelInputsD& out, double intersect_tolerance, int windows) {
-  build(m, ft, segments, seed, intersect_tolerance, windows, out);
+                         KernelInputsD& out, double intersect_tolerance, int windows,
+                         bool cascade_fields) {
+  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, out);
 }
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-                         KernelInputsF& out, double intersect_tolerance, int windows) {
-  build(m, ft, segments, seed, intersect_tolerance, windows, out);
+                         KernelInputsF& out, double intersect_tolerance, int windows,
+                         bool cascade_fields) {
+  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, out);
 }
 
 }  // namespace sg

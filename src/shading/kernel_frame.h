@@ -26,6 +26,7 @@
 #include "kernel/kernel_types.h"
 #include "scene/footprint.h"
 #include "scene/model.h"
+#include "shading/cascade_fields.h"
 
 namespace sg {
 
@@ -38,6 +39,9 @@ struct KernelInputs {
   // The same waves as arrays (the CPU engine's vectorised sums): amplitude, wave vector,
   // phase at the display time, angular frequency, slope amplitude; rotations [k][wave].
   std::vector<Real> A, a, b, theta0, c, slope, rot_c, rot_s;
+  // The cascades' fields' builder, kept from frame to frame (its FFTs' lattices), when
+  // the frames shade cascades from fields.
+  std::shared_ptr<CascadeFields> cascades;
   wave_simd::Arrays<Real> arrays() const {
     wave_simd::Arrays<Real> w;
     w.A = A.data();
@@ -80,13 +84,17 @@ inline constexpr double kDefaultIntersectTolerance = 0.25;
 // Builds the inputs of frame `ft` with K = `segments` path segments (1 to kMaxSegments),
 // the sampling `seed`, the displaced intersection's tolerance (pixels; 0: every wave) and
 // the reference's windows of the shutter (kernel/interface.glsl, Frame::windows; the
-// rotations are the last window's).
+// rotations are the last window's). `cascade_fields`: a scene's cascades go to the wave
+// buffer as FFT fields where cascade_fields_apply (shading/cascade_fields.h), else as
+// their lattice's sines among the waves.
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsD& out,
-                         double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1);
+                         double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1,
+                         bool cascade_fields = false);
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsF& out,
-                         double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1);
+                         double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1,
+                         bool cascade_fields = false);
 
 // The wave buffer of `in` for the kernel; `vectorised`: with the arrays, so that the CPU
 // engine's vectorised sums run (else the kernel's own loops, the definitions).

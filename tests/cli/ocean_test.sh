@@ -167,9 +167,22 @@ expect_rc "cascades info json" 0 '"significant_wave_height_m"' "$bin" info --jso
 expect_rc "expanded" 0 "(expanded into explicit waves)" "$bin" ocean -o "$work/lat/sea-x.json" \
   --cascades 2 --lattice 32 --wavelengths 0.5-1000 --template "$src/scripts/templates/plain.json" --expand
 [ ! -e "$work/lat/sea-x.cascade0.npy" ] && ok || bad "--expand wrote sidecars"
-"$bin" render "$work/lat/sea.json" -m staa --width 48 --height 27 -f 2 -o "$work/lat/l.pfm" >/dev/null 2>&1
+"$bin" render "$work/lat/sea.json" -m staa --cascades waves --width 48 --height 27 -f 2 -o "$work/lat/l.pfm" >/dev/null 2>&1
 "$bin" render "$work/lat/sea-x.json" -m staa --width 48 --height 27 -f 2 -o "$work/lat/x.pfm" >/dev/null 2>&1
-expect_rc "lattice and expanded render alike" 0 "max_abs  0" "$bin" diff "$work/lat/l.pfm" "$work/lat/x.pfm"
+expect_rc "lattice as waves and expanded render alike" 0 "max_abs  0" "$bin" diff "$work/lat/l.pfm" "$work/lat/x.pfm"
+# From the fields (the default): another picture of the same sea, not the sines'.
+"$bin" render "$work/lat/sea.json" -m staa --width 48 --height 27 -f 2 -o "$work/lat/f.pfm" >/dev/null 2>&1
+expect_rc "lattice from fields renders" 0 "max_abs" "$bin" diff "$work/lat/f.pfm" "$work/lat/x.pfm"
+# Against the reference (the exact sines): staa from the fields no worse than 1.25 times
+# staa over the sines (docs/ocean.md: 1.006 measured on this sea).
+"$bin" render "$work/lat/sea-x.json" -m reference --samples 4x4x2 --width 48 --height 27 -f 2 \
+  -o "$work/lat/r.pfm" >/dev/null 2>&1
+rf=$("$bin" diff "$work/lat/f.pfm" "$work/lat/r.pfm" | awk '$1 == "rmse" {print $2}')
+rx=$("$bin" diff "$work/lat/x.pfm" "$work/lat/r.pfm" | awk '$1 == "rmse" {print $2}')
+awk -v f="$rf" -v x="$rx" 'BEGIN {exit !(f > 0 && f <= 1.25 * x)}' && ok ||
+  bad "staa from fields: rmse $rf against the reference, over the sines $rx (bound 1.25x)"
+expect_rc "cascades flag named" 2 "--cascades: not a flag of method lean" "$bin" render "$work/lat/sea.json" -m lean --cascades fields \
+  --width 48 --height 27 -o "$work/lat/bad.pfm"
 expect_rc "web refuses cascades" 1 "surface.cascades: the page reads explicit waves only" \
   "$bin" web "$work/lat/sea.json" -o "$work/lat/web"
 cp "$work/lat/sea.json" "$work/lat/cut.json"

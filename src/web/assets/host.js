@@ -91,6 +91,7 @@ const SunglintHost = (() => {
       'frame.wave_count': n, 'frame.wave_stride': stride, 'frame.amplitude_bound': amplitudeBound,
       'frame.slope_bound': slopeBound, 'frame.intersect_tolerance': variant.intersect_tolerance,
       'frame.duration': duration, 'frame.segments': K, 'frame.windows': 1, 'frame.frame': frame,
+      'frame.cascade_count': 0, 'frame.cascade_base': 0, // the page refuses cascades
       'frame.seed': variant.seed,
     };
     for (let q = 0; q < 8; ++q) { // kMaxCameraKeys (kernel/interface.glsl), unused with count 0

@@ -1,0 +1,136 @@
+#include "shading/cascade_fields.h"
+
+#include <cmath>
+
+namespace sg {
+
+namespace {
+
+int log2_exact(int n) {
+  int l = 0;
+  while ((1 << l) < n)
+    ++l;
+  return l;
+}
+
+// Texels of one instant's chain (kernel/cascade_fields.glsl, cascade_instant_texels).
+size_t instant_texels(int n) {
+  return 2 * ((4 * static_cast<size_t>(n) * n - 1) / 3);
+}
+
+// The same lattice on a grid kCascadeOversampling times finer: each lattice point at its
+// own wave vector in the larger lattice (index m modulo the new size), the rest zero, so
+// that the inverse FFT samples the same surface more densely (a lattice's top octave,
+// sampled 2 to 4 times per period on its own grid, is 4 to 8 times on this one).
+CascadeDesc oversampled(const CascadeDesc& c) {
+  const int n = c.lattice, m = n * kCascadeOversampling;
+  CascadeDesc o = c;
+  o.lattice = m;
+  auto d = std::make_shared<LatticeData>();
+  d->n = m;
+  d->amplitude.assign(static_cast<size_t>(m) * m, 0.0);
+  d->phase.assign(static_cast<size_t>(m) * m, 0.0);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const int ii = (lattice_frequency(i, n) + m) % m, jj = (lattice_frequency(j, n) + m) % m;
+      const size_t e = static_cast<size_t>(j) * n + i, f = static_cast<size_t>(jj) * m + ii;
+      d->amplitude[f] = c.data->amplitude[e];
+      d->phase[f] = c.data->phase[e];
+    }
+  }
+  o.data = d;
+  return o;
+}
+
+}  // namespace
+
+void CascadeFields::prepare(const SceneModel& m) {
+  if (model_ == m.id && !ffts_.empty()) return;
+  const Dispersion water{m.scene.surface.depth};
+  ffts_.clear();
+  cov_.clear();
+  lattices_.clear();
+  explicit_ = WaveField(m.scene.surface.waves);
+  amplitude_sum_ = slope_sum_ = 0;
+  for (const CascadeDesc& c : m.scene.surface.cascades) {
+    const CascadeDesc padded = oversampled(c);
+    auto fft = std::make_unique<CascadeFft>(padded.lattice);
+    fft->set_lattice(padded, water);
+    lattices_.push_back(padded.lattice);
+    glm::dvec3 cov(0.0);
+    const int n = c.lattice;
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        const double a = c.data->amplitude[static_cast<size_t>(j) * n + i];
+        if (a == 0) continue;
+        const vec2 k = lattice_wave_vector(c.patch_size, n, i, j);
+        const double e = 0.5 * a * a;
+        amplitude_sum_ += a;
+        slope_sum_ += a * length(k);
+        cov += e * glm::dvec3(k.x * k.x, k.x * k.y, k.y * k.y);
+      }
+    }
+    ffts_.push_back(std::move(fft));
+    cov_.push_back(cov);
+  }
+  model_ = m.id;
+}
+
+template <class V4>
+int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int segments,
+                               double cam_x, double cam_z, std::vector<V4>& texels) {
+  using R = typename V4::value_type;
+  prepare(m);
+  const std::vector<CascadeDesc>& cs = m.scene.surface.cascades;
+  const int base = static_cast<int>(texels.size());
+  size_t total = 2 * cs.size();
+  for (int n : lattices_)
+    total += (segments + 1) * instant_texels(n);
+  texels.reserve(texels.size() + total);
+  for (size_t c = 0; c < cs.size(); ++c) {
+    const double L = cs[c].patch_size;
+    texels.push_back(V4(R(L), R(lattices_[c]), R(L * (cam_x / L - std::floor(cam_x / L))),
+                        R(L * (cam_z / L - std::floor(cam_z / L)))));
+    texels.push_back(V4(R(cov_[c].x), R(cov_[c].y), R(cov_[c].z), R(log2_exact(lattices_[c]) + 1)));
+  }
+  for (size_t c = 0; c < cs.size(); ++c) {
+    std::vector<MomentLevel> chain;
+    for (int k = 0; k <= segments; ++k) {
+      const double t = ft.end - ft.duration() * (segments - k) / segments;
+      // A zero shutter: every instant is the display time's.
+      if (k == 0 || ft.duration() > 0) chain = moment_chain(ffts_[c]->evaluate(t, true));
+      for (const MomentLevel& lv : chain) {
+        const size_t count = static_cast<size_t>(lv.n) * lv.n;
+        for (size_t e = 0; e < count; ++e) {
+          texels.push_back(V4(R(lv.mx[e]), R(lv.mz[e]), R(lv.hxx[e]), R(lv.hzz[e])));
+          texels.push_back(V4(R(lv.hxz[e]), R(lv.mxx[e]), R(lv.mxz[e]), R(lv.mzz[e])));
+        }
+      }
+    }
+  }
+  return base;
+}
+
+const WaveField& CascadeFields::explicit_waves(const SceneModel& m) {
+  prepare(m);
+  return explicit_;
+}
+double CascadeFields::amplitude_sum(const SceneModel& m) {
+  prepare(m);
+  return amplitude_sum_;
+}
+double CascadeFields::slope_sum(const SceneModel& m) {
+  prepare(m);
+  return slope_sum_;
+}
+
+int CascadeFields::append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
+                          double cam_z, std::vector<glm::dvec4>& texels) {
+  return append_impl(m, ft, segments, cam_x, cam_z, texels);
+}
+int CascadeFields::append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
+                          double cam_z, std::vector<glm::vec4>& texels) {
+  return append_impl(m, ft, segments, cam_x, cam_z, texels);
+}
+
+}  // namespace sg

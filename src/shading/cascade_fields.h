@@ -1,0 +1,63 @@
+// The lattice cascades' FFT fields for the shading kernel (kernel/cascade_fields.glsl):
+// per frame, each cascade transformed at the path's K + 1 instants (scene/cascade_fft.h,
+// slopes and second derivatives), its LEAN chain built (means of s, s s^T and the
+// curvatures over aligned 2^l blocks), and all of it appended to the wave buffer after the
+// waves' sums, with a two-texel header per cascade. The per-pixel cost is then a few
+// fetches per cascade whatever its waves (docs/ocean.md, "Shading from the cascades").
+//
+// Which methods read them: `point`, `staa-temporal` and `staa` (CPU engine), on flat
+// water. Elsewhere (displaced water, the sampling methods whose rays take other times, the
+// baselines, the GL engine) the cascades are their lattice sines among the waves, exactly,
+// at a cost that follows the waves.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "scene/cascade_fft.h"
+#include "scene/model.h"
+
+namespace sg {
+
+// The fields' grid: kCascadeOversampling^2 times the lattice's points (a zero-padded
+// spectrum), so that the cubic interpolation between them follows the lattice's top
+// octave (docs/ocean.md: the error measured with 1 and 2).
+inline constexpr int kCascadeOversampling = 2;
+
+class CascadeFields {
+ public:
+  // Appends frame ft's fields (K = segments path sub-arcs, the instants
+  // t_k = end - duration (K - k) / K) to `texels` for a camera at world (cam_x, cam_z); the
+  // first appended texel's index is returned (Frame.cascade_base). The FFTs' lattices are
+  // set once per scene model.
+  int append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x, double cam_z,
+             std::vector<glm::dvec4>& texels);
+  int append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x, double cam_z,
+             std::vector<glm::vec4>& texels);
+  // The scene's explicit waves alone (the wave buffer's, when the cascades are fields).
+  const WaveField& explicit_waves(const SceneModel& m);
+  // The cascades' sum A and sum A |k| (what the frame's bounds add for them).
+  double amplitude_sum(const SceneModel& m);
+  double slope_sum(const SceneModel& m);
+
+ private:
+  template <class V4>
+  int append_impl(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
+                  double cam_z, std::vector<V4>& texels);
+  void prepare(const SceneModel& m);
+
+  uint64_t model_ = 0;
+  std::vector<std::unique_ptr<CascadeFft>> ffts_;
+  std::vector<int> lattices_;    // each field's grid side (the lattice's, oversampled)
+  std::vector<glm::dvec3> cov_;  // each cascade's sum A^2 / 2 k k^T (xx, xz, zz)
+  WaveField explicit_;
+  double amplitude_sum_ = 0, slope_sum_ = 0;
+};
+
+// Whether a frame of `m` shades its cascades from fields: it has cascades and flat water.
+inline bool cascade_fields_apply(const SceneModel& m) {
+  return !m.scene.surface.cascades.empty() && !m.displaced();
+}
+
+}  // namespace sg
