@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The pictures: a `staa` picture and a short video of each of the three picture scenes
-# (scenes/sunset.json, scenes/moonlit.json, scenes/midday.json, format sunglint-scene/2),
+# (scenes/sunset.json, scenes/moonlit.json, scenes/midday.json, format sunglint-scene/2)
+# and of a generated sea of four FFT cascades (out/scenes/ocean-cascades.json, format /3),
 # through the display pipeline (`render --display`: exposure, glare, filmic curve), then
 # the README's section between <!-- pictures:begin --> and <!-- pictures:end --> and
 # docs/pictures.md rewritten to show them. Nothing in them is edited by hand.
@@ -64,20 +65,26 @@ scenes=(
   "sunset|0|A sunset glitter path under a visible sun low over the sea (sun 3 degrees up, warm light, zenith-to-horizon sky)"
   "moonlit|3|A moonlit sea: a dim bluish sky and a small bright moon 9 degrees up (3 stops of exposure)"
   "midday|0|Glitter under a high midday sun (65 degrees up, above the frame) on short waves, the water blue with the reflected sky"
+  "ocean-cascades|0|A sea as engines make it: four 128 x 128 FFT cascades of a 10 m/s JONSWAP sea (65,536 lattice points; written by \`sunglint ocean --cascades 4 --lattice 128 --wind-speed 10 --seed 1\` into out/scenes/), shaded from the cascades' FFT fields"
 )
+# The cascaded sea is generated (its sidecars are not kept in the repository).
+mkdir -p out/scenes
+"$bin" ocean -o out/scenes/ocean-cascades.json --cascades 4 --lattice 128 --wind-speed 10 --seed 1 >/dev/null
+scene_file() { [ -f "scenes/$1.json" ] && echo "scenes/$1.json" || echo "out/scenes/$1.json"; }
 mkdir -p docs/img/pictures docs/video
 section=$(mktemp) page=$(mktemp)
 trap 'rm -f "$section" "$page"' EXIT
 for entry in "${scenes[@]}"; do
   IFS='|' read -r name exposure caption <<<"$entry"
-  "$bin" render "scenes/$name.json" -m staa --frame 0 --display --exposure "$exposure" -q \
+  file=$(scene_file "$name")
+  "$bin" render "$file" -m staa --frame 0 --display --exposure "$exposure" -q \
     -o "docs/img/pictures/$name.png"
-  "$bin" render "scenes/$name.json" -m staa --frames "$frames" --exposure "$exposure" -q \
+  "$bin" render "$file" -m staa --frames "$frames" --exposure "$exposure" -q \
     --video "docs/video/$name.mp4"
-  printf '![%s: staa](docs/img/pictures/%s.png)\n\n*%s. `sunglint render scenes/%s.json -m staa --display --exposure %s`; video: [docs/video/%s.mp4](docs/video/%s.mp4) (frames %s).*\n\n' \
-    "$name" "$name" "$caption" "$name" "$exposure" "$name" "$name" "$frames" >>"$section"
-  printf '## %s\n\n![%s: staa](img/pictures/%s.png)\n\n%s.\n\n    sunglint render scenes/%s.json -m staa --frame 0 --display --exposure %s -o %s.png\n    sunglint render scenes/%s.json -m staa --frames %s --exposure %s --video %s.mp4\n\nVideo: [video/%s.mp4](video/%s.mp4).\n\n' \
-    "$name" "$name" "$name" "$caption" "$name" "$exposure" "$name" "$name" "$frames" "$exposure" \
+  printf '![%s: staa](docs/img/pictures/%s.png)\n\n*%s. `sunglint render %s -m staa --display --exposure %s`; video: [docs/video/%s.mp4](docs/video/%s.mp4) (frames %s).*\n\n' \
+    "$name" "$name" "$caption" "$file" "$exposure" "$name" "$name" "$frames" >>"$section"
+  printf '## %s\n\n![%s: staa](img/pictures/%s.png)\n\n%s.\n\n    sunglint render %s -m staa --frame 0 --display --exposure %s -o %s.png\n    sunglint render %s -m staa --frames %s --exposure %s --video %s.mp4\n\nVideo: [video/%s.mp4](video/%s.mp4).\n\n' \
+    "$name" "$name" "$name" "$caption" "$file" "$exposure" "$name" "$file" "$frames" "$exposure" \
     "$name" "$name" "$name" >>"$page"
 done
 seconds=$(($(date +%s) - start))

@@ -472,11 +472,13 @@ void run_compare(const CompareArgs& a) {
   if (a.slurm.submit) return submit_study(a, c);
 
   // The live page of the study's scenes at its size (docs/web.md), which the report links:
-  // the scenes with a fixed camera (the page renders no other); none, no page.
+  // the scenes with a fixed camera and explicit waves (the page renders no other); none,
+  // no page.
   web::WebPageOptions live;
   live.out_dir = (std::filesystem::path(a.out) / "web").string();
   for (const auto& s : c.scenes) {
-    if (!s.scene.camera.moving()) live.scenes.push_back({s.file, s.scene.width, s.scene.height});
+    if (!s.scene.camera.moving() && s.scene.surface.cascades.empty())
+      live.scenes.push_back({s.file, s.scene.width, s.scene.height});
   }
 
   ProgressBar bar("compare", !a.quiet);
@@ -510,7 +512,7 @@ void run_compare(const CompareArgs& a) {
   }
   std::printf("report: %s/index.html (results.json, results.csv, results.md beside it)\n",
               a.out.c_str());
-  std::printf("live page: %s/index.html\n", live.out_dir.c_str());
+  if (!live.scenes.empty()) std::printf("live page: %s/index.html\n", live.out_dir.c_str());
 }
 
 }  // namespace

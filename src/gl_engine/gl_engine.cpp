@@ -48,6 +48,8 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   validate(o);
   GlVariant v;
   v.intersect_tolerance = o.intersect_tolerance;
+  v.cascade_fields =
+      o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa");
   if (method == "point") {
     v.entry = KernelEntry::point;
   } else if (method == "reference") {
@@ -130,7 +132,7 @@ void GlEngine::upload(const FrameContext& ctx) {
                                        : ReferenceTimeSplit{v_.segments, 1};
   const int segments = split.segments;
   build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance,
-                      split.windows);
+                      split.windows, v_.cascade_fields);
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);

@@ -41,6 +41,9 @@ struct GlVariant {
   kf::ReferenceParams reference{};  // `reference`: segments is the cap, each frame picks K
   kf::StaaParams params{};
   double intersect_tolerance = 0;  // --intersect-tolerance (shading/kernel_frame.h)
+  // --cascades fields: point, staa-temporal and staa read a scene's cascades from their
+  // FFT fields in the wave buffer (shading/cascade_fields.h, built on the host).
+  bool cascade_fields = false;
 };
 GlVariant gl_variant(const std::string& method, const MethodOptions& options);
 

@@ -14,6 +14,7 @@
 #include "gl_engine/kernel_program.h"
 #include "gl_engine/uniforms.h"
 #include "metrics/metrics.h"
+#include "ocean/lattice_ocean.h"
 #include "scene/camera_path.h"
 #include "testing/gl_context.h"
 #include "testing/testing.h"
@@ -230,6 +231,53 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineUnderAMovingCamera) {
         name.c_str(), o.staa.segments, gl_cpu, cpu_ref, motion);
     EXPECT_LE(gl_cpu, 0.1 * cpu_ref) << name;
     EXPECT_LE(10 * gl_cpu, motion) << name;
+  }
+}
+
+TEST_F(GlEngineTest, CascadeFieldsMatchTheCpuEngine) {
+  // A generated two-cascade sea of 32 x 32 lattices (wind 8 m/s) under the shared scenes'
+  // camera and light, Schlick's Fresnel and a sky gradient, 160x90, frames 0-1: point,
+  // staa-temporal and staa read the cascades
+  // from their FFT fields in the wave buffer (kernel/cascade_fields.glsl) on both engines;
+  // GL against the CPU in float within a tenth of what the fields change against the
+  // cascades' sines (the CPU's --cascades waves image). Were the GL engine to read no field
+  // (the lattices neither as fields nor as waves), its image would miss the sea's glints
+  // and the bound would fail.
+  ocean::OceanParams p;
+  p.wind_speed = 8;
+  p.seed = 5;
+  ocean::CascadeParams c;
+  c.cascades = 2;
+  c.lattice = 32;
+  c.patch_sizes = {20, 10};
+  Scene s = testing::project_scene("smooth");
+  s.surface.waves.clear();
+  s.surface.cascades = ocean::generate_lattice(p, c).cascades;
+  // Schlick's Fresnel and a sky gradient: every pixel's value follows its normal.
+  s.surface.fresnel = FresnelMode::schlick;
+  s.sky = SkyDesc{Rgb(0.02), Rgb(0.1), 0.5, true};
+  set_image_size(s, 160, 90);
+  const SceneModel m(s);
+  for (const std::string name : {"point", "staa-temporal", "staa"}) {
+    MethodOptions of;
+    of.precision = Precision::float32;
+    MethodOptions waves = of;
+    waves.cascade_fields = false;
+    const std::vector<Image> cpu = render(m, *make_method_on(Engine::cpu, name, of), 0, 1);
+    const std::vector<Image> sines = render(m, *make_method_on(Engine::cpu, name, waves), 0, 1);
+    const std::vector<Image> gl =
+        render(m, *make_method_on(Engine::gl, name, MethodOptions{}), 0, 1);
+    const double gl_cpu = compare_sequences(gl, cpu).rmse,
+                 fields = compare_sequences(cpu, sines).rmse;
+    double sum = 0;
+    for (const Image& im : cpu)
+      for (float v : im.data)
+        sum += v;
+    std::printf("cascades %-14s RMSE(GL - CPU float) %.3g, CPU fields - sines %.3g, sum %.3g\n",
+                name.c_str(), gl_cpu, fields, sum);
+    EXPECT_GT(sum, 0) << name;
+    EXPECT_GT(fields, 0) << name;
+    EXPECT_LE(gl_cpu, 0.1 * fields) << name;
   }
 }
 

@@ -84,16 +84,17 @@ SG_FN void cascade_texel_add(INOUT(CascadeTexel) acc, IN(CascadeTexel) t, real w
   acc.b += w * t.b;
 }
 
-// Texel (x, y) of level l at instant k, the indices wrapped to the level's n_l x n_l.
-SG_FN CascadeTexel cascade_texel(IN(WaveBuffer) waves, IN(Cascade) c, int k, int l, int x, int y) {
+// Texel (x, y) of level l at instant k, the indices wrapped to the level's n_l x n_l (a
+// power of two: the two's-complement mask is the modulo); `moments`: with its second
+// texel (else b = 0: the slope and h_xx, h_zz alone).
+SG_FN CascadeTexel cascade_texel(IN(WaveBuffer) waves, IN(Cascade) c, int k, int l, int x, int y,
+                                 bool moments) {
   int nl = c.n >> l;
-  int xi = x - nl * int(floor(real(x) / real(nl)));
-  int yi = y - nl * int(floor(real(y) / real(nl)));
   int i = c.data + k * cascade_instant_texels(c.n) + cascade_level_offset(c.n, l) +
-          2 * (yi * nl + xi);
+          2 * ((y & (nl - 1)) * nl + (x & (nl - 1)));
   CascadeTexel t;
   t.a = wave_texel(waves, i);
-  t.b = wave_texel(waves, i + 1);
+  t.b = moments ? wave_texel(waves, i + 1) : vec4(0.0);
   return t;
 }
 
@@ -106,7 +107,8 @@ SG_FN vec2 cascade_grid_coord(IN(Cascade) c, vec2 xz) {
 
 // Level l >= 1 at grid coordinate u, bilinearly (texel i's centre is sample
 // i 2^l + (2^l - 1) / 2).
-SG_FN CascadeTexel cascade_bilinear(IN(WaveBuffer) waves, IN(Cascade) c, int k, int l, vec2 u) {
+SG_FN CascadeTexel cascade_bilinear(IN(WaveBuffer) waves, IN(Cascade) c, int k, int l, vec2 u,
+                                    bool moments) {
   real s = real(1 << l);
   vec2 t = (u - 0.5 * (s - 1.0)) / s;
   vec2 i0 = floor(t);
@@ -114,10 +116,10 @@ SG_FN CascadeTexel cascade_bilinear(IN(WaveBuffer) waves, IN(Cascade) c, int k, 
   int x = int(i0.x);
   int y = int(i0.y);
   CascadeTexel r = cascade_texel_zero();
-  cascade_texel_add(r, cascade_texel(waves, c, k, l, x, y), (1.0 - w.x) * (1.0 - w.y));
-  cascade_texel_add(r, cascade_texel(waves, c, k, l, x + 1, y), w.x * (1.0 - w.y));
-  cascade_texel_add(r, cascade_texel(waves, c, k, l, x, y + 1), (1.0 - w.x) * w.y);
-  cascade_texel_add(r, cascade_texel(waves, c, k, l, x + 1, y + 1), w.x * w.y);
+  cascade_texel_add(r, cascade_texel(waves, c, k, l, x, y, moments), (1.0 - w.x) * (1.0 - w.y));
+  cascade_texel_add(r, cascade_texel(waves, c, k, l, x + 1, y, moments), w.x * (1.0 - w.y));
+  cascade_texel_add(r, cascade_texel(waves, c, k, l, x, y + 1, moments), (1.0 - w.x) * w.y);
+  cascade_texel_add(r, cascade_texel(waves, c, k, l, x + 1, y + 1, moments), w.x * w.y);
   return r;
 }
 
@@ -130,7 +132,8 @@ SG_FN vec4 catmull_rom_weights(real t) {
 }
 
 // Level 0 at grid coordinate u, by Catmull-Rom's bicubic (16 texels).
-SG_FN CascadeTexel cascade_bicubic(IN(WaveBuffer) waves, IN(Cascade) c, int k, vec2 u) {
+SG_FN CascadeTexel cascade_bicubic(IN(WaveBuffer) waves, IN(Cascade) c, int k, vec2 u,
+                                   bool moments) {
   vec2 i0 = floor(u);
   vec4 wx = catmull_rom_weights(u.x - i0.x);
   vec4 wy = catmull_rom_weights(u.y - i0.y);
@@ -139,7 +142,8 @@ SG_FN CascadeTexel cascade_bicubic(IN(WaveBuffer) waves, IN(Cascade) c, int k, v
   CascadeTexel r = cascade_texel_zero();
   for (int b = 0; b < 4; ++b) {
     for (int a = 0; a < 4; ++a) {
-      cascade_texel_add(r, cascade_texel(waves, c, k, 0, x + a - 1, y + b - 1), wx[a] * wy[b]);
+      cascade_texel_add(r, cascade_texel(waves, c, k, 0, x + a - 1, y + b - 1, moments),
+                        wx[a] * wy[b]);
     }
   }
   return r;
@@ -147,20 +151,21 @@ SG_FN CascadeTexel cascade_bicubic(IN(WaveBuffer) waves, IN(Cascade) c, int k, v
 
 // The chain at fractional level `level` (0 to levels - 1) and grid coordinate u: the two
 // levels about it blended.
-SG_FN CascadeTexel cascade_filtered(IN(WaveBuffer) waves, IN(Cascade) c, int k, real level, vec2 u) {
+SG_FN CascadeTexel cascade_filtered(IN(WaveBuffer) waves, IN(Cascade) c, int k, real level, vec2 u,
+                                    bool moments) {
   int l0 = int(floor(level));
   real t = level - real(l0);
   CascadeTexel r;
   if (l0 == 0) {
-    r = cascade_bicubic(waves, c, k, u);
+    r = cascade_bicubic(waves, c, k, u, moments);
     // A grid point has no spread of its own: level 0's second moments are its mean's
     // square (an interpolated s s^T would add the blend's spread between samples).
     r.b = vec4(r.b.x, r.a.x * r.a.x, r.a.x * r.a.y, r.a.y * r.a.y);
   } else {
-    r = cascade_bilinear(waves, c, k, l0, u);
+    r = cascade_bilinear(waves, c, k, l0, u, moments);
   }
   if (t > 0.0 && l0 + 1 < c.levels) {
-    CascadeTexel r1 = cascade_bilinear(waves, c, k, l0 + 1, u);
+    CascadeTexel r1 = cascade_bilinear(waves, c, k, l0 + 1, u, moments);
     r.a = mix(r.a, r1.a, t);
     r.b = mix(r.b, r1.b, t);
   }
@@ -173,15 +178,17 @@ SG_FN vec2 cascade_gradient(IN(WaveBuffer) waves, IN(Frame) f, int k, real x, re
   vec2 g = vec2(0.0);
   for (int c = 0; c < f.cascade_count; ++c) {
     Cascade cc = cascade_at(waves, f, c);
-    vec4 a = cascade_bicubic(waves, cc, k, cascade_grid_coord(cc, vec2(x, z))).a;
+    vec4 a = cascade_bicubic(waves, cc, k, cascade_grid_coord(cc, vec2(x, z)), false).a;
     g += vec2(a.x, a.y);
   }
   return g;
 }
 
 // What the cascades give a `staa` pixel (kernel/staa.glsl, StaaSums): at each instant
-// the filtered mean slope (the resolved gradient) and the filtered curvature (the resolved
-// Hessian, for the pixel-footprint term); at the display time the slopes' covariance over
+// the filtered mean slope (the resolved gradient); the filtered curvature (the resolved
+// Hessian, for the pixel-footprint term) the display time's at every instant (one texel
+// per fetch at the other instants, as a moving camera holds the waves' Hessians); at the
+// display time the slopes' covariance over
 // the filter's boxes (the aliasing NDF, Eq. 3's role), less what the resolved curvature
 // spreads across the boxes (the footprint term's role: H Sigma_box H^T), clamped to be
 // positive semi-definite.
@@ -230,25 +237,27 @@ SG_FN CascadeShare cascade_staa_share(IN(WaveBuffer) waves, IN(Frame) f, IN(Staa
   CascadeTexel now = cascade_texel_zero();
   for (int k = K; k >= 0; --k) {
     vec2 centre = v.moving ? v.point[k] : vec2(fp.point.x, fp.point.z);
-    if (v.moving && k < K) {
-      s.hess[k] = s.hess[K];
-    }
     CascadeTexel acc = cascade_texel_zero();
     for (int q = 0; q < taps; ++q) {
       vec2 at = centre + ((real(q) + 0.5) * inv_taps - 0.5) * major * axis;
-      cascade_texel_add(acc, cascade_filtered(waves, c, k, level, cascade_grid_coord(c, at)),
-                        inv_taps);
+      cascade_texel_add(
+          acc, cascade_filtered(waves, c, k, level, cascade_grid_coord(c, at), k == K), inv_taps);
     }
     s.g[k] = vec2(acc.a.x, acc.a.y);
-    if (!(v.moving && k < K)) s.hess[k] = vec3(acc.a.z, acc.b.x, acc.a.w);
-    if (k == K) now = acc;
+    if (k == K) {
+      now = acc;
+      s.hess[k] = vec3(acc.a.z, acc.b.x, acc.a.w);
+    } else {
+      s.hess[k] = s.hess[K];
+    }
   }
   // The covariance over the boxes, less the resolved curvature's spread over them (the
   // boxes' positions: w^2 / 12 across, the taps' span along the axis).
   vec2 g = s.g[K];
   mat2 m2 = sym2(vec3(now.b.y, now.b.z, now.b.w)) - outerProduct(g, g);
   real along = max(major, w);
-  mat2 box = (w * w / 12.0) * mat2(1.0) + ((along * along - w * w) / 12.0) * outerProduct(axis, axis);
+  mat2 box =
+      (w * w / 12.0) * mat2(1.0) + ((along * along - w * w) / 12.0) * outerProduct(axis, axis);
   mat2 H = sym2(s.hess[K]);
   m2 -= H * box * H;
   // Clamped to positive semi-definite (the cubic's overshoot and the subtraction).

@@ -156,12 +156,11 @@ TEST(CascadeFields, ChainSecondMomentsAverageToTheSlopeVariance) {
       const int g = cc.n;
       for (int q = 0; q < g; ++q) {
         for (int p = 0; p < g; ++p) {
-          const vec2 s = direct_gradient(cw, p * d.patch_size / g,
-                                         q * d.patch_size / g, ft.end);
+          const vec2 s = direct_gradient(cw, p * d.patch_size / g, q * d.patch_size / g, ft.end);
           top += dot(s, s) / (g * g);
         }
       }
-      const kd::CascadeTexel t = kd::cascade_filtered(b, cc, 1, cc.levels - 1, kd::vec2(0.0));
+      const kd::CascadeTexel t = kd::cascade_filtered(b, cc, 1, cc.levels - 1, kd::vec2(0.0), true);
       EXPECT_NEAR(t.b.y + t.b.w, top, 1e-9 * top) << "cascade " << c;
     }
     for (double level : {1.0, 2.5, 4.0, 5.0}) {
@@ -172,7 +171,7 @@ TEST(CascadeFields, ChainSecondMomentsAverageToTheSlopeVariance) {
       for (int q = 0; q < g; ++q) {
         for (int p = 0; p < g; ++p) {
           const kd::vec2 u((p + 0.5) * cc.n / g, (q + 0.5) * cc.n / g);
-          const kd::CascadeTexel t = kd::cascade_filtered(b, cc, 1, level, u);
+          const kd::CascadeTexel t = kd::cascade_filtered(b, cc, 1, level, u, true);
           tr += (t.b.y + t.b.w) / (g * g);
         }
       }
@@ -213,15 +212,16 @@ TEST(CascadeFields, StaaShareLimits) {
     const kd::Cascade cc = kd::cascade_at(b, in.frame, c);
     // Wider than the patch: all of it aliases.
     const kd::Footprint wide = footprint_of(3, 7, 2 * cc.size);
-    const kd::CascadeShare sw =
-        kd::cascade_staa_share(b, in.frame, p, wide, kd::path_views_fixed(wide.point, wide.view), cc);
+    const kd::CascadeShare sw = kd::cascade_staa_share(
+        b, in.frame, p, wide, kd::path_views_fixed(wide.point, wide.view), cc);
     EXPECT_EQ(sw.cov, cc.cov);
     EXPECT_EQ(sw.g[1], kd::vec2(0.0));
     // Far below a texel: the point sample, and no covariance (a grid point has no spread).
     const kd::Footprint tiny = footprint_of(3, 7, 1e-5 * cc.size / cc.n);
-    const kd::CascadeShare st =
-        kd::cascade_staa_share(b, in.frame, p, tiny, kd::path_views_fixed(tiny.point, tiny.view), cc);
-    const kd::vec4 a = kd::cascade_bicubic(b, cc, 1, kd::cascade_grid_coord(cc, kd::vec2(3, 7))).a;
+    const kd::CascadeShare st = kd::cascade_staa_share(
+        b, in.frame, p, tiny, kd::path_views_fixed(tiny.point, tiny.view), cc);
+    const kd::vec4 a =
+        kd::cascade_bicubic(b, cc, 1, kd::cascade_grid_coord(cc, kd::vec2(3, 7)), false).a;
     EXPECT_NEAR(st.g[1].x, a.x, 1e-14);
     EXPECT_NEAR(st.g[1].y, a.y, 1e-14);
     EXPECT_LT(st.cov.x + st.cov.z, 1e-12 * (cc.cov.x + cc.cov.z));

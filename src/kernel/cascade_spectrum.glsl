@@ -41,3 +41,12 @@ SG_FN vec4 cascade_curvature_spectra(vec2 z, vec2 z_mirror, vec2 k, vec2 k_mirro
   vec2 c = vec2(0.5 * dxx.y, -0.5 * dxx.x) + 0.5 * dzz;
   return vec4(b.x, b.y, c.x, c.y);
 }
+
+// The slopes' spectrum alone, E(k_x Z) + i E(k_z Z), whose inverse FFT is dh/dx + i dh/dz:
+// one transform where a path instant needs the slope only.
+SG_FN vec2 cascade_slope_spectrum(vec2 z, vec2 z_mirror, vec2 k, vec2 k_mirror) {
+  vec2 zc = vec2(z_mirror.x, -z_mirror.y);
+  vec2 ex = 0.5 * (k.x * z + k_mirror.x * zc);
+  vec2 ez = 0.5 * (k.y * z + k_mirror.y * zc);
+  return vec2(ex.x - ez.y, ex.y + ez.x);
+}

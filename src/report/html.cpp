@@ -238,8 +238,8 @@ std::string scene_section(const SceneResult& sc, const StudyResults& r) {
   if (sc.moving_camera)
     o << "<p class=\"camera\">" << html_escape(camera_motion_sentence(sc)) << "</p>\n";
   // The live page `compare` writes beside the report (web/web_page.h, docs/web.md); it
-  // renders fixed cameras only.
-  if (!sc.moving_camera) {
+  // renders fixed cameras and explicit waves only.
+  if (!sc.moving_camera && !sc.cascades) {
     o << "<p class=\"live\"><a href=\"web/index.html?scene=" << html_escape(url_escape(sc.name))
       << "&amp;method=staa&amp;split=point\">" << html_escape(sc.name)
       << " live in the browser</a>: staa | point, the kernel as WebGL 2 shaders (sunglint "

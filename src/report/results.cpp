@@ -224,6 +224,7 @@ std::string results_to_json(const StudyResults& r) {
                            {"split_distance", number(sc.split_distance)},
                            {"channels", sc.channels},
                            {"moving_camera", sc.moving_camera},
+                           {"cascades", sc.cascades},
                            {"camera_speed", number(sc.camera_speed)},
                            {"camera_turn_deg", number(sc.camera_turn_deg)},
                            {"near_crop", to_json(sc.near_crop)},
@@ -279,6 +280,7 @@ StudyResults results_from_json(const std::string& text, const std::string& name)
       sc.split_distance = number(sj.at("split_distance"));
       sc.channels = sj.value("channels", 1);
       sc.moving_camera = sj.value("moving_camera", false);  // absent before format /3
+      sc.cascades = sj.value("cascades", false);            // absent before cascades
       if (sj.contains("camera_speed")) sc.camera_speed = number(sj.at("camera_speed"));
       if (sj.contains("camera_turn_deg")) sc.camera_turn_deg = number(sj.at("camera_turn_deg"));
       sc.near_crop = crop_from_json(sj.at("near_crop"));

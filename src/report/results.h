@@ -105,6 +105,9 @@ struct SceneResult {
   // regions are those of the first frame's camera.
   bool moving_camera = false;
   double camera_speed = 0, camera_turn_deg = 0;
+  // The surface holds lattice cascades (format /3): the live page, which reads explicit
+  // waves only, does not show the scene.
+  bool cascades = false;
   CropBox near_crop, far_crop;
   double error_range = 0;  // |difference| at the ends of the error maps' colour scale
   VariantResult reference;

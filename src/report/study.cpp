@@ -557,6 +557,7 @@ SceneResult Study::run_scene(int scene_index, const std::string& scene_slug) {
   r.name = scene.name;
   r.file = sc.file;
   r.shown_frame = c_.last_frame;
+  r.cascades = !scene.surface.cascades.empty();
   // The water regions of the first frame (of its camera, for a moving one); the camera's
   // motion over the frames studied (the report states it).
   const FrameTime first = frame_time(scene, c_.first_frame);

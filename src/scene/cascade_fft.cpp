@@ -151,6 +151,48 @@ CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
   return g;
 }
 
+CascadeGrid CascadeFft::evaluate_slopes(double t) {
+  using cd = std::complex<double>;
+  const int n = n_;
+  const size_t count = static_cast<size_t>(n) * n;
+  z_.assign(count, cd(0.0));
+  for (const Point& p : points_) {
+    const kd::vec2 z = kd::cascade_z(p.amplitude, p.omega * t + p.phase);
+    z_[p.index] = cd(z.x, z.y);
+  }
+  a_.resize(count);
+  const double dk = kTwoPi / patch_size_;
+  for (int j = 0; j < n; ++j) {
+    const int jm = (n - j) % n;
+    for (int i = 0; i < n; ++i) {
+      const size_t e = static_cast<size_t>(j) * n + i;
+      const int im = (n - i) % n;
+      const size_t m = static_cast<size_t>(jm) * n + static_cast<size_t>(im);
+      if (z_[e] == cd(0.0) && z_[m] == cd(0.0)) {
+        a_[e] = cd(0.0);
+        continue;
+      }
+      const kd::vec2 k(dk * lattice_frequency(i, n), dk * lattice_frequency(j, n));
+      const kd::vec2 km(dk * lattice_frequency(im, n), dk * lattice_frequency(jm, n));
+      const kd::vec2 s = kd::cascade_slope_spectrum(kd::vec2(z_[e].real(), z_[e].imag()),
+                                                    kd::vec2(z_[m].real(), z_[m].imag()), k, km);
+      a_[e] = cd(s.x, s.y);
+    }
+  }
+  inverse_2d(a_);
+  CascadeGrid g;
+  g.n = n;
+  g.patch_size = patch_size_;
+  g.time = t;
+  g.slope_x.resize(count);
+  g.slope_z.resize(count);
+  for (size_t e = 0; e < count; ++e) {
+    g.slope_x[e] = a_[e].real();
+    g.slope_z[e] = a_[e].imag();
+  }
+  return g;
+}
+
 std::vector<MomentLevel> moment_chain(const CascadeGrid& g) {
   std::vector<MomentLevel> levels;
   MomentLevel l0;

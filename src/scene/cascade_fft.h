@@ -58,6 +58,9 @@ class CascadeFft {
   // kernel/cascade_spectrum.glsl). The rows and columns of the transform run in parallel
   // (oneTBB); one CascadeFft serves one caller at a time.
   CascadeGrid evaluate(double t, bool curvatures = false);
+  // The slopes alone at time t (no height): one transform of E(k_x Z) + i E(k_z Z)
+  // (kernel/cascade_spectrum.glsl, cascade_slope_spectrum).
+  CascadeGrid evaluate_slopes(double t);
   // set_lattice, then evaluate(t).
   CascadeGrid evaluate(const CascadeDesc& c, const Dispersion& water, double t);
   // The unnormalised inverse 2-D DFT of `data` (n x n, row q holds entries q * n + p), in

@@ -113,7 +113,8 @@ TEST(CascadeFft, GridIsTheDirectSumOfTheLatticesSines) {
 }
 
 // The curvatures (the third transform) against the direct sum of -A k_i k_j sin: a full
-// lattice, Nyquist rows included, where the mirror's factor k_m differs from -k.
+// lattice, Nyquist rows included, where the mirror's factor k_m differs from -k; the
+// slopes-only transform against the slopes of the two-transform evaluation.
 TEST(CascadeFft, CurvaturesAreTheDirectSum) {
   for (int n : {8, 32}) {
     const CascadeDesc c = full_cascade(n, 30, static_cast<uint64_t>(n) + 11);
@@ -127,7 +128,9 @@ TEST(CascadeFft, CurvaturesAreTheDirectSum) {
     const CascadeGrid g = fft.evaluate(c, water, t);
     fft.set_lattice(c, water);
     const CascadeGrid gc = fft.evaluate(t, true);
+    const CascadeGrid gs = fft.evaluate_slopes(t);
     ASSERT_EQ(gc.curv_xx.size(), static_cast<size_t>(n * n));
+    EXPECT_TRUE(gs.height.empty());
     EXPECT_TRUE(g.curv_xx.empty());
     double worst = 0;
     for (int q = 0; q < n; ++q) {
@@ -148,6 +151,9 @@ TEST(CascadeFft, CurvaturesAreTheDirectSum) {
         // The slopes are unchanged by the extra transform.
         EXPECT_NEAR(gc.slope_z[e], g.slope_z[e], 1e-13 * bound);
         EXPECT_NEAR(gc.slope_x[e], g.slope_x[e], 1e-13 * bound);
+        // And the slopes-only transform gives them too.
+        EXPECT_NEAR(gs.slope_x[e], g.slope_x[e], 1e-13 * bound);
+        EXPECT_NEAR(gs.slope_z[e], g.slope_z[e], 1e-13 * bound);
       }
     }
     EXPECT_LT(worst, 1e-12 * bound) << n;

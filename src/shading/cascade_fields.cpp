@@ -1,5 +1,7 @@
 #include "shading/cascade_fields.h"
 
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 
 namespace sg {
@@ -77,37 +79,56 @@ void CascadeFields::prepare(const SceneModel& m) {
 }
 
 template <class V4>
-int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int segments,
-                               double cam_x, double cam_z, std::vector<V4>& texels) {
+int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
+                               double cam_z, std::vector<V4>& texels) {
   using R = typename V4::value_type;
   prepare(m);
   const std::vector<CascadeDesc>& cs = m.scene.surface.cascades;
   const int base = static_cast<int>(texels.size());
-  size_t total = 2 * cs.size();
-  for (int n : lattices_)
-    total += (segments + 1) * instant_texels(n);
-  texels.reserve(texels.size() + total);
   for (size_t c = 0; c < cs.size(); ++c) {
     const double L = cs[c].patch_size;
     texels.push_back(V4(R(L), R(lattices_[c]), R(L * (cam_x / L - std::floor(cam_x / L))),
                         R(L * (cam_z / L - std::floor(cam_z / L)))));
     texels.push_back(V4(R(cov_[c].x), R(cov_[c].y), R(cov_[c].z), R(log2_exact(lattices_[c]) + 1)));
   }
+  // Each cascade's data at its own offset, the cascades on oneTBB's threads (each
+  // cascade's transforms share its rows among them too).
+  std::vector<size_t> offset(cs.size());
+  size_t at = texels.size();
   for (size_t c = 0; c < cs.size(); ++c) {
+    offset[c] = at;
+    at += (segments + 1) * instant_texels(lattices_[c]);
+  }
+  texels.resize(at);
+  tbb::parallel_for(size_t(0), cs.size(), [&](size_t c) {
     std::vector<MomentLevel> chain;
+    V4* out = texels.data() + offset[c];
+    // A zero shutter: every instant is the display time's.
+    const bool still = !(ft.duration() > 0);
+    if (still) chain = moment_chain(ffts_[c]->evaluate(ft.end, true));
     for (int k = 0; k <= segments; ++k) {
       const double t = ft.end - ft.duration() * (segments - k) / segments;
-      // A zero shutter: every instant is the display time's.
-      if (k == 0 || ft.duration() > 0) chain = moment_chain(ffts_[c]->evaluate(t, true));
+      // The display time's curvatures and second moments; the other instants' slopes alone
+      // (what the kernel reads there: cascade_fields.glsl), the rest of their texels 0.
+      if (!still) {
+        chain = moment_chain(k == segments ? ffts_[c]->evaluate(t, true)
+                                           : ffts_[c]->evaluate_slopes(t));
+      }
       for (const MomentLevel& lv : chain) {
         const size_t count = static_cast<size_t>(lv.n) * lv.n;
+        const bool full = !lv.hxx.empty();
         for (size_t e = 0; e < count; ++e) {
-          texels.push_back(V4(R(lv.mx[e]), R(lv.mz[e]), R(lv.hxx[e]), R(lv.hzz[e])));
-          texels.push_back(V4(R(lv.hxz[e]), R(lv.mxx[e]), R(lv.mxz[e]), R(lv.mzz[e])));
+          if (full) {
+            *out++ = V4(R(lv.mx[e]), R(lv.mz[e]), R(lv.hxx[e]), R(lv.hzz[e]));
+            *out++ = V4(R(lv.hxz[e]), R(lv.mxx[e]), R(lv.mxz[e]), R(lv.mzz[e]));
+          } else {
+            *out++ = V4(R(lv.mx[e]), R(lv.mz[e]), R(0), R(0));
+            *out++ = V4(R(0));
+          }
         }
       }
     }
-  }
+  });
   return base;
 }
 
