@@ -83,20 +83,17 @@ CascadeGrid CascadeFft::evaluate(const CascadeDesc& c, const Dispersion& water, 
   return evaluate(t);
 }
 
-CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
+template <class Spectra, class Zero>
+void CascadeFft::spectra_at(double t, Spectra spectra, Zero zero) {
   using cd = std::complex<double>;
   const int n = n_;
-  const size_t count = static_cast<size_t>(n) * n;
   // Z = A e^{i (omega t + phi)}, in double; the spectra by the shared text
-  // (kernel/cascade_spectrum.glsl).
-  z_.assign(count, cd(0.0));
+  // (kernel/cascade_spectrum.glsl), from Z and its mirror's at each entry.
+  z_.assign(static_cast<size_t>(n) * n, cd(0.0));
   for (const Point& p : points_) {
     const kd::vec2 z = kd::cascade_z(p.amplitude, p.omega * t + p.phase);
     z_[p.index] = cd(z.x, z.y);
   }
-  a_.resize(count);
-  b_.resize(count);
-  if (curvatures) c_.resize(count);
   const double dk = kTwoPi / patch_size_;
   for (int j = 0; j < n; ++j) {
     const int jm = (n - j) % n;
@@ -105,29 +102,43 @@ CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
       const int im = (n - i) % n;
       const size_t m = static_cast<size_t>(jm) * n + static_cast<size_t>(im);
       if (z_[e] == cd(0.0) && z_[m] == cd(0.0)) {
-        a_[e] = b_[e] = cd(0.0);
-        if (curvatures) c_[e] = cd(0.0);
+        zero(e);
         continue;
       }
       const kd::vec2 k(dk * lattice_frequency(i, n), dk * lattice_frequency(j, n));
       const kd::vec2 km(dk * lattice_frequency(im, n), dk * lattice_frequency(jm, n));
-      const kd::vec4 s = kd::cascade_spectra(kd::vec2(z_[e].real(), z_[e].imag()),
-                                             kd::vec2(z_[m].real(), z_[m].imag()), k, km);
-      a_[e] = cd(s.x, s.y);
-      b_[e] = cd(s.z, s.w);
-      if (curvatures) {
-        const kd::vec4 h = kd::cascade_curvature_spectra(
-            kd::vec2(z_[e].real(), z_[e].imag()), kd::vec2(z_[m].real(), z_[m].imag()), k, km);
-        b_[e] += cd(h.x, h.y);
-        c_[e] = cd(h.z, h.w);
-      }
+      spectra(e, kd::vec2(z_[e].real(), z_[e].imag()), kd::vec2(z_[m].real(), z_[m].imag()), k, km);
     }
   }
+}
+
+CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
+  using cd = std::complex<double>;
+  const size_t count = static_cast<size_t>(n_) * n_;
+  a_.resize(count);
+  b_.resize(count);
+  if (curvatures) c_.resize(count);
+  spectra_at(
+      t,
+      [&](size_t e, const kd::vec2& z, const kd::vec2& zm, const kd::vec2& k, const kd::vec2& km) {
+        const kd::vec4 s = kd::cascade_spectra(z, zm, k, km);
+        a_[e] = cd(s.x, s.y);
+        b_[e] = cd(s.z, s.w);
+        if (curvatures) {
+          const kd::vec4 h = kd::cascade_curvature_spectra(z, zm, k, km);
+          b_[e] += cd(h.x, h.y);
+          c_[e] = cd(h.z, h.w);
+        }
+      },
+      [&](size_t e) {
+        a_[e] = b_[e] = cd(0.0);
+        if (curvatures) c_[e] = cd(0.0);
+      });
   inverse_2d(a_);
   inverse_2d(b_);
   if (curvatures) inverse_2d(c_);
   CascadeGrid g;
-  g.n = n;
+  g.n = n_;
   g.patch_size = patch_size_;
   g.time = t;
   g.height.resize(count);
@@ -153,35 +164,18 @@ CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
 
 CascadeGrid CascadeFft::evaluate_slopes(double t) {
   using cd = std::complex<double>;
-  const int n = n_;
-  const size_t count = static_cast<size_t>(n) * n;
-  z_.assign(count, cd(0.0));
-  for (const Point& p : points_) {
-    const kd::vec2 z = kd::cascade_z(p.amplitude, p.omega * t + p.phase);
-    z_[p.index] = cd(z.x, z.y);
-  }
+  const size_t count = static_cast<size_t>(n_) * n_;
   a_.resize(count);
-  const double dk = kTwoPi / patch_size_;
-  for (int j = 0; j < n; ++j) {
-    const int jm = (n - j) % n;
-    for (int i = 0; i < n; ++i) {
-      const size_t e = static_cast<size_t>(j) * n + i;
-      const int im = (n - i) % n;
-      const size_t m = static_cast<size_t>(jm) * n + static_cast<size_t>(im);
-      if (z_[e] == cd(0.0) && z_[m] == cd(0.0)) {
-        a_[e] = cd(0.0);
-        continue;
-      }
-      const kd::vec2 k(dk * lattice_frequency(i, n), dk * lattice_frequency(j, n));
-      const kd::vec2 km(dk * lattice_frequency(im, n), dk * lattice_frequency(jm, n));
-      const kd::vec2 s = kd::cascade_slope_spectrum(kd::vec2(z_[e].real(), z_[e].imag()),
-                                                    kd::vec2(z_[m].real(), z_[m].imag()), k, km);
-      a_[e] = cd(s.x, s.y);
-    }
-  }
+  spectra_at(
+      t,
+      [&](size_t e, const kd::vec2& z, const kd::vec2& zm, const kd::vec2& k, const kd::vec2& km) {
+        const kd::vec2 s = kd::cascade_slope_spectrum(z, zm, k, km);
+        a_[e] = cd(s.x, s.y);
+      },
+      [&](size_t e) { a_[e] = cd(0.0); });
   inverse_2d(a_);
   CascadeGrid g;
-  g.n = n;
+  g.n = n_;
   g.patch_size = patch_size_;
   g.time = t;
   g.slope_x.resize(count);

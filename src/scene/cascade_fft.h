@@ -72,6 +72,11 @@ class CascadeFft {
     size_t index;
     double amplitude, omega, phase;
   };
+  // Z at time t, then spectra(e, Z, Z_mirror, k, k_mirror) at each entry e where either is
+  // non-zero and zero(e) at the others (defined in cascade_fft.cpp, its only user).
+  template <class Spectra, class Zero>
+  void spectra_at(double t, Spectra spectra, Zero zero);
+
   int n_;
   double patch_size_ = 0;
   std::vector<Point> points_;
