@@ -49,7 +49,8 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   GlVariant v;
   v.intersect_tolerance = o.intersect_tolerance;
   v.cascade_fields =
-      o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa");
+      o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa" ||
+                           (method == "supersample" && o.samples.st == 1));
   if (method == "point") {
     v.entry = KernelEntry::point;
   } else if (method == "reference") {

@@ -237,7 +237,7 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineUnderAMovingCamera) {
 TEST_F(GlEngineTest, CascadeFieldsMatchTheCpuEngine) {
   // A generated two-cascade sea of 32 x 32 lattices (wind 8 m/s) under the shared scenes'
   // camera and light, Schlick's Fresnel and a sky gradient, 160x90, frames 0-1: point,
-  // staa-temporal and staa read the cascades
+  // supersample 2x2x1, staa-temporal and staa read the cascades
   // from their FFT fields in the wave buffer (kernel/cascade_fields.glsl) on both engines;
   // GL against the CPU in float within a tenth of what the fields change against the
   // cascades' sines (the CPU's --cascades waves image). Were the GL engine to read no field
@@ -258,15 +258,19 @@ TEST_F(GlEngineTest, CascadeFieldsMatchTheCpuEngine) {
   s.sky = SkyDesc{Rgb(0.02), Rgb(0.1), 0.5, true};
   set_image_size(s, 160, 90);
   const SceneModel m(s);
-  for (const std::string name : {"point", "staa-temporal", "staa"}) {
+  for (const std::string name : {"point", "supersample", "staa-temporal", "staa"}) {
     MethodOptions of;
     of.precision = Precision::float32;
+    of.samples = SampleCounts{2, 2, 1};  // supersample: T = 1, the display time's fields
+    of.samples_given = true;
     MethodOptions waves = of;
     waves.cascade_fields = false;
     const std::vector<Image> cpu = render(m, *make_method_on(Engine::cpu, name, of), 0, 1);
     const std::vector<Image> sines = render(m, *make_method_on(Engine::cpu, name, waves), 0, 1);
-    const std::vector<Image> gl =
-        render(m, *make_method_on(Engine::gl, name, MethodOptions{}), 0, 1);
+    MethodOptions og;
+    og.samples = of.samples;
+    og.samples_given = true;
+    const std::vector<Image> gl = render(m, *make_method_on(Engine::gl, name, og), 0, 1);
     const double gl_cpu = compare_sequences(gl, cpu).rmse,
                  fields = compare_sequences(cpu, sines).rmse;
     double sum = 0;

@@ -173,7 +173,8 @@ SG_FN CascadeTexel cascade_filtered(IN(WaveBuffer) waves, IN(Cascade) c, int k, 
 }
 
 // Every cascade's slope at camera-relative (x, z) at instant k (K: the display time),
-// point-sampled (level 0): the `point` and `staa-temporal` normal's cascade share.
+// point-sampled (level 0): the cascade share of the normal of `point`, `supersample` (T = 1),
+// `staa-temporal` and `specaa`.
 SG_FN vec2 cascade_gradient(IN(WaveBuffer) waves, IN(Frame) f, int k, real x, real z) {
   vec2 g = vec2(0.0);
   for (int c = 0; c < f.cascade_count; ++c) {
@@ -213,54 +214,50 @@ SG_FN vec4 footprint_axes(mat2 J) {
   return vec4(sqrt(l1), sqrt(l2), u.x, u.y);
 }
 
-SG_FN CascadeShare cascade_staa_share(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
-                                      IN(Footprint) fp, IN(PathViews) v, IN(Cascade) c) {
-  int K = f.segments;
-  CascadeShare s;
-  for (int k = 0; k <= K; ++k) {
-    s.g[k] = vec2(0.0);
-    s.hess[k] = vec3(0.0);
-  }
-  vec4 ax = footprint_axes(footprint_xz_jacobian(fp));
+// The footprint's filter on one cascade's chain (as GL's anisotropic filtering places its
+// probes; EXT_texture_filter_anisotropic): boxes of width w = max(minor, major / taps)
+// across, `taps` of them side by side along the major axis, read at the level whose texel
+// is w wide; the axes are those of J scaled by 1 / scale. `whole`: the boxes span the
+// patch (every wave averages out: the mean is 0, the covariance the cascade's whole).
+struct CascadeFilter {
+  real major;  // the boxes' span along `axis`, m
+  real w;      // a box's width, m
+  real level;
+  int taps;
+  vec2 axis;
+  bool whole;
+};
+
+SG_FN CascadeFilter cascade_filter(IN(Cascade) c, mat2 J, real scale) {
+  vec4 ax = footprint_axes(J);
   real h = c.size / real(c.n);
-  real major = ax.x / p.alias_end;
-  real w = max(ax.y / p.alias_end, major / real(kCascadeMaxTaps));
-  real level = log2(max(w / h, 1.0));
-  if (!(level < real(c.levels - 1))) {
-    // The footprint spans the patch: every wave aliases, the mean is 0.
-    s.cov = c.cov;
-    return s;
+  CascadeFilter b;
+  b.major = ax.x / scale;
+  b.w = max(ax.y / scale, b.major / real(kCascadeMaxTaps));
+  b.level = log2(max(b.w / h, 1.0));
+  b.whole = !(b.level < real(c.levels - 1));
+  b.taps = clamp(int(ceil(b.major / b.w - 1e-6)), 1, kCascadeMaxTaps);
+  b.axis = vec2(ax.z, ax.w);
+  return b;
+}
+
+// The mean of the chain over the filter's boxes about `centre` (camera-relative x, z) at
+// instant k.
+SG_FN CascadeTexel cascade_box_mean(IN(WaveBuffer) waves, IN(Cascade) c, int k, IN(CascadeFilter) b,
+                                    vec2 centre, bool moments) {
+  real inv_taps = 1.0 / real(b.taps);
+  CascadeTexel acc = cascade_texel_zero();
+  for (int q = 0; q < b.taps; ++q) {
+    vec2 at = centre + ((real(q) + 0.5) * inv_taps - 0.5) * b.major * b.axis;
+    cascade_texel_add(
+        acc, cascade_filtered(waves, c, k, b.level, cascade_grid_coord(c, at), moments), inv_taps);
   }
-  int taps = clamp(int(ceil(major / w - 1e-6)), 1, kCascadeMaxTaps);
-  vec2 axis = vec2(ax.z, ax.w);
-  real inv_taps = 1.0 / real(taps);
-  CascadeTexel now = cascade_texel_zero();
-  for (int k = K; k >= 0; --k) {
-    vec2 centre = v.moving ? v.point[k] : vec2(fp.point.x, fp.point.z);
-    CascadeTexel acc = cascade_texel_zero();
-    for (int q = 0; q < taps; ++q) {
-      vec2 at = centre + ((real(q) + 0.5) * inv_taps - 0.5) * major * axis;
-      cascade_texel_add(
-          acc, cascade_filtered(waves, c, k, level, cascade_grid_coord(c, at), k == K), inv_taps);
-    }
-    s.g[k] = vec2(acc.a.x, acc.a.y);
-    if (k == K) {
-      now = acc;
-      s.hess[k] = vec3(acc.a.z, acc.b.x, acc.a.w);
-    } else {
-      s.hess[k] = s.hess[K];
-    }
-  }
-  // The covariance over the boxes, less the resolved curvature's spread over them (the
-  // boxes' positions: w^2 / 12 across, the taps' span along the axis).
-  vec2 g = s.g[K];
-  mat2 m2 = sym2(vec3(now.b.y, now.b.z, now.b.w)) - outerProduct(g, g);
-  real along = max(major, w);
-  mat2 box =
-      (w * w / 12.0) * mat2(1.0) + ((along * along - w * w) / 12.0) * outerProduct(axis, axis);
-  mat2 H = sym2(s.hess[K]);
-  m2 -= H * box * H;
-  // Clamped to positive semi-definite (the cubic's overshoot and the subtraction).
+  return acc;
+}
+
+// A symmetric 2 x 2 matrix clamped to positive semi-definite (the cubic's overshoot and the
+// subtractions of a covariance can leave a small negative eigenvalue): (xx, xz, zz).
+SG_FN vec3 cascade_psd(mat2 m2) {
   real tr = m2[0][0] + m2[1][1];
   real det = m2[0][0] * m2[1][1] - m2[0][1] * m2[1][0];
   real disc = sqrt(max(0.25 * tr * tr - det, 0.0));
@@ -273,6 +270,87 @@ SG_FN CascadeShare cascade_staa_share(IN(WaveBuffer) waves, IN(Frame) f, IN(Staa
     d = normalize(d);
     m2 = e1 * outerProduct(d, d);
   }
-  s.cov = vec3(m2[0][0], m2[0][1], m2[1][1]);
+  return vec3(m2[0][0], m2[0][1], m2[1][1]);
+}
+
+SG_FN CascadeShare cascade_staa_share(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
+                                      IN(Footprint) fp, IN(PathViews) v, IN(Cascade) c) {
+  int K = f.segments;
+  CascadeShare s;
+  for (int k = 0; k <= K; ++k) {
+    s.g[k] = vec2(0.0);
+    s.hess[k] = vec3(0.0);
+  }
+  CascadeFilter b = cascade_filter(c, footprint_xz_jacobian(fp), p.alias_end);
+  if (b.whole) {
+    s.cov = c.cov;
+    return s;
+  }
+  CascadeTexel now = cascade_texel_zero();
+  for (int k = K; k >= 0; --k) {
+    vec2 centre = v.moving ? v.point[k] : vec2(fp.point.x, fp.point.z);
+    CascadeTexel acc = cascade_box_mean(waves, c, k, b, centre, k == K);
+    s.g[k] = vec2(acc.a.x, acc.a.y);
+    if (k == K) {
+      now = acc;
+      s.hess[k] = vec3(acc.a.z, acc.b.x, acc.a.w);
+    } else {
+      s.hess[k] = s.hess[K];
+    }
+  }
+  // The covariance over the boxes, less the resolved curvature's spread over them (the
+  // boxes' positions: w^2 / 12 across, the taps' span along the axis).
+  vec2 g = s.g[K];
+  mat2 m2 = sym2(vec3(now.b.y, now.b.z, now.b.w)) - outerProduct(g, g);
+  real along = max(b.major, b.w);
+  mat2 box = (b.w * b.w / 12.0) * mat2(1.0) +
+             ((along * along - b.w * b.w) / 12.0) * outerProduct(b.axis, b.axis);
+  mat2 H = sym2(s.hess[K]);
+  m2 -= H * box * H;
+  s.cov = cascade_psd(m2);
   return s;
+}
+
+// What the cascades give the LEAN-style baselines (`lean`, `bruneton`), at the display
+// time: the slopes' mean and covariance over the pixel's footprint J at camera-relative
+// `centre` (Olano and Baker 2010, Sec. 3: B and M - B B^T of the filtered chain), summed
+// over the cascades. Each cascade holds its own band with independent phases, so the cross
+// terms between cascades are left out: over a box that holds many wavelengths of both they
+// average to zero, and one that holds less than a wavelength of either sees it constant.
+struct CascadeMoments {
+  vec2 mean;
+  vec3 cov;  // xx, xz, zz
+};
+
+SG_FN CascadeMoments cascade_footprint_moments(IN(WaveBuffer) waves, IN(Frame) f, vec2 centre,
+                                               mat2 J) {
+  CascadeMoments r;
+  r.mean = vec2(0.0);
+  r.cov = vec3(0.0);
+  for (int c = 0; c < f.cascade_count; ++c) {
+    Cascade cc = cascade_at(waves, f, c);
+    CascadeFilter b = cascade_filter(cc, J, 1.0);
+    if (b.whole) {
+      r.cov += cc.cov;
+      continue;
+    }
+    CascadeTexel t = cascade_box_mean(waves, cc, f.segments, b, centre, true);
+    vec2 g = vec2(t.a.x, t.a.y);
+    r.mean += g;
+    r.cov += cascade_psd(sym2(vec3(t.b.y, t.b.z, t.b.w)) - outerProduct(g, g));
+  }
+  return r;
+}
+
+// Every cascade's height Hessian at camera-relative (x, z) at the display time, point-
+// sampled (level 0, Catmull-Rom): (h_xx, h_xz, h_zz), the `specaa` kernel's curvature.
+SG_FN vec3 cascade_hessian(IN(WaveBuffer) waves, IN(Frame) f, real x, real z) {
+  vec3 h = vec3(0.0);
+  for (int c = 0; c < f.cascade_count; ++c) {
+    Cascade cc = cascade_at(waves, f, c);
+    CascadeTexel t =
+        cascade_bicubic(waves, cc, f.segments, cascade_grid_coord(cc, vec2(x, z)), true);
+    h += vec3(t.a.z, t.b.x, t.a.w);
+  }
+  return h;
 }

@@ -28,7 +28,8 @@ SG_FN vec4 sample_weights(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, r
   if (!hit.hit) return miss_weights(f, d);
   vec2 g = water_gradient(waves, f, hit.point.x, hit.point.z, dt);
   // Cascades shaded from their fields are sampled at the display time only (the host
-  // builds fields for `point` and `staa-temporal` alone, whose rays all have dt = 0).
+  // builds fields for `point`, `staa-temporal` and `supersample` with T = 1 alone, whose
+  // rays all have dt = 0).
   if (f.cascade_count > 0) g += cascade_gradient(waves, f, f.segments, hit.point.x, hit.point.z);
   return water_weights(f, normal_direction(g), -d);
 }

@@ -34,6 +34,7 @@ void calm_window_sums(const std::string& method, int half, double& sum, double& 
   ASSERT_TRUE(m.camera.project(vec3(m.light.L.x, -m.light.L.y, m.light.L.z), cx, cy));
   auto meth = make_method(method, MethodOptions{});
   FrameContext ctx{m, frame_time(s, 0), 0};
+  meth->begin_frame(ctx);
   sum = exact = 0;
   for (int j = static_cast<int>(cy) - half; j <= static_cast<int>(cy) + half; ++j) {
     for (int i = static_cast<int>(cx) - half; i <= static_cast<int>(cx) + half; ++i) {

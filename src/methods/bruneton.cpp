@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "base/error.h"
 #include "scene/footprint.h"
 #include "scene/intersect.h"
 #include "shading/gaussian_disk.h"
@@ -16,17 +17,20 @@ namespace sg {
 
 void BrunetonMethod::begin_frame(const FrameContext& ctx) {
   reset_fallbacks();
-  sorted_waves(ctx.model);
+  cascades_.build(ctx);
+  if (sorted_model_.load(std::memory_order_acquire) != ctx.model.id ||
+      sorted_fields_ != cascades_.active()) {
+    // The model's waves, or its explicit ones (the same for every frame of the model).
+    sorted_ = std::make_unique<SortedWaves>(cascades_.waves(ctx.model));
+    sorted_fields_ = cascades_.active();
+    sorted_model_.store(ctx.model.id, std::memory_order_release);
+  }
 }
 
 const SortedWaves& BrunetonMethod::sorted_waves(const SceneModel& m) const {
   if (sorted_model_.load(std::memory_order_acquire) != m.id) {
-    // Built by begin_frame; here only for a caller that shades without it.
-    std::lock_guard<std::mutex> lock(sorted_mutex_);
-    if (sorted_model_.load(std::memory_order_relaxed) != m.id) {
-      sorted_ = std::make_unique<SortedWaves>(m.waves);
-      sorted_model_.store(m.id, std::memory_order_release);
-    }
+    throw Error("bruneton: frame " + std::to_string(m.id) +
+                " shaded without begin_frame (methods/method.h)");
   }
   return *sorted_;
 }
@@ -61,8 +65,11 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   }
   const vec3 v = normalize(o - P);
 
+  // The cascades' mean slope and covariance over the footprint (flat water only).
+  const HostCascades::Moments cm = cascades_.moments(P, J);
+
   // 3. Normal (Eq. 3), mirrored when back-facing.
-  vec3 n = normal_from_gradient(waves.gradient_weighted(P.x, P.z, t, w));
+  vec3 n = normal_from_gradient(waves.gradient_weighted(P.x, P.z, t, w) + cm.mean);
   if (dot(n, v) < 0) n = normalize(n - 2 * dot(n, v) * v);
 
   // 4. Slope variances of the filtered-out waves (Eq. 4 for sines): the prefix's share
@@ -70,8 +77,8 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   wr.resize(w.size());
   for (size_t k = 0; k < w.size(); ++k)
     wr[k] = 1 - w[k];
-  const PrincipalAxes axes =
-      principal_axes(uniform_ndf_covariance(waves, wr) + sorted.suffix_covariance(waves.size()));
+  const PrincipalAxes axes = principal_axes(uniform_ndf_covariance(waves, wr) +
+                                            sorted.suffix_covariance(waves.size()) + cm.cov);
   const vec2 sigma2(std::max(axes.s1 * axes.s1, options_.min_variance),
                     std::max(axes.s2 * axes.s2, options_.min_variance));
   vec3 major(axes.u.x, 0, axes.u.y);

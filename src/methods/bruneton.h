@@ -47,14 +47,18 @@
 //    for `fresnel: none`; for `schlick`, the fit of Eq. 26 (default) or the integral of
 //    Eq. 24 (--bruneton-fresnel integral).
 // A pixel whose ray misses the water (on the rest plane) sees the sky (miss_radiance).
+// Lattice cascades on flat water (`--cascades fields`, methods/host_cascades.h): the
+// filtered normal takes each cascade's mean slope over the pixel's footprint and the
+// variance its covariance there (LEAN's box filter of the FFT chain, in the place of the
+// per-wave weights w_n, w_r of steps 1 and 4); the explicit waves as above.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 
 #include "methods/fallback.h"
+#include "methods/host_cascades.h"
 #include "methods/method.h"
 #include "shading/wave_lod.h"
 
@@ -65,19 +69,22 @@ namespace sg {
 // along its centre ray (what `point` returns) and is counted.
 class BrunetonMethod final : public Method, public FallbackCounter {
  public:
-  explicit BrunetonMethod(BrunetonOptions o) : options_(o) {}
+  explicit BrunetonMethod(BrunetonOptions o, bool cascade_fields = true)
+      : options_(o), cascades_(cascade_fields) {}
   std::string name() const override { return "bruneton"; }
   void begin_frame(const FrameContext& ctx) override;
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
 
  private:
-  // The scene's waves sorted by |k| (wave_lod.h), built once per scene model.
+  // The waves the method sums (the scene's, or its explicit ones when the cascades are
+  // fields: host_cascades.h) sorted by |k| (wave_lod.h), built once per scene model.
   const SortedWaves& sorted_waves(const SceneModel& m) const;
 
   BrunetonOptions options_;
-  mutable std::mutex sorted_mutex_;
-  mutable std::unique_ptr<SortedWaves> sorted_;
+  HostCascades cascades_;
+  std::unique_ptr<SortedWaves> sorted_;
   mutable std::atomic<uint64_t> sorted_model_{~uint64_t(0)};
+  bool sorted_fields_ = false;
 };
 
 }  // namespace sg

@@ -58,9 +58,9 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                              o.intersect_tolerance);
   }
   if (name == "supersample") {
-    return std::make_unique<StratifiedMethod>(name,
-                                              StratifiedSettings{o.samples, o.samples.st == 1},
-                                              o.precision, stratified_intersect_tolerance(o));
+    return std::make_unique<StratifiedMethod>(
+        name, StratifiedSettings{o.samples, o.samples.st == 1}, o.precision,
+        stratified_intersect_tolerance(o), o.cascade_fields && o.samples.st == 1);
   }
   if (name == "point")
     return std::make_unique<PointMethod>(o.precision, o.intersect_tolerance, o.cascade_fields);
@@ -72,11 +72,11 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
     return std::make_unique<StaaMethod>(o.staa, o.precision, o.intersect_tolerance,
                                         o.cascade_fields);
   }
-  if (name == "lean") return std::make_unique<LeanMethod>(o.lean);
+  if (name == "lean") return std::make_unique<LeanMethod>(o.lean, o.cascade_fields);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);
   if (name == "microspec") return std::make_unique<MicrospecMethod>(o.microspec);
-  if (name == "specaa") return std::make_unique<SpecaaMethod>(o.specaa);
-  if (name == "bruneton") return std::make_unique<BrunetonMethod>(o.bruneton);
+  if (name == "specaa") return std::make_unique<SpecaaMethod>(o.specaa, o.cascade_fields);
+  if (name == "bruneton") return std::make_unique<BrunetonMethod>(o.bruneton, o.cascade_fields);
   std::string list;
   for (const auto& m : method_catalog())
     list += (list.empty() ? "" : ", ") + m.name;

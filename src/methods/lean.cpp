@@ -15,7 +15,8 @@
 
 namespace sg {
 
-LeanMethod::LeanMethod(const LeanOptions& o) : options_(o) {
+LeanMethod::LeanMethod(const LeanOptions& o, bool cascade_fields)
+    : options_(o), cascades_(cascade_fields) {
   if (o.size < 2 || o.size > 8192 || (o.size & (o.size - 1)) != 0) {
     throw Error("--lean-size: must be a power of two in [2, 8192] (got " + std::to_string(o.size) +
                 ")");
@@ -107,7 +108,8 @@ void fill_lean_map_from_waves(LeanMap& map, const LeanMapRegion& region, const W
 void LeanMethod::begin_frame(const FrameContext& ctx) {
   reset_fallbacks();
   const SceneModel& m = ctx.model;
-  const WaveField& w = m.waves;
+  cascades_.build(ctx);
+  const WaveField& w = cascades_.waves(m);
   region_ = lean_map_region(m, options_.size, options_.far);
   // Waves the texel grid samples (<= 0.5 cycles per texel on both axes) go into the map.
   mapped_.assign(w.size(), 0.0);
@@ -140,8 +142,12 @@ RadianceWeights LeanMethod::weights(const FrameContext& ctx, int i, int j) const
   if (!fp.hit) return miss_pixel_weights(m, i, j);
   if (fp.at_camera) return fallback(ctx, i, j);
   const LeanMoments mo = lookup(fp);
+  // The cascades' filtered moments (host_cascades.h; zero without cascade fields).
+  const HostCascades::Moments cm = cascades_.moments(fp.point, fp.xz_jacobian());
   return finite_or_fallback(
-      shade_gaussian_ndf(m, fp.view, -mo.B, mo.covariance() + base_cov_).weights, ctx, i, j);
+      shade_gaussian_ndf(m, fp.view, -(mo.B + cm.mean), mo.covariance() + base_cov_ + cm.cov)
+          .weights,
+      ctx, i, j);
 }
 
 }  // namespace sg

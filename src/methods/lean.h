@@ -43,6 +43,12 @@
 //     linearised mass below the horizon as the sea fraction, Fresnel at the centre normal,
 //     and combines them (combine_radiance). A camera ray that misses the water sees the sky.
 //
+// Lattice cascades on flat water (`--cascades fields`, methods/host_cascades.h): a cascade
+// is periodic, and its FFT chain is already a LEAN map of it (the means of s and s s^T over
+// 2^l blocks of its grid, shading/cascade_fields.h); the map above holds the explicit waves
+// alone, and each pixel adds every cascade's filtered mean and covariance over its
+// footprint (the kernel's filter: up to 4 boxes along the footprint's longer axis).
+//
 // Storage: 5 floats (20 bytes) per texel, N^2 4/3 texels: 447 MB at N = 4096 (kept between
 // frames; the output does not depend on earlier frames). docs/baselines-lean-taa.md has
 // the build time and the measured quality.
@@ -51,6 +57,7 @@
 #include <span>
 
 #include "methods/fallback.h"
+#include "methods/host_cascades.h"
 #include "methods/lean_coverage.h"
 #include "methods/lean_map.h"
 #include "methods/method.h"
@@ -65,7 +72,7 @@ namespace sg {
 class LeanMethod final : public Method, public FallbackCounter {
  public:
   // Throws sg::Error naming the flag for a bad option.
-  explicit LeanMethod(const LeanOptions& options);
+  explicit LeanMethod(const LeanOptions& options, bool cascade_fields = true);
   std::string name() const override { return "lean"; }
   void begin_frame(const FrameContext& ctx) override;
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
@@ -85,6 +92,7 @@ class LeanMethod final : public Method, public FallbackCounter {
   LeanMapRegion region_;
   mat2 base_cov_{0.0};
   std::vector<double> mapped_;
+  HostCascades cascades_;
 };
 
 // Level 0 of `map` from the waves weighted by `weights` at time t: texel (i, j) holds the

@@ -15,21 +15,34 @@ constexpr double kMinLightCos = 0.05;
 
 }  // namespace
 
-SpecaaSample specaa_sample(const SceneModel& m, double px, double py, double t) {
+SpecaaSample specaa_sample(const SceneModel& m, double px, double py, double t,
+                           const HostCascades* cascades) {
   SpecaaSample s;
   s.footprint = pixel_footprint(m, px, py, t);
   if (!s.footprint.hit) return s;
   s.hit = true;
-  s.g = m.waves.gradient(s.footprint.point.x, s.footprint.point.z, t);
+  const vec3& P = s.footprint.point;
+  if (cascades != nullptr && cascades->active()) {
+    s.g = cascades->waves(m).gradient(P.x, P.z, t) + cascades->gradient(P);
+  } else {
+    s.g = m.waves.gradient(P.x, P.z, t);
+  }
   s.frame = water_shading_frame(s.g);
   s.h_perp = projected_half_vector(s.frame, s.footprint.view, m.light.L);
   return s;
 }
 
 void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, double t, vec2& ddx,
-                                 vec2& ddy) {
+                                 vec2& ddy, const HostCascades* cascades) {
   const vec3& P = s.footprint.point;
-  const Hessian H = m.waves.hessian(P.x, P.z, t);
+  Hessian H;
+  if (cascades != nullptr && cascades->active()) {
+    H = cascades->waves(m).hessian(P.x, P.z, t);
+    const Hessian c = cascades->hessian(P);
+    H = Hessian{H.xx + c.xx, H.xz + c.xz, H.zz + c.zz};
+  } else {
+    H = m.waves.hessian(P.x, P.z, t);
+  }
   ddx = projected_half_vector_derivative(m.camera.position(), P, s.g, H, s.footprint.dp_dpx,
                                          m.light.L);
   ddy = projected_half_vector_derivative(m.camera.position(), P, s.g, H, s.footprint.dp_dpy,
@@ -72,19 +85,19 @@ RadianceWeights SpecaaMethod::shade_pixel(const FrameContext& ctx, int i, int j,
     ddx = (i & 1) ? own.h_perp - nx.h_perp : nx.h_perp - own.h_perp;
     ddy = (j & 1) ? own.h_perp - ny.h_perp : ny.h_perp - own.h_perp;
   } else {
-    specaa_analytic_derivatives(m, own, ctx.time.end, ddx, ddy);
+    specaa_analytic_derivatives(m, own, ctx.time.end, ddx, ddy, &cascades_);
   }
   return finite_or_fallback(specaa_weights(m, own, ddx, ddy, options_), ctx, i, j);
 }
 
 RadianceWeights SpecaaMethod::weights(const FrameContext& ctx, int i, int j) const {
   const double t = ctx.time.end;
-  const SpecaaSample own = specaa_sample(ctx.model, i + 0.5, j + 0.5, t);
+  const SpecaaSample own = specaa_sample(ctx.model, i + 0.5, j + 0.5, t, &cascades_);
   if (options_.derivatives == SpecaaDerivatives::analytic) {
     return shade_pixel(ctx, i, j, own, SpecaaSample{}, SpecaaSample{});
   }
-  const SpecaaSample nx = specaa_sample(ctx.model, (i ^ 1) + 0.5, j + 0.5, t);
-  const SpecaaSample ny = specaa_sample(ctx.model, i + 0.5, (j ^ 1) + 0.5, t);
+  const SpecaaSample nx = specaa_sample(ctx.model, (i ^ 1) + 0.5, j + 0.5, t, &cascades_);
+  const SpecaaSample ny = specaa_sample(ctx.model, i + 0.5, (j ^ 1) + 0.5, t, &cascades_);
   return shade_pixel(ctx, i, j, own, nx, ny);
 }
 
@@ -101,7 +114,8 @@ void SpecaaMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, i
   grid.resize(static_cast<size_t>(w) * (qy1 - qy0));
   for (int j = qy0; j < qy1; ++j) {
     for (int i = qx0; i < qx1; ++i)
-      grid[(j - qy0) * w + (i - qx0)] = specaa_sample(ctx.model, i + 0.5, j + 0.5, ctx.time.end);
+      grid[(j - qy0) * w + (i - qx0)] =
+          specaa_sample(ctx.model, i + 0.5, j + 0.5, ctx.time.end, &cascades_);
   }
   auto at = [&](int i, int j) -> const SpecaaSample& { return grid[(j - qy0) * w + (i - qx0)]; };
   for (int j = y0; j < y1; ++j) {

@@ -37,6 +37,7 @@
 #pragma once
 
 #include "methods/fallback.h"
+#include "methods/host_cascades.h"
 #include "methods/method.h"
 #include "scene/footprint.h"
 #include "shading/specular_aa.h"
@@ -51,11 +52,14 @@ struct SpecaaSample {
   ShadingFrame frame;
   vec2 h_perp{0};
 };
-SpecaaSample specaa_sample(const SceneModel& m, double px, double py, double t);
+// `cascades`: the frame's cascade fields (methods/host_cascades.h) where they are active,
+// else every wave of the model is summed.
+SpecaaSample specaa_sample(const SceneModel& m, double px, double py, double t,
+                           const HostCascades* cascades = nullptr);
 
 // The analytic derivatives (dh_perp/dpx, dh_perp/dpy) at a sample.
 void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, double t, vec2& ddx,
-                                 vec2& ddy);
+                                 vec2& ddy, const HostCascades* cascades = nullptr);
 
 // The pixel value for a centre sample and its derivatives.
 RadianceWeights specaa_weights(const SceneModel& m, const SpecaaSample& s, const vec2& ddx,
@@ -66,9 +70,13 @@ RadianceWeights specaa_weights(const SceneModel& m, const SpecaaSample& s, const
 // centre ray (what `point` returns) and is counted.
 class SpecaaMethod final : public Method, public FallbackCounter {
  public:
-  explicit SpecaaMethod(SpecaaOptions o) : options_(o) {}
+  explicit SpecaaMethod(SpecaaOptions o, bool cascade_fields = true)
+      : options_(o), cascades_(cascade_fields) {}
   std::string name() const override { return "specaa"; }
-  void begin_frame(const FrameContext&) override { reset_fallbacks(); }
+  void begin_frame(const FrameContext& ctx) override {
+    reset_fallbacks();
+    cascades_.build(ctx);
+  }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
   // Quad derivatives share samples: a tile samples its quad-aligned cover once.
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
@@ -79,6 +87,7 @@ class SpecaaMethod final : public Method, public FallbackCounter {
   RadianceWeights shade_pixel(const FrameContext& ctx, int i, int j, const SpecaaSample& own,
                               const SpecaaSample& nx, const SpecaaSample& ny) const;
   SpecaaOptions options_;
+  HostCascades cascades_;
 };
 
 }  // namespace sg

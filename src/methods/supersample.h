@@ -10,6 +10,10 @@
 // shortest waves as kernel/intersect.glsl allows, with --intersect-tolerance taken per
 // sample cell (divided by the larger of S_x, S_y: stratified_intersect_tolerance), so that
 // a hit moves by at most that fraction of the cell its sample stands for.
+// `supersample` with T = 1 reads a scene's lattice cascades from their FFT fields at the
+// display time, as `point` does (`--cascades fields`, kernel/cascade_fields.glsl); with
+// T > 1 its samples take times the fields are not built for, and the cascades are their
+// lattice's sines among the waves, exactly.
 #pragma once
 
 #include <algorithm>
@@ -29,8 +33,11 @@ class StratifiedMethod final : public Method {
  public:
   StratifiedMethod(std::string name, StratifiedSettings settings,
                    Precision precision = Precision::float64,
-                   double intersect_tolerance = kDefaultIntersectTolerance)
-      : name_(std::move(name)), settings_(settings), inputs_(1, precision, intersect_tolerance) {}
+                   double intersect_tolerance = kDefaultIntersectTolerance,
+                   bool cascade_fields = false)
+      : name_(std::move(name)),
+        settings_(settings),
+        inputs_(1, precision, intersect_tolerance, 1, cascade_fields) {}
   std::string name() const override { return name_; }
   void begin_frame(const FrameContext& ctx) override { inputs_.build(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {

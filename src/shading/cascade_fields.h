@@ -5,10 +5,11 @@
 // waves' sums, with a two-texel header per cascade. The per-pixel cost is then a few
 // fetches per cascade whatever its waves (docs/ocean.md, "Shading from the cascades").
 //
-// Which methods read them: `point`, `staa-temporal` and `staa` (CPU engine), on flat
-// water. Elsewhere (displaced water, the sampling methods whose rays take other times, the
-// baselines, the GL engine) the cascades are their lattice sines among the waves, exactly,
-// at a cost that follows the waves.
+// Which methods read them, on flat water: `point`, `supersample` with T = 1, `staa-temporal`
+// and `staa` (both engines), `lean`, `specaa` and `bruneton` (CPU engine, through
+// methods/host_cascades.h). Elsewhere (displaced water, `reference` and `supersample` with
+// T > 1, whose rays take other times, `taa`, `microspec`) the cascades are their lattice
+// sines among the waves, exactly, at a cost that follows the waves.
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,40 @@
+#include "methods/host_cascades.h"
+
+#include "shading/cascade_fields.h"
+
+namespace sg {
+
+void HostCascades::build(const FrameContext& ctx) {
+  const SceneModel& m = ctx.model;
+  active_ = enabled_ && cascade_fields_apply(m);
+  explicit_ = nullptr;
+  if (!active_) return;
+  inputs_.build(ctx);
+  explicit_ = &inputs_.d().cascades->explicit_waves(m);
+  // The kernel frame's camera-relative coordinates (shading/kernel_frame.cpp): a frame
+  // model holds a moving camera at the display time.
+  origin_ = vec2(m.camera.position().x, m.camera.position().z);
+}
+
+vec2 HostCascades::gradient(const vec3& p) const {
+  if (!active_) return vec2(0);
+  const kd::vec2 q = relative(p);
+  return kd::cascade_gradient(wave_buffer(inputs_.d()), inputs_.d().frame,
+                              inputs_.d().frame.segments, q.x, q.y);
+}
+
+Hessian HostCascades::hessian(const vec3& p) const {
+  if (!active_) return Hessian{};
+  const kd::vec2 q = relative(p);
+  const kd::vec3 h = kd::cascade_hessian(wave_buffer(inputs_.d()), inputs_.d().frame, q.x, q.y);
+  return Hessian{h.x, h.y, h.z};
+}
+
+HostCascades::Moments HostCascades::moments(const vec3& p, const mat2& J) const {
+  if (!active_) return Moments{};
+  const kd::CascadeMoments r =
+      kd::cascade_footprint_moments(wave_buffer(inputs_.d()), inputs_.d().frame, relative(p), J);
+  return Moments{r.mean, mat2(r.cov.x, r.cov.y, r.cov.y, r.cov.z)};
+}
+
+}  // namespace sg
