@@ -113,6 +113,12 @@ void CascadeFft::spectra_at(double t, Spectra spectra, Zero zero) {
 }
 
 CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
+  CascadeGrid g;
+  evaluate(t, curvatures, g);
+  return g;
+}
+
+void CascadeFft::evaluate(double t, bool curvatures, CascadeGrid& g) {
   using cd = std::complex<double>;
   const size_t count = static_cast<size_t>(n_) * n_;
   a_.resize(count);
@@ -137,7 +143,6 @@ CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
   inverse_2d(a_);
   inverse_2d(b_);
   if (curvatures) inverse_2d(c_);
-  CascadeGrid g;
   g.n = n_;
   g.patch_size = patch_size_;
   g.time = t;
@@ -158,11 +163,20 @@ CascadeGrid CascadeFft::evaluate(double t, bool curvatures) {
       g.curv_xz[e] = b_[e].imag();
       g.curv_zz[e] = c_[e].imag();
     }
+  } else {
+    g.curv_xx.clear();
+    g.curv_xz.clear();
+    g.curv_zz.clear();
   }
-  return g;
 }
 
 CascadeGrid CascadeFft::evaluate_slopes(double t) {
+  CascadeGrid g;
+  evaluate_slopes(t, g);
+  return g;
+}
+
+void CascadeFft::evaluate_slopes(double t, CascadeGrid& g) {
   using cd = std::complex<double>;
   const size_t count = static_cast<size_t>(n_) * n_;
   a_.resize(count);
@@ -174,22 +188,34 @@ CascadeGrid CascadeFft::evaluate_slopes(double t) {
       },
       [&](size_t e) { a_[e] = cd(0.0); });
   inverse_2d(a_);
-  CascadeGrid g;
   g.n = n_;
   g.patch_size = patch_size_;
   g.time = t;
+  g.height.clear();
+  g.curv_xx.clear();
+  g.curv_xz.clear();
+  g.curv_zz.clear();
   g.slope_x.resize(count);
   g.slope_z.resize(count);
   for (size_t e = 0; e < count; ++e) {
     g.slope_x[e] = a_[e].real();
     g.slope_z[e] = a_[e].imag();
   }
-  return g;
 }
 
 std::vector<MomentLevel> moment_chain(const CascadeGrid& g) {
   std::vector<MomentLevel> levels;
-  MomentLevel l0;
+  moment_chain(g, levels);
+  return levels;
+}
+
+void moment_chain(const CascadeGrid& g, std::vector<MomentLevel>& levels) {
+  int count_levels = 1;
+  for (int n = g.n; n > 1 && n % 2 == 0; n /= 2)
+    ++count_levels;
+  levels.resize(static_cast<size_t>(count_levels));
+  const bool curvatures = !g.curv_xx.empty();
+  MomentLevel& l0 = levels[0];
   l0.n = g.n;
   const size_t count = static_cast<size_t>(g.n) * g.n;
   l0.mx = g.slope_x;
@@ -205,19 +231,15 @@ std::vector<MomentLevel> moment_chain(const CascadeGrid& g) {
   l0.hxx = g.curv_xx;
   l0.hxz = g.curv_xz;
   l0.hzz = g.curv_zz;
-  const bool curvatures = !g.curv_xx.empty();
-  levels.push_back(std::move(l0));
-  while (levels.back().n > 1 && levels.back().n % 2 == 0) {
-    const MomentLevel& f = levels.back();
-    MomentLevel c;
+  for (size_t l = 1; l < levels.size(); ++l) {
+    const MomentLevel& f = levels[l - 1];
+    MomentLevel& c = levels[l];
     c.n = f.n / 2;
     const size_t cc = static_cast<size_t>(c.n) * c.n;
     for (auto* v : {&c.mx, &c.mz, &c.mxx, &c.mxz, &c.mzz})
       v->resize(cc);
-    if (curvatures) {
-      for (auto* v : {&c.hxx, &c.hxz, &c.hzz})
-        v->resize(cc);
-    }
+    for (auto* v : {&c.hxx, &c.hxz, &c.hzz})
+      v->resize(curvatures ? cc : 0);
     auto avg = [&](const std::vector<double>& src, std::vector<double>& dst) {
       for (int q = 0; q < c.n; ++q) {
         for (int p = 0; p < c.n; ++p) {
@@ -237,9 +259,7 @@ std::vector<MomentLevel> moment_chain(const CascadeGrid& g) {
       avg(f.hxz, c.hxz);
       avg(f.hzz, c.hzz);
     }
-    levels.push_back(std::move(c));
   }
-  return levels;
 }
 
 }  // namespace sg

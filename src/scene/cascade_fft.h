@@ -61,6 +61,10 @@ class CascadeFft {
   // The slopes alone at time t (no height): one transform of E(k_x Z) + i E(k_z Z)
   // (kernel/cascade_spectrum.glsl, cascade_slope_spectrum).
   CascadeGrid evaluate_slopes(double t);
+  // The same into `g`, whose storage is kept from call to call (a frame's fields reuse
+  // their grids instead of allocating, and the memory's pages, anew).
+  void evaluate(double t, bool curvatures, CascadeGrid& g);
+  void evaluate_slopes(double t, CascadeGrid& g);
   // set_lattice, then evaluate(t).
   CascadeGrid evaluate(const CascadeDesc& c, const Dispersion& water, double t);
   // The unnormalised inverse 2-D DFT of `data` (n x n, row q holds entries q * n + p), in
@@ -94,5 +98,7 @@ struct MomentLevel {
 
 // Levels 0 (the grid, n x n) to log2 n (one texel: the whole patch).
 std::vector<MomentLevel> moment_chain(const CascadeGrid& g);
+// The same into `levels`, whose storage is kept from call to call.
+void moment_chain(const CascadeGrid& g, std::vector<MomentLevel>& levels);
 
 }  // namespace sg

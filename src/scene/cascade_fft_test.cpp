@@ -201,5 +201,44 @@ TEST(CascadeFft, MomentChainIsTheBlockAverage) {
   EXPECT_NEAR(top.mz[0], 0, 1e-14);
 }
 
+TEST(CascadeFft, ReusedGridAndChainAreTheFreshOnes) {
+  // A frame's fields evaluate into the same grid and chain at every instant (the display
+  // time's with curvatures, the others' slopes alone): whatever the grid held before, the
+  // result is the fresh evaluation's, bit for bit, and a slopes-only grid holds no stale
+  // curvature.
+  const int n = 16;
+  const CascadeDesc c = full_cascade(n, 25, 9);
+  CascadeFft fft(n);
+  fft.set_lattice(c, Dispersion{});
+  CascadeGrid grid;
+  std::vector<MomentLevel> chain;
+  for (int round = 0; round < 2; ++round) {
+    for (const bool curvatures : {true, false}) {
+      const double t = 1.5 + round + (curvatures ? 0.0 : 0.25);
+      if (curvatures) {
+        fft.evaluate(t, true, grid);
+      } else {
+        fft.evaluate_slopes(t, grid);
+      }
+      moment_chain(grid, chain);
+      const CascadeGrid fresh = curvatures ? fft.evaluate(t, true) : fft.evaluate_slopes(t);
+      const std::vector<MomentLevel> want = moment_chain(fresh);
+      EXPECT_EQ(grid.slope_x, fresh.slope_x);
+      EXPECT_EQ(grid.slope_z, fresh.slope_z);
+      EXPECT_EQ(grid.height, fresh.height);
+      EXPECT_EQ(grid.curv_xz, fresh.curv_xz);
+      EXPECT_EQ(grid.curv_xx.empty(), !curvatures);
+      ASSERT_EQ(chain.size(), want.size());
+      for (size_t l = 0; l < chain.size(); ++l) {
+        EXPECT_EQ(chain[l].n, want[l].n);
+        EXPECT_EQ(chain[l].mxx, want[l].mxx) << "level " << l;
+        EXPECT_EQ(chain[l].mz, want[l].mz) << "level " << l;
+        EXPECT_EQ(chain[l].hzz, want[l].hzz) << "level " << l;
+        EXPECT_EQ(chain[l].hxx.empty(), !curvatures) << "level " << l;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sg

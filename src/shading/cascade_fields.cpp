@@ -75,6 +75,7 @@ void CascadeFields::prepare(const SceneModel& m) {
     ffts_.push_back(std::move(fft));
     cov_.push_back(cov);
   }
+  scratch_.assign(ffts_.size(), Scratch{});
   model_ = m.id;
 }
 
@@ -101,18 +102,27 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
   }
   texels.resize(at);
   tbb::parallel_for(size_t(0), cs.size(), [&](size_t c) {
-    std::vector<MomentLevel> chain;
+    // The cascade's grid and chain, kept from frame to frame (no allocation per frame).
+    CascadeGrid& grid = scratch_[c].grid;
+    std::vector<MomentLevel>& chain = scratch_[c].chain;
     V4* out = texels.data() + offset[c];
     // A zero shutter: every instant is the display time's.
     const bool still = !(ft.duration() > 0);
-    if (still) chain = moment_chain(ffts_[c]->evaluate(ft.end, true));
+    if (still) {
+      ffts_[c]->evaluate(ft.end, true, grid);
+      moment_chain(grid, chain);
+    }
     for (int k = 0; k <= segments; ++k) {
       const double t = ft.end - ft.duration() * (segments - k) / segments;
       // The display time's curvatures and second moments; the other instants' slopes alone
       // (what the kernel reads there: cascade_fields.glsl), the rest of their texels 0.
       if (!still) {
-        chain = moment_chain(k == segments ? ffts_[c]->evaluate(t, true)
-                                           : ffts_[c]->evaluate_slopes(t));
+        if (k == segments) {
+          ffts_[c]->evaluate(t, true, grid);
+        } else {
+          ffts_[c]->evaluate_slopes(t, grid);
+        }
+        moment_chain(grid, chain);
       }
       for (const MomentLevel& lv : chain) {
         const size_t count = static_cast<size_t>(lv.n) * lv.n;

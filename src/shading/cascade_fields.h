@@ -52,6 +52,12 @@ class CascadeFields {
   std::vector<std::unique_ptr<CascadeFft>> ffts_;
   std::vector<int> lattices_;    // each field's grid side (the lattice's, oversampled)
   std::vector<glm::dvec3> cov_;  // each cascade's sum A^2 / 2 k k^T (xx, xz, zz)
+  // Each cascade's grid and chain, their storage kept from frame to frame.
+  struct Scratch {
+    CascadeGrid grid;
+    std::vector<MomentLevel> chain;
+  };
+  std::vector<Scratch> scratch_;
   WaveField explicit_;
   double amplitude_sum_ = 0, slope_sum_ = 0;
 };
