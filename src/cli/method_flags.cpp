@@ -121,9 +121,10 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->capture_default_str()
       ->check(number_in(0, 16));
   choice(app, "--cascades", o.cascade_fields, {{"fields", true}, {"waves", false}},
-         "point, supersample with T = 1, staa-temporal, staa, lean, specaa, bruneton on flat "
-         "water: shade lattice cascades from their FFT fields (a cost fixed per cascade) or "
-         "as their lattice's sines among the waves (exact, a cost that follows the waves)");
+         "point, supersample with T = 1, staa-temporal, staa (flat and displaced water), lean, "
+         "specaa, bruneton (flat water): shade lattice cascades from their FFT fields (a cost "
+         "fixed per cascade) or as their lattice's sines among the waves (exact, a cost that "
+         "follows the waves)");
 
   // staa, staa-temporal (methods/staa.h)
   StaaOptions& s = o.staa;

@@ -34,9 +34,13 @@ int not_power_of_two(int n) {
 
 }  // namespace
 
-int pass_samples(int waves, int segments, bool displaced) {
-  const long per_sample = displaced ? 48L * (waves + 1) + 300
-                                    : long(waves + 1) * (segments + 2) + 300L * segments + 100;
+int pass_samples(int waves, int segments, bool displaced, int cascades) {
+  long per_sample = displaced ? 48L * (waves + 1) + 300
+                              : long(waves + 1) * (segments + 2) + 300L * segments + 100;
+  // Each cascade read from its fields: a 16-texel cubic per read, one read per sample on
+  // flat water, one per march step on displaced water (its steps follow the fields'
+  // bounds, looser than the waves': 200 steps counted).
+  per_sample += long(cascades) * (displaced ? 16L * 200 : 16L);
   return int(std::clamp<long>(kPassIterations / per_sample, 1, 1 << 20));
 }
 
@@ -160,13 +164,15 @@ void GlEngine::upload(const FrameContext& ctx) {
   if (v_.entry == KernelEntry::stratified) {
     set_uniforms(u, "counts", v_.counts);
     u.set("pass_range", kf::ivec2(0, 0));
-    pass_samples_ = pass_samples(inputs_->frame.wave_count, 0, inputs_->frame.displaced);
+    pass_samples_ = pass_samples(inputs_->frame.wave_count, 0, inputs_->frame.displaced,
+                                 inputs_->frame.cascade_count);
   }
   if (v_.entry == KernelEntry::reference) {
     set_uniforms(u, "ref_params", v_.reference);
     u.set("ref_pass", 0);
     u.set("pass_range", kf::ivec2(0, 0));
-    pass_samples_ = pass_samples(inputs_->frame.wave_count, segments, inputs_->frame.displaced);
+    pass_samples_ = pass_samples(inputs_->frame.wave_count, segments, inputs_->frame.displaced,
+                                 inputs_->frame.cascade_count);
   }
   if (v_.entry == KernelEntry::staa) {
     set_uniforms(u, "params", v_.params);

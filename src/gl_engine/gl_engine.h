@@ -57,9 +57,10 @@ const char* gl_methods();
 // every loop of the invocation and the samples after that point are lost (the GL
 // reference's former bias, docs/reference-renderer.md). The estimate per sample is the
 // wave sums (waves x (K + 2) on flat water, waves x 48 march and refinement steps on
-// displaced water) plus the crossing search (300 per sub-interval).
+// displaced water) plus the crossing search (300 per sub-interval), plus the cascades
+// read from their fields (`cascades` of them).
 inline constexpr int kPassIterations = 8000;
-int pass_samples(int waves, int segments, bool displaced);
+int pass_samples(int waves, int segments, bool displaced, int cascades = 0);
 
 class GlEngine {
  public:

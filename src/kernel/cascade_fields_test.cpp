@@ -10,7 +10,10 @@
 //    mean; a footprint far below a texel is the point sample and no covariance;
 //  - the baselines' share: the Hessian at grid points is the direct sum; the moments over
 //    a footprint (LEAN's filter of the chain) against the direct sum's mean and covariance
-//    over the footprint's parallelogram, measured and bounded.
+//    over the footprint's parallelogram, measured and bounded;
+//  - displaced water: the height at grid points is the direct sum, the interpolant's
+//    gradient its finite differences, the interpolant within its bounds at random points,
+//    and the march's hits on the interpolated surface, the ray above it before them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -127,10 +130,11 @@ TEST(CascadeFields, CubicInterpolationErrorBetweenGridPoints) {
   }
   const double rel = std::sqrt(err2 / ref2);
   std::printf("between grid points: RMS |fields - direct| / RMS slope = %.4f\n", rel);
-  // Measured 0.0248 on this sea with the fields' grid twice the lattice's, 0.2465 on the
-  // lattice's own grid (the top octave sampled 2 to 4 times a period); a bilinear blend or
-  // a misplaced texel centre gives 0.1 or more.
-  EXPECT_LT(rel, 0.05);
+  // Measured 0.0003 on this sea with the fields' grid 8 times the lattice's
+  // (cascade_oversampling), 0.0248 with it twice, 0.2465 on the lattice's own grid (the
+  // top octave sampled 2 to 4 times a period); a bilinear blend or a misplaced texel
+  // centre gives 0.1 or more.
+  EXPECT_LT(rel, 0.002);
   EXPECT_GT(rel, 0.0);
 }
 
@@ -144,8 +148,9 @@ TEST(CascadeFields, ChainSecondMomentsAverageToTheSlopeVariance) {
   for (int c = 0; c < 2; ++c) {
     const kd::Cascade cc = kd::cascade_at(b, in.frame, c);
     const CascadeDesc& d = sea.scene.surface.cascades[c];
-    EXPECT_EQ(cc.n, 32 * kCascadeOversampling);
-    EXPECT_EQ(cc.levels, 6 + (kCascadeOversampling == 2));
+    EXPECT_EQ(cc.n, 32 * cascade_oversampling(32));
+    EXPECT_EQ(cc.n, 256);
+    EXPECT_EQ(cc.levels, 9);
     EXPECT_DOUBLE_EQ(cc.size, d.patch_size);
     double var = 0;
     for (const Wave& w : cascade_waves(d, Dispersion{}))
@@ -329,10 +334,119 @@ TEST(CascadeFields, FootprintMomentsAreTheSlopesOverTheFootprint) {
       "footprint moments over %d footprints: RMS mean error / RMS slope %.4f, covariance "
       "error / covariance (Frobenius, RMS) %.4f; mean footprint variance / whole %.3f\n",
       count, mean_rel, cov_rel, var_sum / count / sea.variance);
-  // Measured 0.0812 and 0.147 (the boxes are the grid's, not the parallelogram); the
-  // whole covariance and no mean everywhere give 0.64 and more.
+  // Measured 0.0812 and 0.147 on the grid twice the lattice's, 0.0912 and 0.191 on the
+  // 8x grid (the boxes are the grid's, not the parallelogram); the whole covariance and no
+  // mean everywhere give 0.64 and more.
   EXPECT_LT(mean_rel, 0.12);
   EXPECT_LT(cov_rel, 0.25);
+}
+
+double direct_height(const std::vector<Wave>& waves, double x, double z, double t) {
+  double h = 0;
+  for (const Wave& w : waves)
+    h += w.amplitude *
+         std::sin(w.wave_vector.x * x + w.wave_vector.y * z + w.angular_frequency * t + w.phase);
+  return h;
+}
+
+TEST(CascadeFields, HeightAndItsInterpolantsBounds) {
+  Sea sea = cascade_sea();
+  sea.scene.surface.geometry = Geometry::displaced;
+  const SceneModel m(sea.scene);
+  const FrameTime ft = frame_time(sea.scene, 2);
+  KernelInputsD in;
+  build_kernel_inputs(m, ft, 1, 0, in, kDefaultIntersectTolerance, 1, true);
+  ASSERT_EQ(in.frame.cascade_count, 2);
+  const kd::WaveBuffer b = wave_buffer(in);
+  const vec3 cam = sea.scene.camera.position;
+  const CascadeDesc& c0 = sea.scene.surface.cascades[0];
+  const double h = c0.patch_size / c0.lattice;
+  double amp = 0;
+  for (const Wave& w : sea.waves)
+    amp += w.amplitude;
+  // At the coarser lattice's points (grid points of both fields): the direct sum.
+  Pcg32 rng(8, 1);
+  double worst = 0;
+  for (int s = 0; s < 40; ++s) {
+    const double x = (std::floor(cam.x / h) + std::floor(40 * rng.uniform() - 20)) * h;
+    const double z = (std::floor(cam.z / h) + std::floor(40 * rng.uniform())) * h;
+    const double got = kd::cascade_height_gradient(b, in.frame, x - cam.x, z - cam.z).x;
+    worst = std::max(worst, std::abs(got - direct_height(sea.waves, x, z, ft.end)));
+  }
+  std::printf("height at grid points: |fields - direct| %.3g; sum A %.3g\n", worst, amp);
+  EXPECT_LT(worst, 1e-11 * amp);
+  // Between them: the gradient is the interpolant's own (central differences), and the
+  // interpolant stays within the frame's bounds: height, slope along a direction and
+  // second derivative along one.
+  const kd::vec3 cb = kd::cascade_bounds(b, in.frame);
+  EXPECT_LT(cb.x, amp) << "the interpolant's bound is tighter than the sines' sum A";
+  double grad_err = 0, grad_ref = 0, peak_h = 0, peak_s = 0, peak_c = 0;
+  const double e = 1e-4;
+  for (int s = 0; s < 400; ++s) {
+    const double x = 60 * rng.uniform() - 30, z = 60 * rng.uniform();
+    const kd::vec3 at = kd::cascade_height_gradient(b, in.frame, x, z);
+    auto hh = [&](double dx, double dz) {
+      return kd::cascade_height_gradient(b, in.frame, x + dx, z + dz).x;
+    };
+    const vec2 fd((hh(e, 0) - hh(-e, 0)) / (2 * e), (hh(0, e) - hh(0, -e)) / (2 * e));
+    grad_err = std::max(grad_err, length(vec2(at.y, at.z) - fd));
+    grad_ref = std::max(grad_ref, length(fd));
+    const double angle = 6.283 * rng.uniform();
+    const vec2 u(std::cos(angle), std::sin(angle));
+    const double dd = 1e-3;
+    const double second =
+        (hh(dd * u.x, dd * u.y) - 2 * at.x + hh(-dd * u.x, -dd * u.y)) / (dd * dd);
+    peak_h = std::max(peak_h, std::abs(at.x));
+    peak_s = std::max(peak_s, std::abs(at.y * u.x + at.z * u.y));
+    peak_c = std::max(peak_c, std::abs(second));
+  }
+  std::printf(
+      "interpolant: gradient vs differences %.3g of %.3g; peaks / bounds: height %.3g / %.3g, "
+      "slope %.3g / %.3g, curvature %.3g / %.3g\n",
+      grad_err, grad_ref, peak_h, cb.x, peak_s, cb.y, peak_c, cb.z);
+  EXPECT_LT(grad_err, 1e-6 * grad_ref);
+  EXPECT_LE(peak_h, cb.x);
+  EXPECT_LE(peak_s, cb.y);
+  EXPECT_LE(peak_c, cb.z);
+  // The frame's bounds are the fields' (no explicit waves here).
+  EXPECT_DOUBLE_EQ(in.frame.amplitude_bound, cb.x);
+  EXPECT_DOUBLE_EQ(in.frame.slope_bound, cb.y);
+}
+
+TEST(CascadeFields, MarchHitsTheInterpolatedSurface) {
+  Sea sea = cascade_sea();
+  sea.scene.surface.geometry = Geometry::displaced;
+  const SceneModel m(sea.scene);
+  const FrameTime ft = frame_time(sea.scene, 2);
+  KernelInputsD in;
+  build_kernel_inputs(m, ft, 1, 0, in, 0.0, 1, true);
+  const kd::WaveBuffer b = wave_buffer(in);
+  const kd::Frame& f = in.frame;
+  int hits = 0;
+  double worst_surface = 0, worst_above = 0;
+  for (int j = 0; j < 36; j += 3) {
+    for (int i = 0; i < 64; i += 3) {
+      const kd::vec3 d = normalize(kd::camera_direction(f.camera, i + 0.5, j + 0.5));
+      const kd::RayHit hit = kd::intersect_displaced(b, f, f.camera.position, d, 0.0);
+      if (!hit.hit) continue;
+      ++hits;
+      // The ray's own point at the hit's parameter (the hit's y is set to the surface's).
+      const kd::vec3 on_ray = f.camera.position + hit.s * d;
+      const double surface = kd::cascade_height_gradient(b, f, on_ray.x, on_ray.z).x;
+      worst_surface = std::max(worst_surface, std::abs(on_ray.y - surface));
+      // Before the hit the ray is above the surface (200 looks along it).
+      for (int q = 1; q < 200; ++q) {
+        const kd::vec3 p = f.camera.position + (hit.s * q / 200.0) * d;
+        const double below = kd::cascade_height_gradient(b, f, p.x, p.z).x - p.y;
+        worst_above = std::max(worst_above, below);
+      }
+    }
+  }
+  std::printf("march on the fields: %d hits, |y - h| at the hit %.3g, deepest dip before %.3g\n",
+              hits, worst_surface, worst_above);
+  EXPECT_GT(hits, 100);
+  EXPECT_LT(worst_surface, 1e-6);
+  EXPECT_LE(worst_above, 1e-6);
 }
 
 }  // namespace

@@ -29,6 +29,13 @@
 // by rounding only) hits there. The march stops after kMaxMarchSteps steps (a graze along
 // the whole slab at the smallest step), as a miss.
 //
+// Cascades shaded from their fields (cascade_grid.glsl) are marched as Catmull-Rom's
+// bicubic of their height grids, whole (no tolerance leaves any of them out), summed
+// before the first block: the frame's bounds and each prefix's add the interpolant's
+// bounds (cascade_interpolant_bounds: height, slope and curvature from the grids' maxima),
+// so the steps stay safe; the fields are the display time's (dt = 0: the methods that read
+// them take no other time).
+//
 // The waves a pixel cannot see in the geometry (Frame.intersect_tolerance = tau > 0).
 // Leaving out the waves j >= n (the shortest: the wave buffer is sorted by |k|) changes
 // the height by at most e_n = sum_{j>=n} A_j, the suffix's amplitude (waves.glsl). At ray
@@ -95,11 +102,14 @@ SG_FN real pixel_angle(IN(Camera) c, vec3 d) {
   return min(2.0 * c.half_w / c.width, 2.0 * c.half_h / c.height) * cphi * cphi;
 }
 
-// f(s) = y(s) - h at the point o + s d, the first n waves summed.
+// f(s) = y(s) - h at the point o + s d, the first n waves summed (and the cascades' fields,
+// whole: cascade_grid.glsl).
 SG_FN real height_above_first(IN(WaveBuffer) waves, IN(Frame) f, int n, vec3 o, vec3 d, real s,
                               real dt) {
   vec3 p = o + s * d;
-  return p.y - water_height_first(waves, f, n, p.x, p.z, dt);
+  real h = water_height_first(waves, f, n, p.x, p.z, dt);
+  if (f.cascade_count > 0) h += cascade_height_gradient(waves, f, p.x, p.z).x;
+  return p.y - h;
 }
 
 // The first n waves' bounds on the ray: the slab |y| <= amplitude (entry and exit
@@ -119,8 +129,9 @@ SG_FN MarchSet march_set(IN(WaveBuffer) waves, IN(Frame) f, int n, vec3 o, vec3 
   real slope = f.slope_bound;
   if (n < f.wave_count) {
     vec4 b = wave_bounds_at(waves, f, n);
-    amax = b.y;
-    slope = b.z;
+    vec3 cb = cascade_bounds(waves, f);
+    amax = b.y + cb.x;
+    slope = b.z + cb.y;
   }
   m.lip = abs(d.y) + slope * length(vec2(d.x, d.z));
   m.s_enter = 0.0;
@@ -174,7 +185,14 @@ SG_FN MarchProbe march_probe(IN(WaveBuffer) waves, IN(Frame) fr, IN(MarchSet) m,
   r.f = p.y;
   real dxz = length(vec2(d.x, d.z));
   real e_all = wave_bounds_at(waves, fr, m.n).x;  // the amplitude of the waves past the set
+  // The cascades' fields first, whole (their bounds beside each prefix's).
+  vec3 cb = cascade_bounds(waves, fr);
   vec2 hs = vec2(0.0);
+  if (fr.cascade_count > 0) {
+    vec3 hc = cascade_height_gradient(waves, fr, p.x, p.z);
+    hs = vec2(hc.x, hc.y * d.x + hc.z * d.z);
+    r.f = p.y - hc.x;
+  }
   for (int b = 0; b < m.n; b += kMarchBlock) {
     int hi = min(m.n, b + kMarchBlock);
     hs += water_height_slope(waves, fr, b, hi, p.x, p.z, dt, d.x, d.z);
@@ -183,9 +201,10 @@ SG_FN MarchProbe march_probe(IN(WaveBuffer) waves, IN(Frame) fr, IN(MarchSet) m,
     real e = hi < m.n ? max(bounds.x - e_all, 0.0) + graze_depth() : 0.0;
     real g = fn - e;
     if (g > 0.0) {
-      real lip = abs(d.y) + bounds.z * dxz;
+      real lip = abs(d.y) + (bounds.z + cb.y) * dxz;
       r.step =
-          max(r.step, max(g / lip, march_second_order_step(g, d.y - hs.y, bounds.w * dxz * dxz)));
+          max(r.step,
+              max(g / lip, march_second_order_step(g, d.y - hs.y, (bounds.w + cb.z) * dxz * dxz)));
     }
     if (hi == m.n) {
       r.full = true;
@@ -195,6 +214,11 @@ SG_FN MarchProbe march_probe(IN(WaveBuffer) waves, IN(Frame) fr, IN(MarchSet) m,
     if (r.step >= max((fn + e) / m.lip, min_step)) break;
   }
   if (r.full) r.step = max(r.step, max(r.f / m.lip, min_step));
+  if (r.full && m.n == 0 && fr.cascade_count > 0 && r.f > 0.0) {
+    // The cascades alone: their second-order step, from the interpolant's slope along the
+    // ray and its curvature bound.
+    r.step = max(r.step, march_second_order_step(r.f, d.y - hs.y, cb.z * dxz * dxz));
+  }
   return r;
 }
 

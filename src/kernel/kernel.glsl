@@ -10,6 +10,7 @@
 #include "kernel/rng.glsl"
 #include "kernel/camera.glsl"
 #include "kernel/waves.glsl"
+#include "kernel/cascade_grid.glsl"
 #include "kernel/light.glsl"
 #include "kernel/radiance.glsl"
 #include "kernel/disk_coverage.glsl"

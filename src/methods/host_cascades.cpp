@@ -6,7 +6,9 @@ namespace sg {
 
 void HostCascades::build(const FrameContext& ctx) {
   const SceneModel& m = ctx.model;
-  active_ = enabled_ && cascade_fields_apply(m);
+  // Flat water only: these methods intersect displaced water on the host, over the
+  // model's waves.
+  active_ = enabled_ && cascade_fields_apply(m) && !m.displaced();
   explicit_ = nullptr;
   if (!active_) return;
   inputs_.build(ctx);

@@ -161,12 +161,12 @@ struct MethodOptions {
   // (kernel/intersect.glsl; the default is kDefaultIntersectTolerance of
   // shading/kernel_frame.h); 0: every wave.
   double intersect_tolerance = 0.25;
-  // --cascades fields|waves: point, supersample with T = 1, staa-temporal, staa, lean,
-  // specaa and bruneton on flat water shade a scene's lattice cascades from their FFT
-  // fields (kernel/cascade_fields.glsl; a cost per pixel fixed by the cascades), or as
-  // their lattice's sines among the waves (exact, a cost that follows the waves). The
-  // other methods (reference, supersample with T > 1, taa, microspec) and displaced water
-  // take the sines.
+  // --cascades fields|waves: point, supersample with T = 1, staa-temporal and staa (flat
+  // and displaced water), lean, specaa and bruneton (flat water) shade a scene's lattice
+  // cascades from their FFT fields (kernel/cascade_grid.glsl, cascade_fields.glsl; a cost
+  // per pixel fixed by the cascades), or as their lattice's sines among the waves (exact,
+  // a cost that follows the waves). The other methods (reference, supersample with T > 1,
+  // taa, microspec) take the sines.
   bool cascade_fields = true;
   StaaOptions staa;
   LeanOptions lean;

@@ -2,7 +2,10 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include "kernel/kernel_double.h"
 
 namespace sg {
 
@@ -20,12 +23,12 @@ size_t instant_texels(int n) {
   return 2 * ((4 * static_cast<size_t>(n) * n - 1) / 3);
 }
 
-// The same lattice on a grid kCascadeOversampling times finer: each lattice point at its
+// The same lattice on a grid cascade_oversampling times finer: each lattice point at its
 // own wave vector in the larger lattice (index m modulo the new size), the rest zero, so
 // that the inverse FFT samples the same surface more densely (a lattice's top octave,
 // sampled 2 to 4 times per period on its own grid, is 4 to 8 times on this one).
 CascadeDesc oversampled(const CascadeDesc& c) {
-  const int n = c.lattice, m = n * kCascadeOversampling;
+  const int n = c.lattice, m = n * cascade_oversampling(n);
   CascadeDesc o = c;
   o.lattice = m;
   auto d = std::make_shared<LatticeData>();
@@ -42,6 +45,31 @@ CascadeDesc oversampled(const CascadeDesc& c) {
   }
   o.data = d;
   return o;
+}
+
+// Bounds on the bicubic interpolant of g's heights (kernel/cascade_grid.glsl,
+// cascade_interpolant_bounds) from the grid's maxima, the differences wrapping around
+// the periodic patch.
+glm::dvec3 grid_interpolant_bounds(const CascadeGrid& g) {
+  const int n = g.n;
+  auto h = [&](int i, int j) {
+    return g.height[static_cast<size_t>((j + n) % n) * n + static_cast<size_t>((i + n) % n)];
+  };
+  double m0 = 0, mx = 0, mz = 0, m2 = 0, mxz = 0;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const double c = h(i, j);
+      m0 = std::max(m0, std::abs(c));
+      mx = std::max(mx, std::abs(h(i + 1, j) - c));
+      mz = std::max(mz, std::abs(h(i, j + 1) - c));
+      m2 = std::max(m2, std::abs(h(i - 1, j) - 2 * c + h(i + 1, j)));
+      m2 = std::max(m2, std::abs(h(i, j - 1) - 2 * c + h(i, j + 1)));
+      mxz = std::max(mxz, std::abs(h(i + 1, j + 1) - h(i + 1, j) - h(i, j + 1) + c));
+    }
+  }
+  const kd::vec3 b =
+      kd::cascade_interpolant_bounds(m0, kd::vec2(mx, mz), m2, mxz, g.patch_size / n);
+  return glm::dvec3(b.x, b.y, b.z);
 }
 
 }  // namespace
@@ -92,6 +120,10 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
                         R(L * (cam_z / L - std::floor(cam_z / L)))));
     texels.push_back(V4(R(cov_[c].x), R(cov_[c].y), R(cov_[c].z), R(log2_exact(lattices_[c]) + 1)));
   }
+  // The interpolants' bounds, summed over the cascades below (the display time's).
+  const size_t bounds_at = texels.size();
+  texels.push_back(V4(0));
+  std::vector<glm::dvec3> bounds(cs.size(), glm::dvec3(0.0));
   // Each cascade's data at its own offset, the cascades on oneTBB's threads (each
   // cascade's transforms share its rows among them too).
   std::vector<size_t> offset(cs.size());
@@ -111,6 +143,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
     if (still) {
       ffts_[c]->evaluate(ft.end, true, grid);
       moment_chain(grid, chain);
+      bounds[c] = grid_interpolant_bounds(grid);
     }
     for (int k = 0; k <= segments; ++k) {
       const double t = ft.end - ft.duration() * (segments - k) / segments;
@@ -119,6 +152,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
       if (!still) {
         if (k == segments) {
           ffts_[c]->evaluate(t, true, grid);
+          bounds[c] = grid_interpolant_bounds(grid);
         } else {
           ffts_[c]->evaluate_slopes(t, grid);
         }
@@ -127,10 +161,12 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
       for (const MomentLevel& lv : chain) {
         const size_t count = static_cast<size_t>(lv.n) * lv.n;
         const bool full = !lv.hxx.empty();
+        // Level 0's s_x^2 is never read (a grid point has no spread): the height there.
+        const std::vector<double>& second = &lv == &chain[0] && full ? grid.height : lv.mxx;
         for (size_t e = 0; e < count; ++e) {
           if (full) {
             *out++ = V4(R(lv.mx[e]), R(lv.mz[e]), R(lv.hxx[e]), R(lv.hzz[e]));
-            *out++ = V4(R(lv.hxz[e]), R(lv.mxx[e]), R(lv.mxz[e]), R(lv.mzz[e]));
+            *out++ = V4(R(lv.hxz[e]), R(second[e]), R(lv.mxz[e]), R(lv.mzz[e]));
           } else {
             *out++ = V4(R(lv.mx[e]), R(lv.mz[e]), R(0), R(0));
             *out++ = V4(R(0));
@@ -139,6 +175,11 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
       }
     }
   });
+  glm::dvec3 sum(0.0);
+  for (const glm::dvec3& b : bounds)
+    sum += b;
+  bounds_ = sum;
+  texels[bounds_at] = V4(R(sum.x), R(sum.y), R(sum.z), R(0));
   return base;
 }
 

@@ -197,6 +197,10 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
   if (fields) {
     f.cascade_count = static_cast<int>(m.scene.surface.cascades.size());
     f.cascade_base = out.cascades->append(m, ft, segments, xc, zc, out.texels);
+    // The surface the kernel sees: the explicit waves and the fields' interpolants.
+    const glm::dvec3 cb = out.cascades->interpolant_bounds();
+    f.amplitude_bound = R(w.amplitude_bound() + cb.x);
+    f.slope_bound = R(w.slope_bound() + cb.y);
   }
 }
 
