@@ -63,6 +63,18 @@ Sea cascade_sea(double shutter = 1.0) {
   return sea;
 }
 
+// One frame of a sea's fields: its model, time and the kernel's inputs in double (the
+// cascades as fields).
+struct Fields {
+  Fields(const Scene& s, int frame, int segments, double intersect_tolerance)
+      : model(s), ft(frame_time(s, frame)) {
+    build_kernel_inputs(model, ft, segments, 0, in, intersect_tolerance, 1, true);
+  }
+  SceneModel model;
+  FrameTime ft;
+  KernelInputsD in;
+};
+
 vec2 direct_gradient(const std::vector<Wave>& waves, double x, double z, double t) {
   vec2 g(0.0);
   for (const Wave& w : waves) {
@@ -113,10 +125,9 @@ TEST(CascadeFields, GridPointsAreTheDirectSum) {
 
 TEST(CascadeFields, CubicInterpolationErrorBetweenGridPoints) {
   const Sea sea = cascade_sea();
-  const SceneModel m(sea.scene);
-  const FrameTime ft = frame_time(sea.scene, 1);
-  KernelInputsD in;
-  build_kernel_inputs(m, ft, 1, 0, in, kDefaultIntersectTolerance, 1, true);
+  const Fields fields(sea.scene, 1, 1, kDefaultIntersectTolerance);
+  const FrameTime& ft = fields.ft;
+  const KernelInputsD& in = fields.in;
   const vec3 cam = sea.scene.camera.position;
   Pcg32 rng(4, 1);
   double err2 = 0, ref2 = 0;
@@ -140,10 +151,9 @@ TEST(CascadeFields, CubicInterpolationErrorBetweenGridPoints) {
 
 TEST(CascadeFields, ChainSecondMomentsAverageToTheSlopeVariance) {
   const Sea sea = cascade_sea();
-  const SceneModel m(sea.scene);
-  const FrameTime ft = frame_time(sea.scene, 0);
-  KernelInputsD in;
-  build_kernel_inputs(m, ft, 1, 0, in, kDefaultIntersectTolerance, 1, true);
+  const Fields fields(sea.scene, 0, 1, kDefaultIntersectTolerance);
+  const FrameTime& ft = fields.ft;
+  const KernelInputsD& in = fields.in;
   const kd::WaveBuffer b = wave_buffer(in);
   for (int c = 0; c < 2; ++c) {
     const kd::Cascade cc = kd::cascade_at(b, in.frame, c);
@@ -210,10 +220,9 @@ kd::Footprint footprint_of(double x, double z, double metres_per_pixel) {
 
 TEST(CascadeFields, StaaShareLimits) {
   const Sea sea = cascade_sea();
-  const SceneModel m(sea.scene);
-  const FrameTime ft = frame_time(sea.scene, 2);
-  KernelInputsD in;
-  build_kernel_inputs(m, ft, 1, 0, in, kDefaultIntersectTolerance, 1, true);
+  const Fields fields(sea.scene, 2, 1, kDefaultIntersectTolerance);
+  const FrameTime& ft = fields.ft;
+  const KernelInputsD& in = fields.in;
   const kd::WaveBuffer b = wave_buffer(in);
   const kd::StaaParams p = params();
   for (int c = 0; c < 2; ++c) {
@@ -249,10 +258,9 @@ kd::vec3 direct_hessian(const std::vector<Wave>& waves, double x, double z, doub
 
 TEST(CascadeFields, HessianAtGridPointsIsTheDirectSum) {
   const Sea sea = cascade_sea();
-  const SceneModel m(sea.scene);
-  const FrameTime ft = frame_time(sea.scene, 1);
-  KernelInputsD in;
-  build_kernel_inputs(m, ft, 1, 0, in, kDefaultIntersectTolerance, 1, true);
+  const Fields fields(sea.scene, 1, 1, kDefaultIntersectTolerance);
+  const FrameTime& ft = fields.ft;
+  const KernelInputsD& in = fields.in;
   const CascadeDesc& c0 = sea.scene.surface.cascades[0];
   const double h = c0.patch_size / c0.lattice;
   const vec3 cam = sea.scene.camera.position;
@@ -295,10 +303,9 @@ Direct direct_moments(const std::vector<Wave>& waves, vec2 centre, mat2 J, doubl
 
 TEST(CascadeFields, FootprintMomentsAreTheSlopesOverTheFootprint) {
   const Sea sea = cascade_sea();
-  const SceneModel m(sea.scene);
-  const FrameTime ft = frame_time(sea.scene, 1);
-  KernelInputsD in;
-  build_kernel_inputs(m, ft, 1, 0, in, kDefaultIntersectTolerance, 1, true);
+  const Fields fields(sea.scene, 1, 1, kDefaultIntersectTolerance);
+  const FrameTime& ft = fields.ft;
+  const KernelInputsD& in = fields.in;
   const kd::WaveBuffer b = wave_buffer(in);
   const vec3 cam = sea.scene.camera.position;
   // The finer cascade's texel (its field's grid): footprints from a quarter of it to a
@@ -352,10 +359,9 @@ double direct_height(const std::vector<Wave>& waves, double x, double z, double 
 TEST(CascadeFields, HeightAndItsInterpolantsBounds) {
   Sea sea = cascade_sea();
   sea.scene.surface.geometry = Geometry::displaced;
-  const SceneModel m(sea.scene);
-  const FrameTime ft = frame_time(sea.scene, 2);
-  KernelInputsD in;
-  build_kernel_inputs(m, ft, 1, 0, in, kDefaultIntersectTolerance, 1, true);
+  const Fields fields(sea.scene, 2, 1, kDefaultIntersectTolerance);
+  const FrameTime& ft = fields.ft;
+  const KernelInputsD& in = fields.in;
   ASSERT_EQ(in.frame.cascade_count, 2);
   const kd::WaveBuffer b = wave_buffer(in);
   const vec3 cam = sea.scene.camera.position;
@@ -416,10 +422,9 @@ TEST(CascadeFields, HeightAndItsInterpolantsBounds) {
 TEST(CascadeFields, MarchHitsTheInterpolatedSurface) {
   Sea sea = cascade_sea();
   sea.scene.surface.geometry = Geometry::displaced;
-  const SceneModel m(sea.scene);
-  const FrameTime ft = frame_time(sea.scene, 2);
-  KernelInputsD in;
-  build_kernel_inputs(m, ft, 1, 0, in, 0.0, 1, true);
+  const Fields fields(sea.scene, 2, 1, 0.0);
+  const FrameTime& ft = fields.ft;
+  const KernelInputsD& in = fields.in;
   const kd::WaveBuffer b = wave_buffer(in);
   const kd::Frame& f = in.frame;
   int hits = 0;
