@@ -221,7 +221,6 @@ kd::Footprint footprint_of(double x, double z, double metres_per_pixel) {
 TEST(CascadeFields, StaaShareLimits) {
   const Sea sea = cascade_sea();
   const Fields fields(sea.scene, 2, 1, kDefaultIntersectTolerance);
-  const FrameTime& ft = fields.ft;
   const KernelInputsD& in = fields.in;
   const kd::WaveBuffer b = wave_buffer(in);
   const kd::StaaParams p = params();
@@ -423,7 +422,6 @@ TEST(CascadeFields, MarchHitsTheInterpolatedSurface) {
   Sea sea = cascade_sea();
   sea.scene.surface.geometry = Geometry::displaced;
   const Fields fields(sea.scene, 2, 1, 0.0);
-  const FrameTime& ft = fields.ft;
   const KernelInputsD& in = fields.in;
   const kd::WaveBuffer b = wave_buffer(in);
   const kd::Frame& f = in.frame;
