@@ -19,6 +19,7 @@
 #include "engine/render.h"
 #include "gl_engine/gl_engine.h"
 #include "gl_engine/gl_method.h"
+#include "methods/kernel_counts.h"
 #include "methods/method.h"
 #include "methods/reference.h"
 #include "methods/stratified.h"
@@ -30,6 +31,7 @@ struct BenchArgs {
   std::vector<std::string> scenes;
   std::string methods = "point,reference";
   int width = 640, height = 360, frame = 0, threads = 0, repeat = 1;
+  bool counters = false;
   MethodFlags flags;
 };
 
@@ -67,6 +69,41 @@ Throughput throughput(const FrameContext& ctx, const std::string& name, const Me
     if (!rs.adaptive) t.samples = pixels * rs.batches * double(rs.samples.total());
   }
   return t;
+}
+
+// --counters: per scene and method, the kernel's work per pixel (mean / max, counted by
+// the counting build of the kernel: methods/kernel_counts.h) and the predicted time of a
+// 1920x1080 frame on an H200 from those counts and its peak rates (a lower bound).
+void print_counters(const std::vector<Scene>& scenes, const std::vector<MethodVariant>& variants,
+                    int frame) {
+  std::printf(
+      "| scene | method | waves | buffer fetches | table fetches | quadrature nodes | "
+      "transcendentals | march steps | predicted 1920x1080 on %s, ms (means / maxima) |\n",
+      kH200.name);
+  std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const Scene& s : scenes) {
+    const SceneModel model(s);
+    for (const MethodVariant& v : variants) {
+      const KernelWork k = count_kernel_work(model, v.name, v.options, frame);
+      auto cell = [](const KernelWork::Stat& st) {
+        char b[64];
+        std::snprintf(b, sizeof b, "%.1f / %llu", st.mean, static_cast<unsigned long long>(st.max));
+        return std::string(b);
+      };
+      const long hd = 1920L * 1080L;
+      std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %.3g / %.3g |\n", s.name.c_str(),
+                  v.label.c_str(), cell(k.waves).c_str(), cell(k.buffer_fetches).c_str(),
+                  cell(k.table_fetches).c_str(), cell(k.nodes).c_str(),
+                  cell(k.transcendentals).c_str(), cell(k.march_steps).c_str(),
+                  predicted_frame_ms(k, hd, kH200, false), predicted_frame_ms(k, hd, kH200, true));
+      if (k.host_finished > 0) {
+        std::printf(
+            "|  | (%ld pixels left to the host's exact finish, not counted) | | | | | | | |\n",
+            k.host_finished);
+      }
+      std::fflush(stdout);
+    }
+  }
 }
 
 void run_bench(BenchArgs& a) {
@@ -108,6 +145,18 @@ void run_bench(BenchArgs& a) {
       set_image_size(scenes.back(), a.width, a.height);
       check_frame(a.frame, scenes.back(), "--frame");
     });
+  }
+  if (a.counters) {
+    check_usage([&] {
+      for (const MethodVariant& v : variants) {
+        if (!kernel_work_counted(v.name)) {
+          throw Error("--counters: no counting render for '" + v.label +
+                      "' (point, supersample, staa-temporal and staa have one)");
+        }
+      }
+    });
+    print_counters(scenes, variants, a.frame);
+    return;
   }
   RenderSettings rs;
   rs.threads = a.threads;
@@ -189,6 +238,10 @@ void add_bench_command(CLI::App& app) {
   c->add_option("--repeat", a->repeat, "Runs per method; the fastest counts")
       ->capture_default_str()
       ->check(integer_in(1, 1000));
+  c->add_flag("--counters", a->counters,
+              "Count the kernel's work per pixel instead of timing (waves visited, texel "
+              "fetches, quadrature nodes, transcendentals, march steps; point, supersample, "
+              "staa-temporal, staa) with a predicted 1920x1080 time on an H200");
   add_method_flags(*c, a->flags);
   c->callback([a] { run_bench(*a); });
 }

@@ -70,6 +70,29 @@ struct TableLine {
 
 }  // namespace sg::kernel_tables
 
+namespace sg {
+
+// The kernel's work, counted by its counting build (kernel/kernel_counting.h, namespace
+// sg::kc: the kernel's own loops in double, each call below counted where the kernel
+// text says SG_COUNT or reads a texel; the other builds count nothing): what a GPU
+// invocation of the same text executes. One set per thread; the caller reads and resets
+// it around a pixel (methods/kernel_counts.h).
+struct KernelCounters {
+  uint64_t waves = 0;            // explicit waves visited (wave_at: one wave's terms)
+  uint64_t buffer_fetches = 0;   // wave-buffer texels read (waves, sums, cascade fields)
+  uint64_t table_fetches = 0;    // table texels read (path tables, kernel fits)
+  uint64_t nodes = 0;            // quadrature nodes evaluated
+  uint64_t transcendentals = 0;  // sin, cos, tan, asin, acos, atan, exp, log, log2, pow
+                                 // (per component)
+  uint64_t march_steps = 0;      // steps of the displaced intersection's march
+};
+inline KernelCounters& kernel_counters() {
+  thread_local KernelCounters c;
+  return c;
+}
+
+}  // namespace sg
+
 namespace sg::wave_simd {
 
 // The frame's waves as structure-of-arrays, in the order of the wave buffer, for the CPU

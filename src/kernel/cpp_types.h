@@ -22,36 +22,86 @@ using ivec3 = glm::ivec3;
 using uint = unsigned int;
 using uvec2 = glm::uvec2;
 
+// The kernel's work counters (sg::KernelCounters, kernel/cpp_prelude.h): SG_COUNT(what, n)
+// adds n to counter `what` in the counting build (SG_KERNEL_COUNTING:
+// kernel/kernel_counting.h), nothing in the others, nothing in GLSL.
+#undef SG_COUNT
+#ifdef SG_KERNEL_COUNTING
+#define SG_COUNT(what, n) (::sg::kernel_counters().what += uint64_t(n))
+#else
+#define SG_COUNT(what, n) ((void)0)
+#endif
+
 using glm::abs;
-using glm::acos;
-using glm::asin;
-using glm::atan;
 using glm::ceil;
 using glm::clamp;
-using glm::cos;
 using glm::cross;
 using glm::determinant;
 using glm::dot;
-using glm::exp;
 using glm::floor;
 using glm::fma;
 using glm::fract;
 using glm::inverse;
 using glm::inversesqrt;
 using glm::length;
-using glm::log;
-using glm::log2;
 using glm::max;
 using glm::min;
 using glm::mix;
 using glm::mod;
 using glm::normalize;
 using glm::outerProduct;
-using glm::pow;
 using glm::sign;
-using glm::sin;
 using glm::sqrt;
+#ifdef SG_KERNEL_COUNTING
+// The transcendental built-ins, each call counted per component (exact matches beat glm's
+// templates for the kernel's real and vector arguments).
+#define SG_COUNTED_1(fn)          \
+  inline real fn(real x) {        \
+    SG_COUNT(transcendentals, 1); \
+    return glm::fn(x);            \
+  }                               \
+  inline vec2 fn(const vec2& x) { \
+    SG_COUNT(transcendentals, 2); \
+    return glm::fn(x);            \
+  }                               \
+  inline vec3 fn(const vec3& x) { \
+    SG_COUNT(transcendentals, 3); \
+    return glm::fn(x);            \
+  }                               \
+  inline vec4 fn(const vec4& x) { \
+    SG_COUNT(transcendentals, 4); \
+    return glm::fn(x);            \
+  }
+SG_COUNTED_1(sin)
+SG_COUNTED_1(cos)
+SG_COUNTED_1(tan)
+SG_COUNTED_1(asin)
+SG_COUNTED_1(acos)
+SG_COUNTED_1(atan)
+SG_COUNTED_1(exp)
+SG_COUNTED_1(log)
+SG_COUNTED_1(log2)
+#undef SG_COUNTED_1
+inline real atan(real y, real x) {
+  SG_COUNT(transcendentals, 1);
+  return glm::atan(y, x);
+}
+inline real pow(real x, real y) {
+  SG_COUNT(transcendentals, 1);
+  return glm::pow(x, y);
+}
+#else
+using glm::acos;
+using glm::asin;
+using glm::atan;
+using glm::cos;
+using glm::exp;
+using glm::log;
+using glm::log2;
+using glm::pow;
+using glm::sin;
 using glm::tan;
+#endif
 using glm::transpose;
 using glm::umulExtended;
 using sg::kernel_tables::R32Texture2D;
@@ -70,9 +120,11 @@ inline bool isinf(real x) {
 
 // texelFetch of GLSL for R32F textures: the value in .x.
 inline vec4 texelFetch(const R32Texture2D& t, const ivec2& p, int) {
+  SG_COUNT(table_fetches, 1);
   return vec4(real(t.data[size_t(p.y) * size_t(t.width) + size_t(p.x)]), 0, 0, 1);
 }
 inline vec4 texelFetch(const R32Texture3D& t, const ivec3& p, int) {
+  SG_COUNT(table_fetches, 1);
   return vec4(
       real(t.data[(size_t(p.z) * size_t(t.height) + size_t(p.y)) * size_t(t.width) + size_t(p.x)]),
       0, 0, 1);
@@ -80,6 +132,7 @@ inline vec4 texelFetch(const R32Texture3D& t, const ivec3& p, int) {
 
 // Value i of a 1-D table (GLSL: texelFetch of an R32F buffer).
 inline real line_value(const TableLine& t, int i) {
+  SG_COUNT(table_fetches, 1);
   return real(t.data[i]);
 }
 
@@ -99,5 +152,6 @@ struct WaveBuffer {
 // Texel i of the wave buffer (GLSL 4.50: texelFetch of the samplerBuffer; GLSL ES: of a
 // 2D texture, row by row).
 inline vec4 wave_texel(const WaveBuffer& b, int i) {
+  SG_COUNT(buffer_fetches, 1);
   return b.data[i];
 }

@@ -91,6 +91,7 @@ SG_FN real disk_mass_piece(real lo, real hi, real cs, real cw, real R, real s1, 
   real mid = 0.5 * (lo + hi);
   real half_width = 0.5 * (hi - lo);
   real sum = 0.0;
+  SG_COUNT(nodes, 30);
   for (int q = 0; q < 15; ++q) {
     real dx = half_width * kGauss30Node[q];
     sum += (disk_mass_integrand(mid + dx, cs, cw, R, s1, s2) +
@@ -236,6 +237,7 @@ SG_FN real gaussian_disk_mass_along(vec2 a, vec2 b, mat2 cov, real R) {
     real half_width = 0.5 * (cut[piece + 1] - cut[piece]);
     if (!(half_width > 0.0)) continue;
     real sum = 0.0;
+    SG_COUNT(nodes, 30);
     for (int q = 0; q < 30; ++q) {
       real node = q < 15 ? kGauss30Node[q] : -kGauss30Node[q - 15];
       real u = mid + half_width * node;
@@ -262,6 +264,7 @@ SG_FN real gaussian_disk_mass_riemann(vec2 mean, mat2 cov, real R, int n) {
     for (int i = 0; i < n; ++i) {
       vec2 q = vec2(-R + (real(i) + 0.5) * cell, -R + (real(j) + 0.5) * cell);
       if (dot(q, q) > R * R) continue;
+      SG_COUNT(nodes, 1);
       vec2 d = q - mean;
       sum += exp(-0.5 * dot(d, inv * d));
     }

@@ -24,6 +24,8 @@ precision highp sampler2DArray;
 #define OUT(T) out T
 #define INOUT(T) inout T
 #define SG_FN
+// The kernel's work counters count in its C++ counting build only (kernel/cpp_types.h).
+#define SG_COUNT(what, n)
 #ifndef SG_MAX_SEGMENTS
 #define SG_MAX_SEGMENTS 8
 #endif

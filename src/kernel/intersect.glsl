@@ -243,6 +243,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
   bool first = true;      // s is the ray's first position in the slab
   bool rechosen = false;  // the set was chosen again at s
   for (int step = 0; step < kMaxMarchSteps; ++step) {
+    SG_COUNT(march_steps, 1);
     if (tol > 0.0 && s > 1.25 * s_chosen) {
       // Further along the ray: fewer waves are visible.
       s_chosen = s;

@@ -81,6 +81,7 @@ SG_FN vec4 piece_weights(IN(Frame) f, vec3 v, IN(HermitePath) H, real a, real b,
   if (!smooth_terms)
     return state == kStateLight ? len * light_weights() : len * vec4(0.0, 0.0, 1.0, 0.0);
   // 4-point Gauss-Legendre.
+  SG_COUNT(nodes, 4);
   real mid = 0.5 * (a + b);
   real half_len = 0.5 * len;
   vec4 sum = vec4(0.0);

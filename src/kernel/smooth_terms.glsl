@@ -65,6 +65,7 @@ SG_FN vec4 smooth_cut_piece(IN(Frame) f, vec2 sw, vec2 d, vec3 v, real c, real e
   real qc = 0.5 * erfc(c * kInvSqrtTwo);
   real mass = normal_mass(c, e);
   vec3 sum = vec3(0.0);
+  SG_COUNT(nodes, 8);
   for (int q = 0; q < 8; ++q) {
     real x = q < 4 ? -kGl8X[q] : kGl8X[q - 4];
     real wq = 0.5 * (q < 4 ? kGl8W[q] : kGl8W[q - 4]);
@@ -136,6 +137,7 @@ SG_FN SmoothTerms smooth_terms(IN(Frame) f, vec2 mu, mat2 cov, vec3 v) {
     vec4 h;  // (E[F], E[F z], E[F h], mass) over the interval, for this w
     if (!cut_lo && !cut_hi) {
       h = vec4(0.0, 0.0, 0.0, 1.0);
+      SG_COUNT(nodes, 5);
       for (int q = 0; q < 5; ++q) {
         real x = q == 0 ? 0.0 : (q < 3 ? kGh5P : kGh5Q) * (q % 2 == 1 ? 1.0 : -1.0);
         vec3 g = smooth_integrand(f, sw + x * d, v);

@@ -32,6 +32,7 @@ struct Wave {
 };
 
 SG_FN Wave wave_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
+  SG_COUNT(waves, 1);
   vec4 t0 = wave_texel(waves, i * f.wave_stride);
   vec4 t1 = wave_texel(waves, i * f.wave_stride + 1);
   Wave w;

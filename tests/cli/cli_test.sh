@@ -566,6 +566,12 @@ expect_rc "bench flag of none of its methods" 2 \
   "$bin" bench "$scene" --methods point,staa --taa-alpha 0.5 --width 16 --height 9
 expect_rc "bench flag of one of its methods" 0 "| taa | cpu |" \
   "$bin" bench "$scene" --methods point,taa --taa-alpha 0.5 --width 16 --height 9
+# bench --counters: the kernel's work per pixel, the counting methods only.
+expect_rc "bench counters" 0 "| point | 2.8 / 5 | 5.6 / 10 |" \
+  "$bin" bench "$scene" --methods point,staa --counters
+expect_rc "bench counters of a method without a counting render" 2 \
+  "--counters: no counting render for 'lean'" \
+  "$bin" bench "$scene" --methods point,lean --counters --width 16 --height 9
 expect_rc "compare variant with another method's flag" 2 \
   "--method: 'staa --seed 2': --seed: not a flag of method staa (it configures supersample, reference)" \
   "$bin" compare "$scene" -m "staa --seed 2" --out "$work/study"

@@ -1,0 +1,143 @@
+#include "methods/kernel_counts.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <bit>
+#include <iterator>
+#include <vector>
+
+#include "base/error.h"
+#include "kernel/kernel_counting.h"
+#include "methods/kernel_inputs.h"
+#include "shading/kernel_table.h"
+#include "methods/staa.h"
+#include "methods/stratified.h"
+#include "methods/supersample.h"
+#include "shading/path_table.h"
+
+namespace sg {
+
+namespace {
+
+// The double kernel's structs as the counting kernel's: the same text in the same
+// precision, so the same layout.
+template <class To, class From>
+To same_struct(const From& f) {
+  static_assert(sizeof(To) == sizeof(From));
+  return std::bit_cast<To>(f);
+}
+
+// The counters, one by one (the same order as KernelWork's statistics).
+constexpr uint64_t KernelCounters::* kCounters[] = {
+    &KernelCounters::waves,         &KernelCounters::buffer_fetches,
+    &KernelCounters::table_fetches, &KernelCounters::nodes,
+    &KernelCounters::transcendentals, &KernelCounters::march_steps};
+KernelWork::Stat KernelWork::* const kStats[] = {
+    &KernelWork::waves, &KernelWork::buffer_fetches,  &KernelWork::table_fetches,
+    &KernelWork::nodes, &KernelWork::transcendentals, &KernelWork::march_steps};
+
+// Sums and maxima over a set of pixels.
+struct Sums {
+  KernelCounters total{}, max{};
+  long pixels = 0, host_finished = 0;
+  void add_pixel(const KernelCounters& d) {
+    for (auto c : kCounters) {
+      total.*c += d.*c;
+      max.*c = std::max(max.*c, d.*c);
+    }
+    ++pixels;
+  }
+  void add(const Sums& o) {
+    for (auto c : kCounters) {
+      total.*c += o.total.*c;
+      max.*c = std::max(max.*c, o.max.*c);
+    }
+    pixels += o.pixels;
+    host_finished += o.host_finished;
+  }
+};
+
+}  // namespace
+
+bool kernel_work_counted(const std::string& method) {
+  return method == "point" || method == "supersample" || method == "staa-temporal" ||
+         method == "staa";
+}
+
+KernelWork count_kernel_work(const SceneModel& m, const std::string& method,
+                             const MethodOptions& o, int frame) {
+  if (!kernel_work_counted(method)) {
+    throw Error("--counters: no counting render for method '" + method +
+                "' (point, supersample, staa-temporal and staa have one)");
+  }
+  validate(o);
+  const bool super = method == "supersample";
+  const int segments = method == "staa" || method == "staa-temporal" ? o.staa.segments : 1;
+  const bool fields = o.cascade_fields && (!super || o.samples.st == 1);
+  KernelFrameInputs inputs(segments, Precision::float64,
+                           super ? stratified_intersect_tolerance(o) : o.intersect_tolerance, 1,
+                           fields);
+  const FrameContext ctx{m, frame_time(m.scene, frame), o.seed};
+  inputs.build(ctx);
+  const KernelInputsD& in = inputs.d();
+  // The kernel's own loops over the waves (no arrays: no vectorised sums).
+  const kc::WaveBuffer waves{in.texels.data(), static_cast<int>(in.texels.size()), {}};
+  const kc::Frame f = same_struct<kc::Frame>(in.frame);
+  kc::SampleCounts counts{};
+  if (super) {
+    counts = same_struct<kc::SampleCounts>(
+        kernel_sample_counts(StratifiedSettings{o.samples, o.samples.st == 1}));
+  }
+  const PathTables& tables = PathTables::shared();
+  const KernelFitTexture& fits = kernel_fit_texture();
+  const kc::StaaParams params = same_struct<kc::StaaParams>(staa_kernel_params<kd::StaaParams>(o.staa));
+  const kc::PathTableInfo tinfo = same_struct<kc::PathTableInfo>(tables.kernel_info());
+  const kc::KernelFitInfo finfo = same_struct<kc::KernelFitInfo>(fits.info);
+
+  const int w = m.scene.width, h = m.scene.height;
+  std::vector<Sums> rows(static_cast<size_t>(h));
+  tbb::parallel_for(0, h, [&](int j) {
+    Sums& s = rows[static_cast<size_t>(j)];
+    for (int i = 0; i < w; ++i) {
+      KernelCounters& c = kernel_counters();
+      c = KernelCounters{};
+      if (method == "point") {
+        kc::point_pixel(waves, f, i, j);
+      } else if (super) {
+        kc::stratified_pixel(waves, f, counts, i, j);
+      } else if (method == "staa-temporal") {
+        kc::staa_temporal_pixel(waves, f, i, j);
+      } else {
+        kc::StaaPath path;
+        const kc::StaaResult r = kc::staa_pixel(waves, tables.f_texture(), tables.s_texture(),
+                                                tinfo, fits.view(), finfo, f, params, i, j, path);
+        if (r.exact_pending) ++s.host_finished;
+      }
+      s.add_pixel(c);
+    }
+  });
+  Sums all;
+  for (const Sums& s : rows)
+    all.add(s);
+  KernelWork r;
+  r.pixels = all.pixels;
+  r.host_finished = all.host_finished;
+  const double n = double(std::max<long>(1, all.pixels));
+  for (size_t q = 0; q < std::size(kCounters); ++q) {
+    r.*kStats[q] = KernelWork::Stat{double(all.total.*kCounters[q]) / n, all.max.*kCounters[q]};
+  }
+  return r;
+}
+
+double predicted_frame_ms(const KernelWork& k, long pixels, const GpuPeakRates& gpu,
+                          bool from_max) {
+  const double trans = from_max ? double(k.transcendentals.max) : k.transcendentals.mean;
+  const double fetches = from_max ? double(k.buffer_fetches.max + k.table_fetches.max)
+                                  : k.buffer_fetches.mean + k.table_fetches.mean;
+  const double sfu = gpu.sms * gpu.clock_hz * gpu.sfu_per_sm_clock;
+  const double tex = gpu.sms * gpu.clock_hz * gpu.texel_per_sm_clock;
+  return 1000.0 * double(pixels) * std::max(trans / sfu, fetches / tex);
+}
+
+}  // namespace sg

@@ -1,0 +1,123 @@
+// The kernel's work counters (methods/kernel_counts.h) against scenes whose counts are
+// known: `point` on flat water visits each of its N waves once per pixel that sees water
+// and none where the pixel sees the sky; `supersample` S_x S_y times that; the counting
+// build renders what the double kernel renders; displaced water counts march steps and
+// flat water none.
+#include "methods/kernel_counts.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "base/error.h"
+#include "kernel/kernel_counting.h"
+#include "kernel/kernel_double.h"
+#include "methods/kernel_inputs.h"
+#include "testing/testing.h"
+
+namespace sg {
+namespace {
+
+std::vector<Wave> some_waves(int n) {
+  std::vector<Wave> w;
+  for (int i = 0; i < n; ++i) {
+    const double a = 0.37 * i;
+    w.push_back(Wave{0.01 + 0.002 * i, {0.4 * std::cos(a) * (1 + i), 0.4 * std::sin(a) * (1 + i)},
+                     0.3 * i, 0.0});
+  }
+  return w;
+}
+
+// A camera that sees water in every pixel (looking down at 40 degrees of view).
+Scene water_only(int n) {
+  Scene s = testing::small_scene(some_waves(n), 24, 16);
+  s.camera = CameraDesc{{0, 2.5, 0}, {0, 0, -2}, {0, 1, 0}, 40, {}};
+  return s;
+}
+
+TEST(KernelCounts, PointVisitsEachWaveOncePerWaterPixel) {
+  for (int n : {1, 7, 33}) {
+    const SceneModel m(water_only(n));
+    const KernelWork k = count_kernel_work(m, "point", {}, 3);
+    EXPECT_EQ(k.pixels, 24 * 16);
+    EXPECT_DOUBLE_EQ(k.waves.mean, n) << n;
+    EXPECT_EQ(k.waves.max, uint64_t(n)) << n;
+    EXPECT_EQ(k.march_steps.max, 0u) << "flat water has no march";
+    EXPECT_EQ(k.nodes.max, 0u) << "point integrates nothing";
+    // A wave's texels are read as it is visited (two per wave), and its phase takes one
+    // cosine at least.
+    EXPECT_GE(k.buffer_fetches.mean, 2.0 * n);
+    EXPECT_GE(k.transcendentals.mean, double(n));
+  }
+}
+
+TEST(KernelCounts, SkyPixelsVisitNoWave) {
+  // The shared camera of small_scene sees the horizon: the pixels above it visit no wave.
+  const int n = 5;
+  const SceneModel m(testing::small_scene(some_waves(n), 24, 16));
+  const KernelWork k = count_kernel_work(m, "point", {}, 0);
+  EXPECT_EQ(k.waves.max, uint64_t(n));
+  EXPECT_GT(k.waves.mean, 0.0);
+  EXPECT_LT(k.waves.mean, double(n)) << "some pixels see the sky";
+}
+
+TEST(KernelCounts, SupersampleVisitsEachWavePerSample) {
+  const int n = 6;
+  const SceneModel m(water_only(n));
+  MethodOptions o;
+  o.samples = SampleCounts{3, 2, 1};
+  o.samples_given = true;
+  const KernelWork k = count_kernel_work(m, "supersample", o, 1);
+  EXPECT_DOUBLE_EQ(k.waves.mean, 6.0 * n);
+  EXPECT_EQ(k.waves.max, uint64_t(6 * n));
+}
+
+TEST(KernelCounts, StaaCountsItsQuadratureAndTables) {
+  Scene s = testing::project_scene("medium");
+  set_image_size(s, 32, 18);
+  const SceneModel small(s);
+  const KernelWork k = count_kernel_work(small, "staa", {}, 2);
+  EXPECT_GE(k.waves.max, small.waves.size()) << "a pixel of water visits every wave";
+  EXPECT_GT(k.table_fetches.mean, 0.0) << "the path tables are read";
+  EXPECT_GT(k.transcendentals.mean, k.waves.mean);
+  EXPECT_EQ(k.march_steps.max, 0u);
+}
+
+TEST(KernelCounts, DisplacedWaterMarches) {
+  const SceneModel m(testing::displaced_variant(water_only(4)));
+  const KernelWork k = count_kernel_work(m, "point", {}, 0);
+  EXPECT_GT(k.march_steps.mean, 1.0);
+  EXPECT_GE(k.waves.mean, 4.0 * k.march_steps.mean) << "each step sums the waves' heights";
+}
+
+TEST(KernelCounts, TheCountingKernelRendersWhatTheDoubleKernelRenders) {
+  const SceneModel m(water_only(9));
+  KernelFrameInputs in(1, Precision::float64);
+  in.build(FrameContext{m, frame_time(m.scene, 2), 0});
+  const KernelInputsD& d = in.d();
+  const kd::WaveBuffer wd = wave_buffer(d, false);
+  const kc::WaveBuffer wc{d.texels.data(), static_cast<int>(d.texels.size()), {}};
+  kc::Frame fc;
+  static_assert(sizeof(fc) == sizeof(d.frame));
+  std::memcpy(static_cast<void*>(&fc), &d.frame, sizeof fc);
+  for (int j = 0; j < 16; j += 3) {
+    for (int i = 0; i < 24; i += 5) {
+      const kd::vec4 a = kd::point_pixel(wd, d.frame, i, j);
+      const kc::vec4 b = kc::point_pixel(wc, fc, i, j);
+      EXPECT_EQ(a, b) << i << ", " << j;
+      const kd::vec4 sa = kd::staa_temporal_pixel(wd, d.frame, i, j);
+      const kc::vec4 sb = kc::staa_temporal_pixel(wc, fc, i, j);
+      EXPECT_EQ(sa, sb) << i << ", " << j;
+    }
+  }
+}
+
+TEST(KernelCounts, MethodsWithoutACountingRenderAreRefused) {
+  const SceneModel m(water_only(2));
+  EXPECT_THROW(count_kernel_work(m, "lean", {}, 0), Error);
+  EXPECT_THROW(count_kernel_work(m, "reference", {}, 0), Error);
+}
+
+}  // namespace
+}  // namespace sg
