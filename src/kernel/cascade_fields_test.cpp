@@ -452,5 +452,55 @@ TEST(CascadeFields, MarchHitsTheInterpolatedSurface) {
   EXPECT_LE(worst_above, 1e-6);
 }
 
+// The tolerance leaves out the last cascades where the rest fits tau eps s (intersect.glsl):
+// every hit lies within that of the whole interpolated surface, vertically, the ray never
+// dips further below it before the hit, and far rays do march fewer cascades.
+TEST(CascadeFields, MarchWithinItsToleranceOfTheWholeSurface) {
+  Sea sea = cascade_sea();
+  sea.scene.surface.geometry = Geometry::displaced;
+  sea.scene.camera.look_at = vec3(1234.5, 0.0, -676.25);  // 200 m ahead: far rays
+  const double tau = 1.0;
+  const Fields fields(sea.scene, 2, 1, tau), whole(sea.scene, 2, 1, 0.0);
+  const KernelInputsD& in = fields.in;
+  const kd::WaveBuffer b = wave_buffer(in);
+  const kd::Frame& f = in.frame;
+  const kd::WaveBuffer bw = wave_buffer(whole.in);
+  ASSERT_EQ(f.cascade_count, 2);
+  int hits = 0, fewer = 0, moved = 0;
+  double worst_surface = 0, worst_dip = 0;  // in units of the tolerance at that point
+  for (int j = 0; j < 36; j += 2) {
+    for (int i = 0; i < 64; i += 3) {
+      const kd::vec3 d = normalize(kd::camera_direction(f.camera, i + 0.5, j + 0.5));
+      const double eps = kd::pixel_angle(f.camera, d);
+      const kd::RayHit hit = kd::intersect_displaced(b, f, f.camera.position, d, 0.0);
+      if (!hit.hit) continue;
+      ++hits;
+      if (kd::first_cascade_below(b, f, tau * eps * hit.s) < f.cascade_count) ++fewer;
+      const kd::RayHit w = kd::intersect_displaced(bw, whole.in.frame, f.camera.position, d, 0.0);
+      if (!w.hit || std::abs(w.s - hit.s) > 1e-6 * hit.s) ++moved;
+      const kd::vec3 on_ray = f.camera.position + hit.s * d;
+      const double surface = kd::cascade_height_gradient(b, f, on_ray.x, on_ray.z).x;
+      worst_surface =
+          std::max(worst_surface, (std::abs(on_ray.y - surface) - 1e-6) / (tau * eps * hit.s));
+      for (int q = 1; q < 200; ++q) {
+        const double sq = hit.s * q / 200.0;
+        const kd::vec3 p = f.camera.position + sq * d;
+        const double below = kd::cascade_height_gradient(b, f, p.x, p.z).x - p.y;
+        worst_dip = std::max(worst_dip, (below - 1e-6) / (tau * eps * sq));
+      }
+    }
+  }
+  std::printf(
+      "march with tolerance %.2g: %d hits, %d with the last cascade left out, %d moved from "
+      "the whole surface's; |y - h| at the hit %.3g and the deepest dip before %.3g of the "
+      "tolerance there\n",
+      tau, hits, fewer, moved, worst_surface, worst_dip);
+  EXPECT_GT(hits, 100);
+  EXPECT_GT(fewer, hits / 20) << "far rays leave the finest cascade out";
+  EXPECT_GT(moved, 0) << "the march leaves it out";
+  EXPECT_LE(worst_surface, 1.0);
+  EXPECT_LE(worst_dip, 1.0);
+}
+
 }  // namespace
 }  // namespace sg

@@ -14,9 +14,11 @@
 //   - at Frame.cascade_base, two texels per cascade: (L, N, o_x, o_z) with o the camera's
 //     world (x, z) modulo L (grid coordinates are then camera-relative and small), and
 //     (the cascade's whole slope covariance sum A^2/2 k k^T as xx, xz, zz; the levels);
-//     then one texel for all of them: bounds on the interpolated height, on its slope along
-//     any horizontal direction and on its second derivative along one (the displaced
-//     intersection's, cascade_interpolant_bounds);
+//     then one texel per cascade c, the sum over cascades 0..c of bounds on the interpolated
+//     height, on its slope along any horizontal direction and on its second derivative
+//     along one (the displaced intersection's, cascade_interpolant_bounds: the last texel
+//     bounds them all; the others bound the first cascades, which a far ray marches alone
+//     when the rest fits its tolerance, intersect.glsl);
 //   - then each cascade's data, instant by instant, level by level, two texels per texel:
 //     a = (E[s_x], E[s_z], E[h_xx], E[h_zz]), b = (E[h_xz], E[s_x^2], E[s_x s_z], E[s_z^2]);
 //     level 0 holds no spread (a grid point's second moments are its mean's square, and
@@ -58,7 +60,7 @@ SG_FN int cascade_level_offset(int n, int l) {
 
 SG_FN Cascade cascade_at(IN(WaveBuffer) waves, IN(Frame) f, int c) {
   Cascade r;
-  int data = f.cascade_base + 2 * f.cascade_count + 1;
+  int data = f.cascade_base + 3 * f.cascade_count;
   for (int q = 0; q < c; ++q) {
     int nq = int(wave_texel(waves, f.cascade_base + 2 * q).y + 0.5);
     data += (f.segments + 1) * cascade_instant_texels(nq);
@@ -218,9 +220,10 @@ SG_FN vec4 catmull_rom_derivative_weights(real t) {
 // derivatives): (h, dh/dx, dh/dz). The displaced intersection marches this surface (the
 // shading's slope, cascade_gradient, interpolates the slope grid instead: the two differ
 // by the cubic's error, docs/ocean.md).
-SG_FN vec3 cascade_height_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z) {
+SG_FN vec3 cascade_height_gradient_first(IN(WaveBuffer) waves, IN(Frame) f, int count, real x,
+                                         real z) {
   vec3 r = vec3(0.0);
-  for (int c = 0; c < f.cascade_count; ++c) {
+  for (int c = 0; c < count; ++c) {
     Cascade cc = cascade_at(waves, f, c);
     vec2 u = cascade_grid_coord(cc, vec2(x, z));
     vec2 i0 = floor(u);
@@ -242,6 +245,9 @@ SG_FN vec3 cascade_height_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, re
   }
   return r;
 }
+SG_FN vec3 cascade_height_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z) {
+  return cascade_height_gradient_first(waves, f, f.cascade_count, x, z);
+}
 
 // Bounds on one cascade's interpolated height field (the bicubic above), from its grid's
 // maxima m = (max |h|, max |forward difference of h| along x and z, the larger of the
@@ -259,10 +265,25 @@ SG_FN vec3 cascade_interpolant_bounds(real max_h, vec2 max_d1, real max_d2, real
               (3.75 * max_d2 + 2.25 * max_dxz) / (tau * tau));
 }
 
-// The sum of every cascade's bounds (the texel after the headers): (height, slope along a
-// horizontal direction, second derivative along one); zero without cascades.
-SG_FN vec3 cascade_bounds(IN(WaveBuffer) waves, IN(Frame) f) {
-  if (f.cascade_count == 0) return vec3(0.0);
-  vec4 b = wave_texel(waves, f.cascade_base + 2 * f.cascade_count);
+// The sum of the first `count` cascades' bounds (texel c after the headers holds the sum
+// over cascades 0..c): (height, slope along a horizontal direction, second derivative
+// along one); zero for none.
+SG_FN vec3 cascade_bounds_first(IN(WaveBuffer) waves, IN(Frame) f, int count) {
+  if (count <= 0) return vec3(0.0);
+  vec4 b = wave_texel(waves, f.cascade_base + 2 * f.cascade_count + count - 1);
   return vec3(b.x, b.y, b.z);
+}
+// Every cascade's.
+SG_FN vec3 cascade_bounds(IN(WaveBuffer) waves, IN(Frame) f) {
+  return cascade_bounds_first(waves, f, f.cascade_count);
+}
+
+// The fewest first cascades whose left-out rest (the last ones, in the scene's order: the
+// generator writes them coarse to fine) bounds the height by at most `budget`.
+SG_FN int first_cascade_below(IN(WaveBuffer) waves, IN(Frame) f, real budget) {
+  real all = cascade_bounds(waves, f).x;
+  int n = f.cascade_count;
+  while (n > 0 && all - cascade_bounds_first(waves, f, n - 1).x <= budget)
+    --n;
+  return n;
 }

@@ -30,11 +30,16 @@
 // the whole slab at the smallest step), as a miss.
 //
 // Cascades shaded from their fields (cascade_grid.glsl) are marched as Catmull-Rom's
-// bicubic of their height grids, whole (no tolerance leaves any of them out), summed
-// before the first block: the frame's bounds and each prefix's add the interpolant's
-// bounds (cascade_interpolant_bounds: height, slope and curvature from the grids' maxima),
-// so the steps stay safe; the fields are the display time's (dt = 0: the methods that read
-// them take no other time).
+// bicubic of their height grids, summed before the first block: the bounds of the set
+// and of each prefix add the interpolants' bounds of the cascades marched
+// (cascade_interpolant_bounds: height, slope and curvature from the grids' maxima), so the
+// steps stay safe; the fields are the display time's (dt = 0: the methods that read them
+// take no other time). The tolerance below leaves out the last cascades (the finest, in
+// the generator's order) as it leaves out the shortest waves, first: at s the march takes
+// the fewest first cascades whose rest bounds the height by at most tau eps s, and the
+// fewest waves whose suffix amplitude fits what is left of tau eps s; a cascade left out
+// takes its curvature bound, which the finest cascade's texel makes large, out of the
+// second-order step, so far rays step far longer.
 //
 // The waves a pixel cannot see in the geometry (Frame.intersect_tolerance = tau > 0).
 // Leaving out the waves j >= n (the shortest: the wave buffer is sorted by |k|) changes
@@ -102,34 +107,36 @@ SG_FN real pixel_angle(IN(Camera) c, vec3 d) {
   return min(2.0 * c.half_w / c.width, 2.0 * c.half_h / c.height) * cphi * cphi;
 }
 
-// f(s) = y(s) - h at the point o + s d, the first n waves summed (and the cascades' fields,
-// whole: cascade_grid.glsl).
-SG_FN real height_above_first(IN(WaveBuffer) waves, IN(Frame) f, int n, vec3 o, vec3 d, real s,
-                              real dt) {
+// f(s) = y(s) - h at the point o + s d, the first n waves and the first nc cascades'
+// fields summed (cascade_grid.glsl).
+SG_FN real height_above_first(IN(WaveBuffer) waves, IN(Frame) f, int n, int nc, vec3 o, vec3 d,
+                              real s, real dt) {
   vec3 p = o + s * d;
   real h = water_height_first(waves, f, n, p.x, p.z, dt);
-  if (f.cascade_count > 0) h += cascade_height_gradient(waves, f, p.x, p.z).x;
+  if (nc > 0) h += cascade_height_gradient_first(waves, f, nc, p.x, p.z).x;
   return p.y - h;
 }
 
-// The first n waves' bounds on the ray: the slab |y| <= amplitude (entry and exit
-// parameters) and the Lipschitz bound of f along d.
+// The first n waves' and nc cascades' bounds on the ray: the slab |y| <= amplitude (entry
+// and exit parameters) and the Lipschitz bound of f along d.
 struct MarchSet {
   int n;
+  int nc;
   real lip;
   real s_enter;
   real s_exit;
   bool empty;  // the ray misses the slab
 };
 
-SG_FN MarchSet march_set(IN(WaveBuffer) waves, IN(Frame) f, int n, vec3 o, vec3 d) {
+SG_FN MarchSet march_set(IN(WaveBuffer) waves, IN(Frame) f, int n, int nc, vec3 o, vec3 d) {
   MarchSet m;
   m.n = n;
+  m.nc = nc;
   real amax = f.amplitude_bound;
   real slope = f.slope_bound;
-  if (n < f.wave_count) {
+  if (n < f.wave_count || nc < f.cascade_count) {
     vec4 b = wave_bounds_at(waves, f, n);
-    vec3 cb = cascade_bounds(waves, f);
+    vec3 cb = cascade_bounds_first(waves, f, nc);
     amax = b.y + cb.x;
     slope = b.z + cb.y;
   }
@@ -185,11 +192,11 @@ SG_FN MarchProbe march_probe(IN(WaveBuffer) waves, IN(Frame) fr, IN(MarchSet) m,
   r.f = p.y;
   real dxz = length(vec2(d.x, d.z));
   real e_all = wave_bounds_at(waves, fr, m.n).x;  // the amplitude of the waves past the set
-  // The cascades' fields first, whole (their bounds beside each prefix's).
-  vec3 cb = cascade_bounds(waves, fr);
+  // The set's cascades' fields first, whole (their bounds beside each prefix's).
+  vec3 cb = cascade_bounds_first(waves, fr, m.nc);
   vec2 hs = vec2(0.0);
-  if (fr.cascade_count > 0) {
-    vec3 hc = cascade_height_gradient(waves, fr, p.x, p.z);
+  if (m.nc > 0) {
+    vec3 hc = cascade_height_gradient_first(waves, fr, m.nc, p.x, p.z);
     hs = vec2(hc.x, hc.y * d.x + hc.z * d.z);
     r.f = p.y - hc.x;
   }
@@ -214,7 +221,7 @@ SG_FN MarchProbe march_probe(IN(WaveBuffer) waves, IN(Frame) fr, IN(MarchSet) m,
     if (r.step >= max((fn + e) / m.lip, min_step)) break;
   }
   if (r.full) r.step = max(r.step, max(r.f / m.lip, min_step));
-  if (r.full && m.n == 0 && fr.cascade_count > 0 && r.f > 0.0) {
+  if (r.full && m.n == 0 && m.nc > 0 && r.f > 0.0) {
     // The cascades alone: their second-order step, from the interpolant's slope along the
     // ray and its curvature bound.
     r.step = max(r.step, march_second_order_step(r.f, d.y - hs.y, cb.z * dxz * dxz));
@@ -227,11 +234,13 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
   RayHit r = no_hit();
   // The height the left-out waves may have, per unit of ray length (0: every wave).
   real tol = f.intersect_tolerance > 0.0 ? f.intersect_tolerance * pixel_angle(f.camera, d) : 0.0;
-  MarchSet m = march_set(waves, f, f.wave_count, o, d);
+  MarchSet m = march_set(waves, f, f.wave_count, f.cascade_count, o, d);
   if (m.empty) return r;
   real s = m.s_enter;
   if (tol > 0.0) {
-    m = march_set(waves, f, first_wave_below(waves, f, tol * s), o, d);
+    int nc = first_cascade_below(waves, f, tol * s);
+    real rest = cascade_bounds(waves, f).x - cascade_bounds_first(waves, f, nc).x;
+    m = march_set(waves, f, first_wave_below(waves, f, max(tol * s - rest, 0.0)), nc, o, d);
     if (m.empty) return r;
     s = max(s, m.s_enter);
   }
@@ -247,9 +256,13 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
     if (tol > 0.0 && s > 1.25 * s_chosen) {
       // Further along the ray: fewer waves are visible.
       s_chosen = s;
-      int n = first_wave_below(waves, f, tol * s);
-      if (n < m.n) {
-        m = march_set(waves, f, n, o, d);
+      int nc = first_cascade_below(waves, f, tol * s);
+      real rest = cascade_bounds(waves, f).x - cascade_bounds_first(waves, f, nc).x;
+      int n = first_wave_below(waves, f, max(tol * s - rest, 0.0));
+      // nc only falls as s grows; n may rise where a cascade left the set (what it leaves
+      // out is taken from the waves' share): either set is within tau eps s of the whole.
+      if (n != m.n || nc != m.nc) {
+        m = march_set(waves, f, n, nc, o, d);
         if (m.empty) return r;
         min_step = graze_depth() / max(m.lip, 1e-30);
         if (s < m.s_enter) s = m.s_enter;
@@ -270,7 +283,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
       }
       // Root bracketed in [s_prev, s] (f(s_prev) > 0 >= f(s)): Illinois iterations.
       real a = s_prev;
-      real fa = prev_full ? f_prev : height_above_first(waves, f, m.n, o, d, a, dt);
+      real fa = prev_full ? f_prev : height_above_first(waves, f, m.n, m.nc, o, d, a, dt);
       real b = s;
       real fb = q.f;
       if (!(fa > 0.0)) {
@@ -282,7 +295,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
       for (int it = 0; it < kMaxRefineSteps && fa > 0.0 && -fb > root_tolerance(); ++it) {
         real c = (a * fb - b * fa) / (fb - fa);
         if (!(c > a && c < b)) c = 0.5 * (a + b);
-        real fc = height_above_first(waves, f, m.n, o, d, c, dt);
+        real fc = height_above_first(waves, f, m.n, m.nc, o, d, c, dt);
         if (fc > 0.0) {
           a = c;
           fa = fc;
@@ -297,7 +310,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
         if (b - a <= 4.0 * kRealEpsilon * abs(b)) break;
       }
       // b is on the surface's side f <= 0 within the tolerance; keep its exact height.
-      fb = height_above_first(waves, f, m.n, o, d, b, dt);
+      fb = height_above_first(waves, f, m.n, m.nc, o, d, b, dt);
       r.hit = true;
       r.s = b;
       r.point = o + b * d;
@@ -327,7 +340,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
     r.hit = true;
     r.s = m.s_exit;
     r.point = o + m.s_exit * d;
-    r.point.y = r.point.y - height_above_first(waves, f, m.n, o, d, m.s_exit, dt);
+    r.point.y = r.point.y - height_above_first(waves, f, m.n, m.nc, o, d, m.s_exit, dt);
   }
   return r;
 }

@@ -10,10 +10,10 @@
 #include "base/error.h"
 #include "kernel/kernel_counting.h"
 #include "methods/kernel_inputs.h"
-#include "shading/kernel_table.h"
 #include "methods/staa.h"
 #include "methods/stratified.h"
 #include "methods/supersample.h"
+#include "shading/kernel_table.h"
 #include "shading/path_table.h"
 
 namespace sg {
@@ -29,11 +29,10 @@ To same_struct(const From& f) {
 }
 
 // The counters, one by one (the same order as KernelWork's statistics).
-constexpr uint64_t KernelCounters::* kCounters[] = {
-    &KernelCounters::waves,         &KernelCounters::buffer_fetches,
-    &KernelCounters::table_fetches, &KernelCounters::nodes,
-    &KernelCounters::transcendentals, &KernelCounters::march_steps};
-KernelWork::Stat KernelWork::* const kStats[] = {
+constexpr uint64_t KernelCounters::*kCounters[] = {
+    &KernelCounters::waves, &KernelCounters::buffer_fetches,  &KernelCounters::table_fetches,
+    &KernelCounters::nodes, &KernelCounters::transcendentals, &KernelCounters::march_steps};
+KernelWork::Stat KernelWork::*const kStats[] = {
     &KernelWork::waves, &KernelWork::buffer_fetches,  &KernelWork::table_fetches,
     &KernelWork::nodes, &KernelWork::transcendentals, &KernelWork::march_steps};
 
@@ -65,8 +64,8 @@ bool kernel_work_counted(const std::string& method) {
          method == "staa";
 }
 
-KernelWork count_kernel_work(const SceneModel& m, const std::string& method,
-                             const MethodOptions& o, int frame) {
+KernelWork count_kernel_work(const SceneModel& m, const std::string& method, const MethodOptions& o,
+                             int frame) {
   if (!kernel_work_counted(method)) {
     throw Error("--counters: no counting render for method '" + method +
                 "' (point, supersample, staa-temporal and staa have one)");
@@ -91,7 +90,8 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method,
   }
   const PathTables& tables = PathTables::shared();
   const KernelFitTexture& fits = kernel_fit_texture();
-  const kc::StaaParams params = same_struct<kc::StaaParams>(staa_kernel_params<kd::StaaParams>(o.staa));
+  const kc::StaaParams params =
+      same_struct<kc::StaaParams>(staa_kernel_params<kd::StaaParams>(o.staa));
   const kc::PathTableInfo tinfo = same_struct<kc::PathTableInfo>(tables.kernel_info());
   const kc::KernelFitInfo finfo = same_struct<kc::KernelFitInfo>(fits.info);
 

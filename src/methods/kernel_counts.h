@@ -33,8 +33,8 @@ bool kernel_work_counted(const std::string& method);
 
 // Frame `frame` of m with `method` and its options, every pixel (oneTBB's threads, each
 // counting its own pixels). sg::Error for a method without a counting render.
-KernelWork count_kernel_work(const SceneModel& m, const std::string& method,
-                             const MethodOptions& o, int frame);
+KernelWork count_kernel_work(const SceneModel& m, const std::string& method, const MethodOptions& o,
+                             int frame);
 
 // A prediction, not a measurement: a frame's time on a GPU from the counts and the
 // GPU's published peak rates, as if the frame were bound by its transcendentals (the
@@ -54,7 +54,6 @@ struct GpuPeakRates {
 // Instructions" throughput table); 4 texture units per SM (the whitepaper's SM diagram),
 // taken as 4 texel fetches per clock.
 inline constexpr GpuPeakRates kH200{"H200 SXM", 132, 1.98e9, 16, 4};
-double predicted_frame_ms(const KernelWork& k, long pixels, const GpuPeakRates& gpu,
-                          bool from_max);
+double predicted_frame_ms(const KernelWork& k, long pixels, const GpuPeakRates& gpu, bool from_max);
 
 }  // namespace sg

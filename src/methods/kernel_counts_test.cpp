@@ -23,8 +23,10 @@ std::vector<Wave> some_waves(int n) {
   std::vector<Wave> w;
   for (int i = 0; i < n; ++i) {
     const double a = 0.37 * i;
-    w.push_back(Wave{0.01 + 0.002 * i, {0.4 * std::cos(a) * (1 + i), 0.4 * std::sin(a) * (1 + i)},
-                     0.3 * i, 0.0});
+    w.push_back(Wave{0.01 + 0.002 * i,
+                     {0.4 * std::cos(a) * (1 + i), 0.4 * std::sin(a) * (1 + i)},
+                     0.3 * i,
+                     0.0});
   }
   return w;
 }

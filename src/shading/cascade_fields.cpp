@@ -120,9 +120,11 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
                         R(L * (cam_z / L - std::floor(cam_z / L)))));
     texels.push_back(V4(R(cov_[c].x), R(cov_[c].y), R(cov_[c].z), R(log2_exact(lattices_[c]) + 1)));
   }
-  // The interpolants' bounds, summed over the cascades below (the display time's).
+  // The interpolants' bounds (the display time's), one texel per cascade after the
+  // headers: the sum over the cascades up to it (kernel/cascade_grid.glsl,
+  // cascade_bounds_first), filled in below.
   const size_t bounds_at = texels.size();
-  texels.push_back(V4(0));
+  texels.resize(texels.size() + cs.size(), V4(0));
   std::vector<glm::dvec3> bounds(cs.size(), glm::dvec3(0.0));
   // Each cascade's data at its own offset, the cascades on oneTBB's threads (each
   // cascade's transforms share its rows among them too).
@@ -176,10 +178,11 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
     }
   });
   glm::dvec3 sum(0.0);
-  for (const glm::dvec3& b : bounds)
-    sum += b;
+  for (size_t c = 0; c < cs.size(); ++c) {
+    sum += bounds[c];
+    texels[bounds_at + c] = V4(R(sum.x), R(sum.y), R(sum.z), R(0));
+  }
   bounds_ = sum;
-  texels[bounds_at] = V4(R(sum.x), R(sum.y), R(sum.z), R(0));
   return base;
 }
 

@@ -2,7 +2,8 @@
 // per frame, each cascade transformed at the path's K + 1 instants (scene/cascade_fft.h,
 // slopes and second derivatives), its LEAN chain built (means of s, s s^T and the
 // curvatures over aligned 2^l blocks), and all of it appended to the wave buffer after the
-// waves' sums, with a two-texel header per cascade. The per-pixel cost is then a few
+// waves' sums, with a two-texel header per cascade and a texel of the displaced march's
+// bounds per cascade (kernel/cascade_grid.glsl has the layout). The per-pixel cost is then a few
 // fetches per cascade whatever its waves (docs/ocean.md, "Shading from the cascades").
 //
 // Which methods read them: `point`, `supersample` with T = 1, `staa-temporal` and `staa`
