@@ -369,103 +369,134 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
 SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews) v,
                                      IN(StaaSums) sums, vec2 mean, mat2 display) {
   int K = f.segments;
-  if (v.moving || !(f.duration > 0.0)) return display;
-  mat2 sum = 0.5 * display;
-  for (int k = 0; k < K; ++k) {
-    ReflectionFootprint rk = reflection_footprint(f.light, fp, sums.path.g[k], sums.hess[k], mean);
-    mat2 ck = rk.valid ? rk.D * transpose(rk.D) / 12.0 : display;
-    sum += (k == 0 ? 0.5 : 1.0) * ck;
+  mat2 cov = display;
+  if (!v.moving && f.duration > 0.0) {
+    mat2 sum = 0.5 * display;
+    for (int k = 0; k < K; ++k) {
+      ReflectionFootprint rk =
+          reflection_footprint(f.light, fp, sums.path.g[k], sums.hess[k], mean);
+      mat2 ck = rk.valid ? rk.D * transpose(rk.D) / 12.0 : display;
+      sum += (k == 0 ? 0.5 : 1.0) * ck;
+    }
+    cov = sum / real(K);
   }
-  return sum / real(K);
+  return cov;
 }
 
-// Steps 3 to 5 from the sums.
-SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
-                             IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
-                             IN(KernelFitInfo) finfo, IN(Frame) f, IN(StaaParams) p,
-                             IN(Footprint) fp, IN(PathViews) v, IN(StaaSums) sums,
-                             OUT(StaaPath) path) {
+// Steps 3 to 5 from the sums, as stages. Each stage is one function with one exit; the
+// stages run in this order, and a pixel leaves the chain where a stage has decided it:
+//  a. the temporal method, exactly, when nothing aliases and there is no footprint term
+//     (staa_temporal_result);
+//  b. the NDF's centre along the path on the light plane (staa_ndf_along_path);
+//  c. the terms at the centre normal: Fresnel, the sky's split, the smooth terms
+//     (staa_centre_terms); a reflection turned away from the light ends here;
+//  d. the RDF's covariance on the light plane with the footprint term (staa_rdf), or the
+//     host's exact footprint (`--footprint exact`);
+//  e. the share below the horizon (staa_below_share);
+//  f. the light's share: the cull, then one integrator chosen once (staa_light_share).
+
+// Stage a: no aliasing share and no footprint term: the temporal method, exactly (Sec. 3.3).
+SG_FN StaaResult staa_temporal_result(IN(Frame) f, IN(StaaSums) sums, IN(PathViews) v) {
+  PathShares ps = temporal_shares_along(f, sums.path, v);
   StaaResult res = staa_result_miss();
   res.hit = true;
-  int K = f.segments;
-  for (int k = 0; k <= K; ++k) {
-    path.centre[k] = vec2(0.0);
-    path.valid[k] = false;
-  }
-  vec3 view = fp.view;
-  if (!sums.any_alias && p.footprint == 0) {
-    // Step 3: the temporal method, exactly.
-    PathShares ps = temporal_shares_along(f, sums.path, v);
-    res.temporal = true;
-    res.weights = ps.weights;
-    res.in_light = ps.in_light;
-    res.below = ps.below;
-    res.fresnel = ps.fresnel;
-    return res;
-  }
-  res.aliasing = sums.any_alias;
+  res.temporal = true;
+  res.weights = ps.weights;
+  res.in_light = ps.in_light;
+  res.below = ps.below;
+  res.fresnel = ps.fresnel;
+  return res;
+}
 
-  // Step 4: the NDF of the aliasing waves (none: a point at the resolved normal).
-  vec2 mean = (sums.any_alias && p.per_pixel_ndf && p.ndf_mean_shift) ? sums.ndf.mean : vec2(0.0);
-  mat2 ndf_cov = sums.any_alias ? sym2(sums.ndf.cov) : mat2(0.0);
-  // The NDF's centre at each instant: minus the resolved slope, plus the mean shift; the
-  // view of that instant.
+// Stage b: the aliasing waves' NDF (none: a point at the resolved normal), and its centre
+// at each instant mapped to the light plane: minus the resolved slope plus the mean
+// shift, reflected about the view of that instant. Instants whose reflection points away
+// from the light (r . L / |r| below kMinCosToLight) are not valid.
+struct StaaNdf {
+  vec2 mean;  // the NDF's mean shift (Appendix A), 0 without the per-pixel NDF
+  mat2 cov;   // the NDF's covariance
+  vec2 now;   // the NDF's centre at the display time
+};
+
+SG_FN StaaNdf staa_ndf_along_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v, IN(StaaSums) sums,
+                                  INOUT(StaaPath) path) {
+  int K = f.segments;
+  StaaNdf ndf;
+  ndf.mean = (sums.any_alias && p.per_pixel_ndf && p.ndf_mean_shift) ? sums.ndf.mean : vec2(0.0);
+  ndf.cov = sums.any_alias ? sym2(sums.ndf.cov) : mat2(0.0);
   for (int k = 0; k <= K; ++k) {
-    vec3 r = reflect_about_ndf_point(-sums.path.g[k] + mean, v.view[k]);
+    vec3 r = reflect_about_ndf_point(-sums.path.g[k] + ndf.mean, v.view[k]);
     path.valid[k] = dot(r, f.light.L) > kMinCosToLight * length(r);
     path.centre[k] = path.valid[k] ? light_to_plane(f.light, r) : vec2(0.0);
   }
-  vec2 nc_now = -sums.path.g[K] + mean;
-  vec3 n_now = normalize(vec3(nc_now.x, 1.0, nc_now.y));
+  ndf.now = -sums.path.g[K] + ndf.mean;
+  return ndf;
+}
+
+// Stage c: the Fresnel factor and the sky's split at the centre normal; the smooth terms
+// over the normals (smooth_terms.glsl) when they are on, which also give the share below
+// the horizon; without them, a reflection turned away from the light is below the
+// horizon or not by its centre alone.
+SG_FN void staa_centre_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) sums, vec3 view,
+                             IN(StaaNdf) ndf, bool toward_light, INOUT(StaaResult) res) {
+  vec3 n_now = normalize(vec3(ndf.now.x, 1.0, ndf.now.y));
   res.fresnel = fresnel_factor(f.fresnel, dot(n_now, view));
   res.sky_y = reflect_view(n_now, view).y;
   if (staa_smooth_side(f, p) > 0 && view.y > 0.0) {
     res.terms = staa_smooth_terms(f, p, sums, view);
     res.terms_valid = true;
     res.below = 1.0 - res.terms.above;
+  } else if (!toward_light) {
+    res.below = reflect_about_ndf_point(ndf.now, view).y <= 0.0 ? 1.0 : 0.0;
   }
-  if (!path.valid[K]) {
-    // The reflection points away from the light: nothing of the RDF reaches it.
-    if (!res.terms_valid) res.below = reflect_about_ndf_point(nc_now, view).y <= 0.0 ? 1.0 : 0.0;
-    res.weights = staa_weights(f, res);
-    return res;
-  }
-  mat2 Jc = ndf_to_light_plane_jacobian(nc_now, view, f.light);
-  mat2 cov_r = rdf_covariance(Jc, ndf_cov);
-  real R = f.light.tan_radius;
+}
 
-  // The pixel-footprint term: the pixel square mapped to the light plane by the resolved
-  // reflection's derivatives D.
+// Stage d: the RDF's covariance on the light plane, J Sigma J^T (Eqs. 8-16), plus the
+// pixel-footprint term, the pixel square mapped to the light plane by the resolved
+// reflection's derivatives D, averaged along the path (staa_footprint_covariance). With
+// `--footprint exact` and no aliasing share the host integrates the swept parallelogram
+// instead: `exact` is set and D returned.
+struct StaaRdf {
+  mat2 cov;
+  bool exact;  // handed to the host with D
+  mat2 D;
+};
+
+SG_FN StaaRdf staa_rdf(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp, IN(PathViews) v,
+                       IN(StaaSums) sums, IN(StaaNdf) ndf) {
+  int K = f.segments;
+  StaaRdf rdf;
+  rdf.cov = rdf_covariance(ndf_to_light_plane_jacobian(ndf.now, fp.view, f.light), ndf.cov);
+  rdf.exact = false;
+  rdf.D = mat2(0.0);
   if (p.footprint != 0) {
-    ReflectionFootprint rf = reflection_footprint(f.light, fp, sums.path.g[K], sums.hess[K], mean);
-    if (rf.valid) {
-      if (p.footprint == 2 && !sums.any_alias) {
-        res.exact_pending = true;
-        res.exact_D = rf.D;
-        return res;
-      }
-      cov_r += staa_footprint_covariance(f, fp, v, sums, mean, rf.D * transpose(rf.D) / 12.0);
+    ReflectionFootprint rf =
+        reflection_footprint(f.light, fp, sums.path.g[K], sums.hess[K], ndf.mean);
+    if (rf.valid && p.footprint == 2 && !sums.any_alias) {
+      rdf.exact = true;
+      rdf.D = rf.D;
+    } else if (rf.valid) {
+      rdf.cov += staa_footprint_covariance(f, fp, v, sums, ndf.mean, rf.D * transpose(rf.D) / 12.0);
     }
   }
+  return rdf;
+}
 
-  // The share below the horizon, averaged over the path's valid instants (the smooth
-  // terms measured it in the normals' own plane).
-  if (!res.terms_valid) {
-    real below = 0.0;
-    int counted = 0;
-    for (int k = 0; k <= K; ++k) {
-      if (!path.valid[k]) continue;
-      below += horizon_share(f.light, path.centre[k], cov_r);
-      counted += 1;
-    }
-    res.below = below / real(counted);
+// Stage e: the RDF's share below the horizon, averaged over the path's valid instants
+// (radiance.glsl, horizon_share).
+SG_FN real staa_below_share(IN(Frame) f, IN(StaaPath) path, mat2 cov_r) {
+  real below = 0.0;
+  int counted = 0;
+  for (int k = 0; k <= f.segments; ++k) {
+    if (!path.valid[k]) continue;
+    below += horizon_share(f.light, path.centre[k], cov_r);
+    counted += 1;
   }
+  return below / real(counted);
+}
 
-  PrincipalAxes ax = principal_axes(cov_r);
-  // Exact cull: when every point of the centres' path is further from the disk than its
-  // radius plus 12 major standard deviations, the RDF's mass in the disk is below
-  // exp(-144 / 2) ~ 1e-31 (the kernels, offset by at most ~3 s1 with stds at most s1, hold
-  // less still). Most pixels never reflect the light.
+// The least distance from the disk's centre to the path of the RDF's centres.
+SG_FN real path_min_distance(IN(StaaPath) path, int K) {
   real nearest = kRealMax;
   for (int k = 0; k < K; ++k) {
     if (!(path.valid[k] && path.valid[k + 1])) continue;
@@ -475,100 +506,196 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     real t = dd > 0.0 ? clamp(-dot(a, d) / dd, 0.0, 1.0) : 0.0;
     nearest = min(nearest, length(a + t * d));
   }
-  nearest = min(nearest, length(path.centre[K]));
-  if (nearest > R + 12.0 * ax.s1) {
-    res.in_light = 0.0;
-    res.weights = staa_weights(f, res);
-    return res;
-  }
-  // The same in the RDF's principal frame: when the disk's extent along the minor (major)
-  // axis stays further than 12 minor (major) standard deviations from the centre along
-  // the whole path, the mass is at most the 1D tail beyond 12 deviations, 1.8e-33. An
-  // elongated RDF (one dominant aliasing wave, or the footprint term alone) is culled
-  // here where the round bound above cannot.
-  vec2 minor_axis = vec2(-ax.u.y, ax.u.x);
-  real min_minor = path_min_abs_projection(path, K, minor_axis);
-  real min_major = path_min_abs_projection(path, K, ax.u);
+  return min(nearest, length(path.centre[K]));
+}
+
+// Stage f's integrators: the RDF's time-averaged mass in the light's disk (Eq. 17).
+const int kStaaVanishing = 0;  // a point RDF: the fraction of the path in the disk
+const int kStaaFallback = 1;   // past the elongation threshold (Sec. 3.6)
+const int kStaaKernels = 2;    // circular kernels along the major axis (Sec. 3.5, App. C)
+
+// Which integrator an RDF of principal axes `ax` takes: a vanishing RDF is a point; a
+// degenerate one (a line at the precision's resolution) or one more elongated than the
+// threshold (`--elongation`, else the number of kernels) takes the fallback.
+SG_FN int staa_integrator(IN(StaaParams) p, IN(PrincipalAxes) ax, real R) {
   real threshold = p.elongation_threshold > 0.0 ? p.elongation_threshold
                    : p.kernels > 1              ? real(p.kernels)
                                                 : kRealMax;
-  // Below these the RDF is a point, or a line, at the precision's resolution.
   real point_sigma = kDoublePrecision ? 1e-9 : 1e-5;
   real line_sigma = kDoublePrecision ? 1e-12 : 1e-6;
   bool degenerate = !(ax.s2 > line_sigma * R);
+  return ax.s1 <= point_sigma * R                    ? kStaaVanishing
+         : (degenerate || ax.s1 / ax.s2 > threshold) ? kStaaFallback
+                                                     : kStaaKernels;
+}
+
+// A vanishing RDF: the fraction of the path inside the disk (the path tables at sigma 0).
+SG_FN real staa_vanishing_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
+                                IN(PathTableInfo) tinfo, IN(StaaPath) path, int K, real R) {
   real in_light = 0.0;
-  real inv_k = 1.0 / real(K);
-  if (ax.s1 <= point_sigma * R) {
-    // A vanishing RDF: the fraction of the path inside the disk.
-    for (int k = 0; k < K; ++k) {
-      if (path.valid[k] && path.valid[k + 1]) {
-        in_light +=
-            path_average(table_f, table_s, tinfo, path.centre[k], path.centre[k + 1], 0.0, R);
-      }
-    }
-    in_light *= inv_k;
-  } else if (degenerate || ax.s1 / ax.s2 > threshold) {
-    // Past the elongation threshold: the RDF's mass in the disk (Sec. 3.6), at the display
-    // time or averaged along the path by the midpoint rule with samples closer than a third
-    // of the width of the mass-versus-position bump (disk radius + RDF spread along the
-    // path), at most 32 per sub-segment.
-    res.fallback = true;
-    if (min_minor > R + 12.0 * ax.s2 || min_major > R + 12.0 * ax.s1) {
-      in_light = 0.0;
-    } else if (!p.fallback_along_path) {
-      in_light = p.fallback_riemann
-                     ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
-                     : gaussian_disk_mass(path.centre[K], cov_r, R);
-    } else if (v.moving && !p.fallback_riemann) {
-      // A moving camera's paths are long: each sub-segment's time integral in closed form
-      // (gaussian.glsl, gaussian_disk_mass_along), at the cost of one instant's mass.
-      for (int k = 0; k < K; ++k) {
-        if (!(path.valid[k] && path.valid[k + 1])) continue;
-        in_light += gaussian_disk_mass_along(path.centre[k], path.centre[k + 1], cov_r, R);
-      }
-      in_light *= inv_k;
-    } else {
-      for (int k = 0; k < K; ++k) {
-        if (!(path.valid[k] && path.valid[k + 1])) continue;
-        vec2 d = path.centre[k + 1] - path.centre[k];
-        real len = length(d);
-        vec2 dir = len > 0.0 ? d / len : vec2(1.0, 0.0);
-        real width = R + sqrt(max(0.0, dot(dir, cov_r * dir)));
-        int n = clamp(int(ceil(3.0 * len / width)), 1, 32);
-        real seg = 0.0;
-        for (int q = 0; q < n; ++q) {
-          vec2 c = path.centre[k] + ((real(q) + 0.5) / real(n)) * d;
-          seg += p.fallback_riemann ? gaussian_disk_mass_riemann(c, cov_r, R, p.riemann_cells)
-                                    : gaussian_disk_mass(c, cov_r, R);
-        }
-        in_light += seg / real(n);
-      }
-      in_light *= inv_k;
-    }
-  } else {
-    KernelSet ks = elliptical_kernels(fits, finfo, p.kernels, ax.s2, ax.s1);
-    // The principal-frame cull for the kernels: circles of at most the largest kernel's
-    // deviation, offset along the major axis by at most the largest offset.
-    real sigma_max = 0.0;
-    real offset_max = 0.0;
-    for (int q = 0; q < ks.count; ++q) {
-      sigma_max = max(sigma_max, ks.sigma[q]);
-      offset_max = max(offset_max, abs(ks.offset[q]));
-    }
-    bool culled = min_minor > R + 12.0 * sigma_max || min_major > R + offset_max + 12.0 * sigma_max;
-    for (int q = 0; q < ks.count && !culled; ++q) {
-      vec2 offset = ks.offset[q] * ax.u;
-      real along = 0.0;
-      for (int k = 0; k < K; ++k) {
-        if (!(path.valid[k] && path.valid[k + 1])) continue;
-        along += path_average(table_f, table_s, tinfo, path.centre[k] + offset,
-                              path.centre[k + 1] + offset, ks.sigma[q], R);
-      }
-      in_light += ks.weight[q] * along * inv_k;
+  for (int k = 0; k < K; ++k) {
+    if (path.valid[k] && path.valid[k + 1]) {
+      in_light += path_average(table_f, table_s, tinfo, path.centre[k], path.centre[k + 1], 0.0, R);
     }
   }
-  res.in_light = clamp(in_light, 0.0, 1.0 - res.below);
-  res.weights = staa_weights(f, res);
+  return in_light * (1.0 / real(K));
+}
+
+// The fallback (Sec. 3.6): the RDF's mass in the disk at the display time, or averaged
+// along the path: under a moving camera each sub-segment's time integral in closed form
+// (gaussian.glsl, gaussian_disk_mass_along); otherwise by the midpoint rule with samples
+// closer than a third of the width of the mass-versus-position bump (disk radius + RDF
+// spread along the path), at most 32 per sub-segment.
+SG_FN real staa_fallback_share(IN(StaaParams) p, IN(PathViews) v, IN(StaaPath) path, int K,
+                               mat2 cov_r, real R) {
+  real in_light = 0.0;
+  if (!p.fallback_along_path) {
+    in_light = p.fallback_riemann
+                   ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
+                   : gaussian_disk_mass(path.centre[K], cov_r, R);
+  } else if (v.moving && !p.fallback_riemann) {
+    for (int k = 0; k < K; ++k) {
+      if (!(path.valid[k] && path.valid[k + 1])) continue;
+      in_light += gaussian_disk_mass_along(path.centre[k], path.centre[k + 1], cov_r, R);
+    }
+    in_light *= 1.0 / real(K);
+  } else {
+    for (int k = 0; k < K; ++k) {
+      if (!(path.valid[k] && path.valid[k + 1])) continue;
+      vec2 d = path.centre[k + 1] - path.centre[k];
+      real len = length(d);
+      vec2 dir = len > 0.0 ? d / len : vec2(1.0, 0.0);
+      real width = R + sqrt(max(0.0, dot(dir, cov_r * dir)));
+      int n = clamp(int(ceil(3.0 * len / width)), 1, 32);
+      real seg = 0.0;
+      for (int q = 0; q < n; ++q) {
+        vec2 c = path.centre[k] + ((real(q) + 0.5) / real(n)) * d;
+        seg += p.fallback_riemann ? gaussian_disk_mass_riemann(c, cov_r, R, p.riemann_cells)
+                                  : gaussian_disk_mass(c, cov_r, R);
+      }
+      in_light += seg / real(n);
+    }
+    in_light *= 1.0 / real(K);
+  }
+  return in_light;
+}
+
+// The kernels (Sec. 3.5, 3.6, Appendix C; kernel_fit.glsl): the RDF as circular Gaussians
+// along its major axis, each integrated along the path offset by its centre (Fig. 10) with
+// the path tables (Eqs. 18-19). The principal-frame cull of staa_light_share, for circles
+// of at most the largest kernel's deviation offset by at most the largest offset.
+SG_FN real staa_kernels_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
+                              IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
+                              IN(KernelFitInfo) finfo, IN(StaaParams) p, IN(StaaPath) path, int K,
+                              IN(PrincipalAxes) ax, real R, real min_minor, real min_major) {
+  KernelSet ks = elliptical_kernels(fits, finfo, p.kernels, ax.s2, ax.s1);
+  real sigma_max = 0.0;
+  real offset_max = 0.0;
+  for (int q = 0; q < ks.count; ++q) {
+    sigma_max = max(sigma_max, ks.sigma[q]);
+    offset_max = max(offset_max, abs(ks.offset[q]));
+  }
+  bool culled = min_minor > R + 12.0 * sigma_max || min_major > R + offset_max + 12.0 * sigma_max;
+  real in_light = 0.0;
+  real inv_k = 1.0 / real(K);
+  for (int q = 0; q < ks.count && !culled; ++q) {
+    vec2 offset = ks.offset[q] * ax.u;
+    real along = 0.0;
+    for (int k = 0; k < K; ++k) {
+      if (!(path.valid[k] && path.valid[k + 1])) continue;
+      along += path_average(table_f, table_s, tinfo, path.centre[k] + offset,
+                            path.centre[k + 1] + offset, ks.sigma[q], R);
+    }
+    in_light += ks.weight[q] * along * inv_k;
+  }
+  return in_light;
+}
+
+// Stage f: the light's share, the RDF's time-averaged mass in the disk, before the clamp
+// to what the horizon leaves. Culls first: when every point of the centres' path is
+// further from the disk than its radius plus 12 major standard deviations, the mass is
+// below exp(-144 / 2) ~ 1e-31 (most pixels never reflect the light); in the RDF's
+// principal frame, when the disk's extent along the minor (major) axis stays further than
+// 12 minor (major) deviations from the centre along the whole path, the mass is at most
+// the 1D tail beyond 12 deviations, 1.8e-33 (an elongated RDF, one dominant aliasing wave
+// or the footprint term alone, is culled there where the round bound cannot). `culled`:
+// the round cull decided (the share is 0 before any integrator is chosen); `fallback`:
+// the fallback integrator was chosen.
+struct StaaLightShare {
+  real in_light;
+  bool culled;
+  bool fallback;
+};
+
+SG_FN StaaLightShare staa_light_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
+                                      IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
+                                      IN(KernelFitInfo) finfo, IN(Frame) f, IN(StaaParams) p,
+                                      IN(PathViews) v, IN(StaaPath) path, mat2 cov_r) {
+  int K = f.segments;
+  real R = f.light.tan_radius;
+  PrincipalAxes ax = principal_axes(cov_r);
+  StaaLightShare s;
+  s.in_light = 0.0;
+  s.culled = path_min_distance(path, K) > R + 12.0 * ax.s1;
+  s.fallback = false;
+  if (!s.culled) {
+    int integrator = staa_integrator(p, ax, R);
+    real min_minor = path_min_abs_projection(path, K, vec2(-ax.u.y, ax.u.x));
+    real min_major = path_min_abs_projection(path, K, ax.u);
+    s.fallback = integrator == kStaaFallback;
+    if (integrator == kStaaVanishing) {
+      s.in_light = staa_vanishing_share(table_f, table_s, tinfo, path, K, R);
+    } else if (integrator == kStaaFallback) {
+      bool culled = min_minor > R + 12.0 * ax.s2 || min_major > R + 12.0 * ax.s1;
+      if (!culled) s.in_light = staa_fallback_share(p, v, path, K, cov_r, R);
+    } else {
+      s.in_light = staa_kernels_share(table_f, table_s, tinfo, fits, finfo, p, path, K, ax, R,
+                                      min_minor, min_major);
+    }
+  }
+  return s;
+}
+
+// Steps 3 to 5 from the sums: the stages above in order.
+SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
+                             IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
+                             IN(KernelFitInfo) finfo, IN(Frame) f, IN(StaaParams) p,
+                             IN(Footprint) fp, IN(PathViews) v, IN(StaaSums) sums,
+                             OUT(StaaPath) path) {
+  int K = f.segments;
+  for (int k = 0; k <= K; ++k) {
+    path.centre[k] = vec2(0.0);
+    path.valid[k] = false;
+  }
+  StaaResult res;
+  if (!sums.any_alias && p.footprint == 0) {
+    res = staa_temporal_result(f, sums, v);
+  } else {
+    res = staa_result_miss();
+    res.hit = true;
+    res.aliasing = sums.any_alias;
+    StaaNdf ndf = staa_ndf_along_path(f, p, v, sums, path);
+    staa_centre_terms(f, p, sums, fp.view, ndf, path.valid[K], res);
+    StaaRdf rdf;
+    rdf.cov = mat2(0.0);
+    rdf.exact = false;
+    rdf.D = mat2(0.0);
+    if (path.valid[K]) rdf = staa_rdf(f, p, fp, v, sums, ndf);
+    if (rdf.exact) {
+      // The host finishes the pixel (methods/staa.cpp, finish_exact).
+      res.exact_pending = true;
+      res.exact_D = rdf.D;
+    } else {
+      if (path.valid[K]) {
+        if (!res.terms_valid) res.below = staa_below_share(f, path, rdf.cov);
+        StaaLightShare s =
+            staa_light_share(table_f, table_s, tinfo, fits, finfo, f, p, v, path, rdf.cov);
+        res.fallback = s.fallback;
+        res.in_light = s.culled ? 0.0 : clamp(s.in_light, 0.0, 1.0 - res.below);
+      }
+      res.weights = staa_weights(f, res);
+    }
+  }
   return res;
 }
 
