@@ -146,8 +146,9 @@ SG_FN real gaussian_disk_mass(vec2 mean, mat2 cov, real R) {
 
 // The mass of N(a + t (b - a), cov) in the disk |p| <= R averaged over t in [0, 1]: Eq. 17's
 // time integral along one straight sub-segment of the path, in closed form in time (the
-// fallback under a moving camera, staa.glsl, whose paths are long: the midpoint rule
-// above would need a sample per third of the bump's width). With x along the segment's unit
+// fallback along the path, staa.glsl: a midpoint rule would need a sample per third of the
+// bump's width, up to 32 an instant's cost each, and its count would differ between
+// neighbouring pixels). With x along the segment's unit
 // direction e (length L) and y along its normal n, the Gaussian splits into the marginal
 // N(y; c_y, v_y) of its normal coordinate (c_y = n . a, v_y = n^T cov n) and the
 // conditional of x, N(x; a_x + t L + r (y - c_y), v_x|y) (r = e^T cov n / v_y,

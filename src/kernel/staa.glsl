@@ -542,18 +542,19 @@ SG_FN real staa_vanishing_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table
 }
 
 // The fallback (Sec. 3.6): the RDF's mass in the disk at the display time, or averaged
-// along the path: under a moving camera each sub-segment's time integral in closed form
-// (gaussian.glsl, gaussian_disk_mass_along); otherwise by the midpoint rule with samples
-// closer than a third of the width of the mass-versus-position bump (disk radius + RDF
-// spread along the path), at most 32 per sub-segment.
-SG_FN real staa_fallback_share(IN(StaaParams) p, IN(PathViews) v, IN(StaaPath) path, int K,
-                               mat2 cov_r, real R) {
+// along the path. `--fallback quadrature` takes each sub-segment's time average in closed
+// form in time (gaussian.glsl, gaussian_disk_mass_along): the cost of one instant's mass
+// whatever the path's length, so that neighbouring pixels with short and long paths take
+// the same work. The paper's Riemann sum has no such form: it is averaged by the midpoint
+// rule with samples closer than a third of the width of the mass-versus-position bump
+// (disk radius + RDF spread along the path), at most 32 per sub-segment.
+SG_FN real staa_fallback_share(IN(StaaParams) p, IN(StaaPath) path, int K, mat2 cov_r, real R) {
   real in_light = 0.0;
   if (!p.fallback_along_path) {
     in_light = p.fallback_riemann
                    ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
                    : gaussian_disk_mass(path.centre[K], cov_r, R);
-  } else if (v.moving && !p.fallback_riemann) {
+  } else if (!p.fallback_riemann) {
     for (int k = 0; k < K; ++k) {
       if (!(path.valid[k] && path.valid[k + 1])) continue;
       in_light += gaussian_disk_mass_along(path.centre[k], path.centre[k + 1], cov_r, R);
@@ -630,7 +631,7 @@ struct StaaLightShare {
 SG_FN StaaLightShare staa_light_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
                                       IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
                                       IN(KernelFitInfo) finfo, IN(Frame) f, IN(StaaParams) p,
-                                      IN(PathViews) v, IN(StaaPath) path, mat2 cov_r) {
+                                      IN(StaaPath) path, mat2 cov_r) {
   int K = f.segments;
   real R = f.light.tan_radius;
   PrincipalAxes ax = principal_axes(cov_r);
@@ -647,7 +648,7 @@ SG_FN StaaLightShare staa_light_share(IN(R32Texture2D) table_f, IN(R32Texture3D)
       s.in_light = staa_vanishing_share(table_f, table_s, tinfo, path, K, R);
     } else if (integrator == kStaaFallback) {
       bool culled = min_minor > R + 12.0 * ax.s2 || min_major > R + 12.0 * ax.s1;
-      if (!culled) s.in_light = staa_fallback_share(p, v, path, K, cov_r, R);
+      if (!culled) s.in_light = staa_fallback_share(p, path, K, cov_r, R);
     } else {
       s.in_light = staa_kernels_share(table_f, table_s, tinfo, fits, finfo, p, path, K, ax, R,
                                       min_minor, min_major);
@@ -689,7 +690,7 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
       if (path.valid[K]) {
         if (!res.terms_valid) res.below = staa_below_share(f, path, rdf.cov);
         StaaLightShare s =
-            staa_light_share(table_f, table_s, tinfo, fits, finfo, f, p, v, path, rdf.cov);
+            staa_light_share(table_f, table_s, tinfo, fits, finfo, f, p, path, rdf.cov);
         res.fallback = s.fallback;
         res.in_light = s.culled ? 0.0 : clamp(s.in_light, 0.0, 1.0 - res.below);
       }

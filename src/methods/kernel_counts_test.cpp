@@ -86,6 +86,26 @@ TEST(KernelCounts, StaaCountsItsQuadratureAndTables) {
   EXPECT_EQ(k.march_steps.max, 0u);
 }
 
+TEST(KernelCounts, StaaFallbackCostDoesNotGrowWithThePath) {
+  // The fallback's average along each sub-segment is in closed form in time
+  // (gaussian_disk_mass_along): at most 5 pieces of 30 nodes a sub-segment, however long
+  // the path. (A midpoint rule over the path took up to 32 instants of up to 3 pieces: 720
+  // to 1,260 nodes in one pixel of these scenes.) The scenes have no Fresnel and no sky
+  // gradient, so no other node is counted.
+  for (const char* name : {"simple", "medium", "high"}) {
+    Scene s = testing::project_scene(name);
+    set_image_size(s, 160, 90);
+    const SceneModel m(s);
+    for (int segments : {1, 4}) {
+      MethodOptions o;
+      o.staa.segments = segments;
+      const KernelWork k = count_kernel_work(m, "staa", o, 2);
+      EXPECT_GT(k.nodes.max, 0u) << name << ": some pixel takes the fallback";
+      EXPECT_LE(k.nodes.max, uint64_t(150 * segments)) << name << " K " << segments;
+    }
+  }
+}
+
 TEST(KernelCounts, DisplacedWaterMarches) {
   const SceneModel m(testing::displaced_variant(water_only(4)));
   const KernelWork k = count_kernel_work(m, "point", {}, 0);
