@@ -92,10 +92,10 @@ fuzz-run:
 ci-fast: test format-check
 
 format:
-	clang-format -i $$(git ls-files '*.cpp' '*.h' '*.glsl')
+	clang-format -i $$(git ls-files --cached --others --exclude-standard '*.cpp' '*.h' '*.glsl')
 
 format-check:
-	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.h' '*.glsl')
+	clang-format --dry-run --Werror $$(git ls-files --cached --others --exclude-standard '*.cpp' '*.h' '*.glsl')
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) build-fuzz build-ci-logs
