@@ -229,6 +229,24 @@ SG_FN MarchProbe march_probe(IN(WaveBuffer) waves, IN(Frame) fr, IN(MarchSet) m,
   return r;
 }
 
+// The waves and cascades a march needs where the left-out ones may have a height of at
+// most `budget` (tau eps s at ray length s): the budget goes to the cascades first, the
+// finest left out while their bounds sum to at most it (first_cascade_below), and what
+// they leave of it to the explicit waves, the shortest left out likewise
+// (first_wave_below).
+struct MarchChoice {
+  int n;   // the first n waves
+  int nc;  // the first nc cascades
+};
+
+SG_FN MarchChoice march_choice(IN(WaveBuffer) waves, IN(Frame) f, real budget) {
+  MarchChoice c;
+  c.nc = first_cascade_below(waves, f, budget);
+  real rest = cascade_bounds(waves, f).x - cascade_bounds_first(waves, f, c.nc).x;
+  c.n = first_wave_below(waves, f, max(budget - rest, 0.0));
+  return c;
+}
+
 // The first intersection with y = h(x, z, t), dt = t - display time; `d` unit length.
 SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3 d, real dt) {
   RayHit r = no_hit();
@@ -238,9 +256,8 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
   if (m.empty) return r;
   real s = m.s_enter;
   if (tol > 0.0) {
-    int nc = first_cascade_below(waves, f, tol * s);
-    real rest = cascade_bounds(waves, f).x - cascade_bounds_first(waves, f, nc).x;
-    m = march_set(waves, f, first_wave_below(waves, f, max(tol * s - rest, 0.0)), nc, o, d);
+    MarchChoice c = march_choice(waves, f, tol * s);
+    m = march_set(waves, f, c.n, c.nc, o, d);
     if (m.empty) return r;
     s = max(s, m.s_enter);
   }
@@ -256,13 +273,11 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
     if (tol > 0.0 && s > 1.25 * s_chosen) {
       // Further along the ray: fewer waves are visible.
       s_chosen = s;
-      int nc = first_cascade_below(waves, f, tol * s);
-      real rest = cascade_bounds(waves, f).x - cascade_bounds_first(waves, f, nc).x;
-      int n = first_wave_below(waves, f, max(tol * s - rest, 0.0));
+      MarchChoice c = march_choice(waves, f, tol * s);
       // nc only falls as s grows; n may rise where a cascade left the set (what it leaves
       // out is taken from the waves' share): either set is within tau eps s of the whole.
-      if (n != m.n || nc != m.nc) {
-        m = march_set(waves, f, n, nc, o, d);
+      if (c.n != m.n || c.nc != m.nc) {
+        m = march_set(waves, f, c.n, c.nc, o, d);
         if (m.empty) return r;
         min_step = graze_depth() / max(m.lip, 1e-30);
         if (s < m.s_enter) s = m.s_enter;
