@@ -144,8 +144,10 @@ SG_FN CascadeMoments cascade_footprint_moments(IN(WaveBuffer) waves, IN(Frame) f
   CascadeMoments r;
   r.mean = vec2(0.0);
   r.cov = vec3(0.0);
+  int data = cascade_data_start(f);
   for (int c = 0; c < f.cascade_count; ++c) {
-    Cascade cc = cascade_at(waves, f, c);
+    Cascade cc = cascade_header(waves, f, c, data);
+    data = cascade_data_end(f, cc);
     CascadeFilter b = cascade_filter(cc, J, 1.0);
     if (b.whole) {
       r.cov += cc.cov;

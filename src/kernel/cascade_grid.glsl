@@ -58,13 +58,11 @@ SG_FN int cascade_level_offset(int n, int l) {
   return 2 * ((4 * n * n - 4 * nl * nl) / 3);
 }
 
-SG_FN Cascade cascade_at(IN(WaveBuffer) waves, IN(Frame) f, int c) {
+// Cascade c's header, its data starting at texel `data`. The loops over the cascades walk
+// the data with cascade_data_start and cascade_data_end, two header texels a cascade;
+// cascade_at finds one cascade alone by walking the headers before it.
+SG_FN Cascade cascade_header(IN(WaveBuffer) waves, IN(Frame) f, int c, int data) {
   Cascade r;
-  int data = f.cascade_base + 3 * f.cascade_count;
-  for (int q = 0; q < c; ++q) {
-    int nq = int(wave_texel(waves, f.cascade_base + 2 * q).y + 0.5);
-    data += (f.segments + 1) * cascade_instant_texels(nq);
-  }
   vec4 h0 = wave_texel(waves, f.cascade_base + 2 * c);
   vec4 h1 = wave_texel(waves, f.cascade_base + 2 * c + 1);
   r.size = h0.x;
@@ -74,6 +72,23 @@ SG_FN Cascade cascade_at(IN(WaveBuffer) waves, IN(Frame) f, int c) {
   r.levels = int(h1.w + 0.5);
   r.data = data;
   return r;
+}
+// Where cascade 0's data starts: after the headers and the bounds.
+SG_FN int cascade_data_start(IN(Frame) f) {
+  return f.cascade_base + 3 * f.cascade_count;
+}
+// Where the data of the cascade after `c` starts.
+SG_FN int cascade_data_end(IN(Frame) f, IN(Cascade) c) {
+  return c.data + (f.segments + 1) * cascade_instant_texels(c.n);
+}
+
+SG_FN Cascade cascade_at(IN(WaveBuffer) waves, IN(Frame) f, int c) {
+  int data = cascade_data_start(f);
+  for (int q = 0; q < c; ++q) {
+    int nq = int(wave_texel(waves, f.cascade_base + 2 * q).y + 0.5);
+    data += (f.segments + 1) * cascade_instant_texels(nq);
+  }
+  return cascade_header(waves, f, c, data);
 }
 
 // A texel's (or a filtered sample's) two vec4s.
@@ -187,8 +202,10 @@ SG_FN CascadeTexel cascade_filtered(IN(WaveBuffer) waves, IN(Cascade) c, int k, 
 // `staa-temporal` and `specaa`.
 SG_FN vec2 cascade_gradient(IN(WaveBuffer) waves, IN(Frame) f, int k, real x, real z) {
   vec2 g = vec2(0.0);
+  int data = cascade_data_start(f);
   for (int c = 0; c < f.cascade_count; ++c) {
-    Cascade cc = cascade_at(waves, f, c);
+    Cascade cc = cascade_header(waves, f, c, data);
+    data = cascade_data_end(f, cc);
     vec4 a = cascade_bicubic(waves, cc, k, cascade_grid_coord(cc, vec2(x, z)), false).a;
     g += vec2(a.x, a.y);
   }
@@ -199,8 +216,10 @@ SG_FN vec2 cascade_gradient(IN(WaveBuffer) waves, IN(Frame) f, int k, real x, re
 // sampled (level 0, Catmull-Rom): (h_xx, h_xz, h_zz), the `specaa` kernel's curvature.
 SG_FN vec3 cascade_hessian(IN(WaveBuffer) waves, IN(Frame) f, real x, real z) {
   vec3 h = vec3(0.0);
+  int data = cascade_data_start(f);
   for (int c = 0; c < f.cascade_count; ++c) {
-    Cascade cc = cascade_at(waves, f, c);
+    Cascade cc = cascade_header(waves, f, c, data);
+    data = cascade_data_end(f, cc);
     CascadeTexel t =
         cascade_bicubic(waves, cc, f.segments, cascade_grid_coord(cc, vec2(x, z)), true);
     h += vec3(t.a.z, t.b.x, t.a.w);
@@ -223,8 +242,10 @@ SG_FN vec4 catmull_rom_derivative_weights(real t) {
 SG_FN vec3 cascade_height_gradient_first(IN(WaveBuffer) waves, IN(Frame) f, int count, real x,
                                          real z) {
   vec3 r = vec3(0.0);
+  int data = cascade_data_start(f);
   for (int c = 0; c < count; ++c) {
-    Cascade cc = cascade_at(waves, f, c);
+    Cascade cc = cascade_header(waves, f, c, data);
+    data = cascade_data_end(f, cc);
     vec2 u = cascade_grid_coord(cc, vec2(x, z));
     vec2 i0 = floor(u);
     vec4 wx = catmull_rom_weights(u.x - i0.x);

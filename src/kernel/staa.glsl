@@ -242,8 +242,11 @@ SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) 
 SG_FN void staa_cascades_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f,
                              IN(StaaParams) p, IN(Footprint) fp, IN(PathViews) v) {
   int side = staa_smooth_side(f, p);
+  int data = cascade_data_start(f);
   for (int c = 0; c < f.cascade_count; ++c) {
-    CascadeShare s = cascade_staa_share(waves, f, p, fp, v, cascade_at(waves, f, c));
+    Cascade cc = cascade_header(waves, f, c, data);
+    data = cascade_data_end(f, cc);
+    CascadeShare s = cascade_staa_share(waves, f, p, fp, v, cc);
     for (int k = 0; k <= f.segments; ++k) {
       sums.path.g[k] += s.g[k];
       sums.hess[k] += s.hess[k];
