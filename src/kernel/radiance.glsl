@@ -41,7 +41,10 @@ SG_FN vec4 sea_weights() {
 SG_FN vec2 sky_shares(IN(Frame) f, real dir_y) {
   if (!(dir_y > 0.0)) return vec2(0.0, 1.0);
   real u = f.sky_exponent * log(min(dir_y, 1.0));
-  return vec2(exp(u), -exp_minus_one(u));
+  real e = exp(u);
+  // 1 - e^u: exp_minus_one's series near u = 0, else from the one exponential (as
+  // exp_minus_one takes it there, bit for bit).
+  return vec2(e, abs(u) < 0.25 ? -exp_minus_one(u) : 1.0 - e);
 }
 
 // The sky in a direction of height dir_y: zenith max(dir_y, 0)^exponent, horizon the
