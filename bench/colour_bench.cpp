@@ -14,6 +14,7 @@
 
 #include "engine/render.h"
 #include "methods/method.h"
+#include "testing/path_tables.h"
 #include "testing/paths.h"
 
 namespace sg {
@@ -35,7 +36,7 @@ void BM_Frame(benchmark::State& state, const std::string& method, bool colour) {
   const SceneModel model(s);
   MethodOptions o;
   o.samples = SampleCounts{4, 4, 2};  // reference, supersample: 32 samples per pixel
-  auto m = make_method(method, o);
+  auto m = make_method(method, testing::with_tables(o));
   int frame = 1;
   render_frame(model, *m, 0, RenderSettings{});  // tables, maps, a TAA history
   for (auto _ : state) {

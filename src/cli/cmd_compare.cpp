@@ -23,6 +23,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/method_flags.h"
+#include "cli/path_tables.h"
 #include "cli/progress.h"
 #include "cli/slurm.h"
 #include "gl_engine/engines.h"
@@ -485,7 +486,7 @@ void run_compare(const CompareArgs& a) {
   const StudyResults r =
       a.merge ? merge_study(c, progress_of(bar)) : run_study(c, progress_of(bar));
   bar.finish();
-  if (!live.scenes.empty()) web::write_web_page(live);
+  if (!live.scenes.empty()) web::write_web_page(live, cli_path_tables().tables());
 
   std::printf("%-10s %-32s %9s %9s %9s %9s %10s\n", "scene", "variant", "rmse", "temporal", "near",
               "far", "ms/frame");

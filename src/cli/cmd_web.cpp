@@ -10,6 +10,7 @@
 #include "base/error.h"
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/path_tables.h"
 #include "scene/scene.h"
 #include "web/web_page.h"
 
@@ -34,7 +35,7 @@ void run_web(const WebArgs& a) {
     check_usage([&] { apply_image_size(s, a.width, a.height); });
     o.scenes.push_back({path, s.width, s.height});
   }
-  const web::WebPage page = web::write_web_page(o);
+  const web::WebPage page = web::write_web_page(o, cli_path_tables().tables());
   std::string names;
   for (const std::string& n : page.scene_names)
     names += (names.empty() ? "" : ", ") + n;

@@ -17,25 +17,11 @@
 #include "base/error.h"
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/path_tables.h"
 #include "cli/slurm.h"
 #include "gl_engine/program_notice.h"
-#include "shading/path_table.h"
 
 namespace {
-
-// The path-integral tables (used by `staa`) are generated once and cached in an 8 MiB file;
-// say so when that happens, and where.
-void announce_path_table_cache(const sg::PathTableCacheResult& r) {
-  if (r.written) {
-    std::fprintf(stderr,
-                 "sunglint: generated the path-integral tables and cached them in %s (8 MiB, "
-                 "reused by later runs; --cache-dir or SUNGLINT_CACHE_DIR choose the folder)\n",
-                 r.path.c_str());
-  } else {
-    std::fprintf(stderr, "sunglint: generated the path-integral tables in memory (%s)\n",
-                 r.note.c_str());
-  }
-}
 
 std::vector<std::string> subcommand_names(const CLI::App& app) {
   std::vector<std::string> names;
@@ -105,11 +91,10 @@ int main(int argc, char** argv) {
   app.fallthrough();  // --cache-dir may follow the subcommand
   app.set_version_flag("--version", "sunglint 0.1.0");
   app.add_option_function<std::string>(
-      "--cache-dir", [](const std::string& dir) { sg::PathTables::set_cache_dir(dir); },
+      "--cache-dir", [](const std::string& dir) { sg::set_cli_cache_dir(dir); },
       "Folder of sunglint's cache file, the path-integral tables of staa (path_tables.bin, "
       "8 MiB; default $SUNGLINT_CACHE_DIR, else $XDG_CACHE_HOME/sunglint, else "
       "~/.cache/sunglint)");
-  sg::PathTables::set_cache_notice(announce_path_table_cache);
   // A GL program whose preparation takes a while (its first compile on a driver) is
   // announced, and its time said when it is ready.
   std::chrono::milliseconds notice_after = sg::gl_engine::kAnnounceAfter;

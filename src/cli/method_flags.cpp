@@ -9,12 +9,14 @@
 
 #include "base/error.h"
 #include "cli/args.h"
+#include "cli/path_tables.h"
 #include "gl_engine/gl_engine.h"
 #include "methods/method.h"
 
 namespace sg {
 
 void MethodFlags::finish(const std::string& context) {
+  options.path_tables = &cli_path_tables();
   options.samples_given = !samples.empty();
   options.samples =
       samples.empty() ? SampleCounts{} : parse_sample_counts(samples, context + "--samples");

@@ -47,6 +47,7 @@
 #include "engine/render.h"
 #include "gl_engine/engines.h"
 #include "testing/gl_context.h"
+#include "testing/path_tables.h"
 #include "testing/paths.h"
 #include "testing/random_scene.h"
 
@@ -150,12 +151,14 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   const char* kDeterministic[] = {"point", "supersample", "staa-temporal", "staa"};
   std::map<std::string, std::unique_ptr<Method>> gl, cpu, cpu_double;
   for (const char* n : kDeterministic) {
-    gl[n] = make_method_on(Engine::gl, n, o);
-    cpu[n] = make_method_on(Engine::cpu, n, of);
-    cpu_double[n] = make_method_on(Engine::cpu, n, o);
+    gl[n] = make_method_on(Engine::gl, n, testing::with_tables(o));
+    cpu[n] = make_method_on(Engine::cpu, n, testing::with_tables(of));
+    cpu_double[n] = make_method_on(Engine::cpu, n, testing::with_tables(o));
   }
-  std::unique_ptr<Method> gl_ref = make_method_on(Engine::gl, "reference", ro);
-  std::unique_ptr<Method> cpu_ref = make_method_on(Engine::cpu, "reference", ro);
+  std::unique_ptr<Method> gl_ref =
+      make_method_on(Engine::gl, "reference", testing::with_tables(ro));
+  std::unique_ptr<Method> cpu_ref =
+      make_method_on(Engine::cpu, "reference", testing::with_tables(ro));
 
   std::map<std::string, int> failures;
   std::map<std::string, double> seconds;

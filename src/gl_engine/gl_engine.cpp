@@ -113,7 +113,7 @@ GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
       program_(kernel_program(v_.entry, v_.segments)) {
   watch_->pause();
   if (v_.entry == KernelEntry::staa) {
-    const PathTables& t = PathTables::shared();
+    const PathTables& t = required_path_tables(o, method);
     const kernel_tables::R32Texture2D f = t.f_texture();
     const kernel_tables::R32Texture3D s = t.s_texture();
     table_f_ = gl::Texture::table(GL_TEXTURE_2D, f.width, f.height, 1,

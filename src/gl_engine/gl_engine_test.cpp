@@ -18,6 +18,7 @@
 #include "ocean/lattice_ocean.h"
 #include "scene/camera_path.h"
 #include "testing/gl_context.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -55,7 +56,7 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
   cases.push_back({"staa", two});
   cases.push_back({"staa-temporal", two});
   for (const Case& c : cases) {
-    gl_engine::GlEngine engine(c.name, c.o);
+    gl_engine::GlEngine engine(c.name, testing::with_tables(c.o));
     FrameContext ctx{m, frame_time(s, 1), 0};
     engine.dispatch(ctx);  // sets the uniforms
     gl_engine::UniformWriter probe(engine.program());
@@ -93,8 +94,8 @@ Comparison compare_engines(const std::string& scene, const std::string& method,
   const SceneModel m(s);
   MethodOptions of = o;
   of.precision = Precision::float32;
-  std::unique_ptr<Method> cpu = make_method_on(Engine::cpu, method, of);
-  std::unique_ptr<Method> gl = make_method_on(Engine::gl, method, o);
+  std::unique_ptr<Method> cpu = make_method_on(Engine::cpu, method, testing::with_tables(of));
+  std::unique_ptr<Method> gl = make_method_on(Engine::gl, method, testing::with_tables(o));
   const std::vector<Image> a = render(m, *cpu, 0, 2), b = render(m, *gl, 0, 2);
   Comparison c;
   c.gl_cpu = compare_sequences(b, a).rmse;
@@ -121,7 +122,7 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineOnTheSharedScenes) {
     s.height = 90;
     const SceneModel m(s);
     MethodOptions ro;  // the reference at its default samples
-    std::unique_ptr<Method> reference = make_method("reference", ro);
+    std::unique_ptr<Method> reference = make_method("reference", testing::with_tables(ro));
     const std::vector<Image> ref = render(m, *reference, 0, 2);
     MethodOptions none;
     none.staa.footprint = FootprintMode::none;
@@ -173,8 +174,10 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineUnderAMovingCamera) {
        std::vector<std::pair<std::string, MethodOptions>>{{"point", {}}, {"supersample", ss}}) {
     MethodOptions of = o;
     of.precision = Precision::float32;
-    const std::vector<Image> cpu = render(m, *make_method_on(Engine::cpu, name, of), 1, 2);
-    const std::vector<Image> gl = render(m, *make_method_on(Engine::gl, name, o), 1, 2);
+    const std::vector<Image> cpu =
+        render(m, *make_method_on(Engine::cpu, name, testing::with_tables(of)), 1, 2);
+    const std::vector<Image> gl =
+        render(m, *make_method_on(Engine::gl, name, testing::with_tables(o)), 1, 2);
     long differ = 0, total = 0;
     for (size_t k = 0; k < cpu.size(); ++k) {
       for (size_t p = 0; p < cpu[k].data.size(); ++p)
@@ -188,11 +191,12 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineUnderAMovingCamera) {
   b.seed = 7;
   RenderSettings rs_b;
   rs_b.seed = 7;
-  std::unique_ptr<Method> cpu_a = make_method("reference", a), cpu_b = make_method("reference", b);
-  std::unique_ptr<Method> gl = make_method_on(Engine::gl, "reference", a);
+  std::unique_ptr<Method> cpu_a = make_method("reference", testing::with_tables(a)),
+                          cpu_b = make_method("reference", testing::with_tables(b));
+  std::unique_ptr<Method> gl = make_method_on(Engine::gl, "reference", testing::with_tables(a));
   MethodOptions af = a;
   af.precision = Precision::float32;
-  std::unique_ptr<Method> cpu_f = make_method("reference", af);
+  std::unique_ptr<Method> cpu_f = make_method("reference", testing::with_tables(af));
   std::vector<Image> ia, ib, ig, iff;
   for (int f = 1; f <= 2; ++f) {
     iff.push_back(render_frame(m, *cpu_f, f, {}));
@@ -215,14 +219,17 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineUnderAMovingCamera) {
            {"staa", {}}, {"staa", two}, {"staa-temporal", {}}}) {
     MethodOptions of = o;
     of.precision = Precision::float32;
-    const std::vector<Image> cpu = render(m, *make_method_on(Engine::cpu, name, of), 1, 2);
-    const std::vector<Image> gl = render(m, *make_method_on(Engine::gl, name, o), 1, 2);
+    const std::vector<Image> cpu =
+        render(m, *make_method_on(Engine::cpu, name, testing::with_tables(of)), 1, 2);
+    const std::vector<Image> gl =
+        render(m, *make_method_on(Engine::gl, name, testing::with_tables(o)), 1, 2);
     std::vector<Image> held;
     for (int f = 1; f <= 2; ++f) {
       Scene h = s;
       const CameraPoseAt pose = camera_pose(s.camera, frame_time(s, f).end);
       h.camera = CameraDesc{pose.position, pose.look_at, s.camera.up, s.camera.vfov_deg, {}};
-      held.push_back(render_frame(SceneModel(h), *make_method_on(Engine::cpu, name, of), f, {}));
+      held.push_back(render_frame(
+          SceneModel(h), *make_method_on(Engine::cpu, name, testing::with_tables(of)), f, {}));
     }
     const double gl_cpu = compare_sequences(gl, cpu).rmse,
                  cpu_ref = compare_sequences(cpu, ia).rmse,
@@ -276,16 +283,19 @@ TEST_F(GlEngineTest, CascadeFieldsMatchTheCpuEngine) {
       of.samples_given = true;
       MethodOptions waves = of;
       waves.cascade_fields = false;
-      const std::vector<Image> cpu = render(m, *make_method_on(Engine::cpu, name, of), 0, 1);
+      const std::vector<Image> cpu =
+          render(m, *make_method_on(Engine::cpu, name, testing::with_tables(of)), 0, 1);
       MethodOptions og;
       og.samples = of.samples;
       og.samples_given = true;
-      const std::vector<Image> gl = render(m, *make_method_on(Engine::gl, name, og), 0, 1);
+      const std::vector<Image> gl =
+          render(m, *make_method_on(Engine::gl, name, testing::with_tables(og)), 0, 1);
       const double gl_cpu = compare_sequences(gl, cpu).rmse;
       // The yardstick: what the fields change against the sines on flat water (the
       // displaced sines' march over 939 waves would cost minutes here).
       if (geometry == Geometry::flat) {
-        const std::vector<Image> sines = render(m, *make_method_on(Engine::cpu, name, waves), 0, 1);
+        const std::vector<Image> sines =
+            render(m, *make_method_on(Engine::cpu, name, testing::with_tables(waves)), 0, 1);
         yardstick[name] = compare_sequences(cpu, sines).rmse;
       }
       // Displaced: a hundredth of the largest flat one (the fields' 8x grid leaves some
@@ -318,12 +328,15 @@ TEST_F(GlEngineTest, SmoothTermsAndTheHorizonMatchTheCpuEngine) {
   set_image_size(s, 160, 90);
   const SceneModel m(s);
   MethodOptions ro;
-  const std::vector<Image> ref = render(m, *make_method("reference", ro), 0, 1);
+  const std::vector<Image> ref =
+      render(m, *make_method("reference", testing::with_tables(ro)), 0, 1);
   for (const char* name : {"staa", "staa-temporal"}) {
     MethodOptions of;
     of.precision = Precision::float32;
-    const std::vector<Image> cpu = render(m, *make_method_on(Engine::cpu, name, of), 0, 1);
-    const std::vector<Image> gl = render(m, *make_method_on(Engine::gl, name, {}), 0, 1);
+    const std::vector<Image> cpu =
+        render(m, *make_method_on(Engine::cpu, name, testing::with_tables(of)), 0, 1);
+    const std::vector<Image> gl =
+        render(m, *make_method_on(Engine::gl, name, testing::with_tables({})), 0, 1);
     const double gl_cpu = compare_sequences(gl, cpu).rmse;
     const double cpu_ref = compare_sequences(cpu, ref).rmse;
     std::printf("fresnel-sky %-14s RMSE(GL - CPU float) %.3g, CPU - ref %.3g\n", name, gl_cpu,
@@ -341,8 +354,9 @@ TEST_F(GlEngineTest, GlReferenceIsWithinTheNoiseOfTwoCpuSeeds) {
   const SceneModel m(s);
   MethodOptions a, b;
   b.seed = 7;
-  std::unique_ptr<Method> cpu_a = make_method("reference", a), cpu_b = make_method("reference", b);
-  std::unique_ptr<Method> gl = make_method_on(Engine::gl, "reference", a);
+  std::unique_ptr<Method> cpu_a = make_method("reference", testing::with_tables(a)),
+                          cpu_b = make_method("reference", testing::with_tables(b));
+  std::unique_ptr<Method> gl = make_method_on(Engine::gl, "reference", testing::with_tables(a));
   RenderSettings rs_b;
   rs_b.seed = 7;
   std::vector<Image> ia, ib, ig;
@@ -385,7 +399,7 @@ TEST_F(GlEngineTest, GlReferenceMeanMatchesTheCpuOffTheSharedScenes) {
     const int strata = std::string(name) == "long-shutter" ? 4 : 12;
     o.samples = {strata, strata, 1};
     o.samples_given = true;
-    std::unique_ptr<Method> cpu = make_method("reference", o);
+    std::unique_ptr<Method> cpu = make_method("reference", testing::with_tables(o));
     const Image a = render_frame(m, *cpu, 0, {});
     const Image* variance = cpu->pixel_variance();
     ASSERT_TRUE(variance);
@@ -398,7 +412,7 @@ TEST_F(GlEngineTest, GlReferenceMeanMatchesTheCpuOffTheSharedScenes) {
     og.seed = 7;
     RenderSettings rs;
     rs.seed = 7;
-    std::unique_ptr<Method> gl = make_method_on(Engine::gl, "reference", og);
+    std::unique_ptr<Method> gl = make_method_on(Engine::gl, "reference", testing::with_tables(og));
     const Image b = render_frame(m, *gl, 0, rs);
     const double ca = image_mean(a), gb = image_mean(b);
     std::printf(
@@ -422,9 +436,10 @@ TEST_F(GlEngineTest, DisplacedMarchAdvancesFarFromTheCameraInFloat) {
   const SceneModel m(s);
   MethodOptions of;
   of.precision = Precision::float32;
-  const Image d = render_frame(m, *make_method("point", {}), 4, {});
-  const Image f = render_frame(m, *make_method("point", of), 4, {});
-  const Image g = render_frame(m, *make_method_on(Engine::gl, "point", {}), 4, {});
+  const Image d = render_frame(m, *make_method("point", testing::with_tables({})), 4, {});
+  const Image f = render_frame(m, *make_method("point", testing::with_tables(of)), 4, {});
+  const Image g =
+      render_frame(m, *make_method_on(Engine::gl, "point", testing::with_tables({})), 4, {});
   double peak = 0;
   long off_f = 0, off_g = 0;
   for (size_t p = 0; p < d.data.size(); ++p)

@@ -19,6 +19,7 @@
 #include "engine/render.h"
 #include "methods/method.h"
 #include "metrics/metrics.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -71,13 +72,14 @@ TEST(KernelPrecision, FloatAgreesWithDoubleWithinTheMethodsOwnError) {
     const SceneModel m(s);
     MethodOptions ro;
     ro.samples = {12, 12, 8};
-    const std::vector<Image> ref = render(m, *make_method("reference", ro), frames);
+    const std::vector<Image> ref =
+        render(m, *make_method("reference", testing::with_tables(ro)), frames);
     for (const Variant& v : variants) {
       MethodOptions o;
       v.set(o);
-      const std::vector<Image> d = render(m, *make_method(v.name, o), frames);
+      const std::vector<Image> d = render(m, *make_method(v.name, testing::with_tables(o)), frames);
       o.precision = Precision::float32;
-      const std::vector<Image> f = render(m, *make_method(v.name, o), frames);
+      const std::vector<Image> f = render(m, *make_method(v.name, testing::with_tables(o)), frames);
       const double err_d = compare_sequences(d, ref).rmse, err_f = compare_sequences(f, ref).rmse;
       const double fd = compare_sequences(f, d).rmse;
       long differ = 0, total = 0;

@@ -18,6 +18,7 @@
 #include "shading/kernel_frame.h"
 #include "shading/kernel_table.h"
 #include "shading/path_table.h"
+#include "testing/path_tables.h"
 
 namespace sg {
 namespace {
@@ -63,7 +64,7 @@ TEST(KernelResolvedWaves, ShuffledWaveFileRendersTheSamePixels) {
   KernelInputsD a, b;
   build_kernel_inputs(ma, frame_time(s, 2), 1, 0, a);
   build_kernel_inputs(mb, frame_time(s, 2), 1, 0, b);
-  const PathTables& tables = PathTables::shared();
+  const PathTables& tables = testing::path_tables();
   const KernelFitTexture& fits = kernel_fit_texture();
   const kd::StaaParams p = staa_params(true, true);
   double worst = 0;

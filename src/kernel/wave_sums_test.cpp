@@ -12,6 +12,7 @@
 #include "shading/kernel_frame.h"
 #include "shading/kernel_table.h"
 #include "shading/path_table.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -235,7 +236,7 @@ TEST(KernelWaveSums, StaaPixelsWithAndWithoutVectorisedSumsAgree) {
   s.width = 96;
   s.height = 54;
   const SceneModel m(s);
-  const PathTables& tables = PathTables::shared();
+  const PathTables& tables = testing::path_tables();
   const KernelFitTexture& fits = kernel_fit_texture();
   for (int footprint : {0, 1}) {
     KernelInputsD in;

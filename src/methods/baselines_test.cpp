@@ -19,6 +19,7 @@
 #include "methods/method.h"
 #include "methods/stratified.h"
 #include "testing/calm_water.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -32,7 +33,7 @@ void calm_window_sums(const std::string& method, int half, double& sum, double& 
   SceneModel m(s);
   double cx, cy;
   ASSERT_TRUE(m.camera.project(vec3(m.light.L.x, -m.light.L.y, m.light.L.z), cx, cy));
-  auto meth = make_method(method, MethodOptions{});
+  auto meth = make_method(method, testing::with_tables(MethodOptions{}));
   FrameContext ctx{m, frame_time(s, 0), 0};
   meth->begin_frame(ctx);
   sum = exact = 0;
@@ -76,7 +77,7 @@ TEST(Baselines, BrunetonConservesTheMirroredDisksLightOnCalmWater) {
 // frame 4.
 double expect_finite(const Scene& s, const std::string& method, MethodOptions o = {}) {
   SceneModel m(s);
-  auto meth = make_method(method, o);
+  auto meth = make_method(method, testing::with_tables(o));
   double mean4 = 0;
   for (int f : {0, 4, 9}) {
     const Image img = render_frame(m, *meth, f, RenderSettings{});
@@ -109,7 +110,7 @@ TEST(Baselines, DisplacedSchlickSkyAndSeaVariant) {
   SceneModel m(s);
   MethodOptions ref_opt;
   ref_opt.samples = {3, 3, 2};
-  auto ref = make_method("reference", ref_opt);
+  auto ref = make_method("reference", testing::with_tables(ref_opt));
   const Image r = render_frame(m, *ref, 4, RenderSettings{});
   double ref_mean = 0;
   for (float v : r.data)
@@ -138,8 +139,8 @@ std::vector<Band> glitter_bands(Scene s, int spp_side) {
   SceneModel m(s);
   MethodOptions ref_opt;
   ref_opt.samples = {spp_side, spp_side, 1};  // the waves do not move (c = 0): space only
-  auto ref = make_method("reference", ref_opt);
-  auto bru = make_method("bruneton", MethodOptions{});
+  auto ref = make_method("reference", testing::with_tables(ref_opt));
+  auto bru = make_method("bruneton", testing::with_tables(MethodOptions{}));
   const Image r = render_frame(m, *ref, 0, RenderSettings{});
   const Image b = render_frame(m, *bru, 0, RenderSettings{});
   std::vector<Band> bands;
@@ -204,7 +205,7 @@ TEST(Baselines, BadOptionsNameTheirFlag) {
   EXPECT_THROW(
       {
         try {
-          make_method("specaa", o);
+          make_method("specaa", testing::with_tables(o));
         } catch (const Error& e) {
           EXPECT_STREQ(e.what(), "--specaa-sigma2: must be > 0");
           throw;
@@ -213,10 +214,10 @@ TEST(Baselines, BadOptionsNameTheirFlag) {
       Error);
   o = MethodOptions{};
   o.bruneton.n_max = 0.5;
-  EXPECT_THROW(make_method("bruneton", o), Error);
+  EXPECT_THROW(make_method("bruneton", testing::with_tables(o)), Error);
   o = MethodOptions{};
   o.bruneton.min_variance = 0;
-  EXPECT_THROW(make_method("bruneton", o), Error);
+  EXPECT_THROW(make_method("bruneton", testing::with_tables(o)), Error);
 }
 
 }  // namespace

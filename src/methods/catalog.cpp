@@ -11,6 +11,7 @@
 #include "methods/staa_temporal.h"
 #include "methods/supersample.h"
 #include "methods/taa.h"
+#include "shading/path_table_store.h"
 
 namespace sg {
 
@@ -51,6 +52,15 @@ const std::vector<MethodInfo>& method_catalog() {
 static_assert(MethodOptions{}.intersect_tolerance == kDefaultIntersectTolerance,
               "--intersect-tolerance's default is the kernel frame's");
 
+const PathTables& required_path_tables(const MethodOptions& o, const std::string& method) {
+  if (o.path_tables == nullptr) {
+    throw Error(method +
+                ": no path tables given (MethodOptions::path_tables: the caller creates them, "
+                "shading/path_table_store.h)");
+  }
+  return o.path_tables->tables();
+}
+
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
   validate(o);
   if (name == "reference") {
@@ -69,8 +79,8 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                                 o.cascade_fields);
   }
   if (name == "staa") {
-    return std::make_unique<StaaMethod>(o.staa, o.precision, o.intersect_tolerance,
-                                        o.cascade_fields);
+    return std::make_unique<StaaMethod>(o.staa, required_path_tables(o, name), o.precision,
+                                        o.intersect_tolerance, o.cascade_fields);
   }
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean, o.cascade_fields);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);

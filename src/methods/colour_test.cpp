@@ -11,6 +11,7 @@
 #include "engine/render.h"
 #include "methods/method.h"
 #include "metrics/metrics.h"
+#include "testing/path_tables.h"
 #include "testing/render_range.h"
 #include "testing/testing.h"
 
@@ -103,10 +104,14 @@ TEST(Colour, VisibleSunIsAntiAliasedOverThePixel) {
   RenderSettings rs;
   MethodOptions ro;
   ro.samples = {12, 12, 2};
-  const Image ref = render_frame(m, *make_method("reference", ro), 0, rs);
-  const double point = compare_images(render_frame(m, *make_method("point", {}), 0, rs), ref).rmse;
+  const Image ref = render_frame(m, *make_method("reference", testing::with_tables(ro)), 0, rs);
+  const double point =
+      compare_images(render_frame(m, *make_method("point", testing::with_tables({})), 0, rs), ref)
+          .rmse;
   for (const char* name : {"staa", "lean", "bruneton", "specaa"}) {
-    const double e = compare_images(render_frame(m, *make_method(name, {}), 0, rs), ref).rmse;
+    const double e =
+        compare_images(render_frame(m, *make_method(name, testing::with_tables({})), 0, rs), ref)
+            .rmse;
     EXPECT_LT(e, 0.15 * point) << name << " RMSE " << e << ", point " << point;
   }
 }
@@ -126,17 +131,22 @@ TEST(Colour, FresnelSkyAndSeaOverTheNormalsBeatSupersampling) {
   ro.samples = {12, 12, 1};
   ro.samples_given = true;
   ro.batches = 4;
-  const Image ref = render_frame(m, *make_method("reference", ro), 0, rs);
+  const Image ref = render_frame(m, *make_method("reference", testing::with_tables(ro)), 0, rs);
   MethodOptions ss;
   ss.samples = {6, 6, 1};
   ss.samples_given = true;
   const double super =
-      compare_images(render_frame(m, *make_method("supersample", ss), 0, rs), ref).rmse;
-  const double staa = compare_images(render_frame(m, *make_method("staa", {}), 0, rs), ref).rmse;
+      compare_images(render_frame(m, *make_method("supersample", testing::with_tables(ss)), 0, rs),
+                     ref)
+          .rmse;
+  const double staa =
+      compare_images(render_frame(m, *make_method("staa", testing::with_tables({})), 0, rs), ref)
+          .rmse;
   MethodOptions mean;
   mean.staa.smooth_over_normals = false;
   const double at_mean =
-      compare_images(render_frame(m, *make_method("staa", mean), 0, rs), ref).rmse;
+      compare_images(render_frame(m, *make_method("staa", testing::with_tables(mean)), 0, rs), ref)
+          .rmse;
   std::printf("fresnel-sky 160x90: staa %.3g, --smooth-terms mean %.3g, supersample 6x6x1 %.3g\n",
               staa, at_mean, super);
   EXPECT_LT(staa, super);

@@ -31,6 +31,7 @@
 #include "methods/method.h"
 #include "methods/reference.h"
 #include "metrics/metrics.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -41,7 +42,7 @@ constexpr int kFrames = 10;
 std::vector<Image> render_sequence(const SceneModel& m, const std::string& method,
                                    const MethodOptions& o) {
   std::vector<Image> out;
-  std::unique_ptr<Method> p = make_method(method, o);
+  std::unique_ptr<Method> p = make_method(method, testing::with_tables(o));
   for (int f = 0; f < kFrames; ++f)
     out.push_back(render_frame(m, *p, f, {}));
   return out;

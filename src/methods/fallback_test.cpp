@@ -11,6 +11,7 @@
 #include "image/image_io.h"
 #include "methods/fallback.h"
 #include "methods/method.h"
+#include "testing/path_tables.h"
 #include "testing/paths.h"
 
 namespace sg {
@@ -30,18 +31,18 @@ TEST(Fallback, UnderTheSurfaceEveryPixelIsTheCentreRay) {
   const vec3 c = m.camera.position();
   ASSERT_GT(m.waves.height(c.x, c.z, s.frame_time(0)), c.y);  // under the surface
   RenderSettings rs;
-  auto point = make_method("point", MethodOptions{});
+  auto point = make_method("point", testing::with_tables(MethodOptions{}));
   const Image ref = render_frame(m, *point, 0, rs);
   ASSERT_EQ(count_nonfinite(ref), 0u);
   for (const char* name : {"lean", "specaa", "microspec"}) {
-    auto meth = make_method(name, MethodOptions{});
+    auto meth = make_method(name, testing::with_tables(MethodOptions{}));
     const Image img = render_frame(m, *meth, 0, rs);
     EXPECT_EQ(count_nonfinite(img), 0u) << name;
     EXPECT_EQ(fallback_pixels(*meth), static_cast<long>(img.size())) << name;
     for (size_t k = 0; k < img.size(); ++k)
       ASSERT_EQ(img.data[k], ref.data[k]) << name << " pixel " << k;
   }
-  auto bruneton = make_method("bruneton", MethodOptions{});
+  auto bruneton = make_method("bruneton", testing::with_tables(MethodOptions{}));
   const Image b = render_frame(m, *bruneton, 0, rs);
   EXPECT_EQ(count_nonfinite(b), 0u);
   EXPECT_GE(fallback_pixels(*bruneton), 0);
@@ -54,7 +55,7 @@ TEST(Fallback, AboveTheWaterNothingFallsBack) {
   const SceneModel m(s);
   RenderSettings rs;
   for (const char* name : {"lean", "specaa", "microspec", "bruneton", "taa"}) {
-    auto meth = make_method(name, MethodOptions{});
+    auto meth = make_method(name, testing::with_tables(MethodOptions{}));
     const Image img = render_frame(m, *meth, 3, rs);
     EXPECT_EQ(count_nonfinite(img), 0u) << name;
     EXPECT_EQ(fallback_pixels(*meth), 0) << name;

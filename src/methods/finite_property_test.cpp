@@ -29,6 +29,7 @@
 #include "image/image_io.h"
 #include "methods/method.h"
 #include "testing/gl_context.h"
+#include "testing/path_tables.h"
 #include "testing/paths.h"
 #include "testing/random_scene.h"
 
@@ -71,7 +72,7 @@ TEST(FiniteProperty, EveryMethodIsFiniteOnRandomValidScenes) {
     const Scene s = gen.next(24, 16, frame);
     const SceneModel model(s);
     for (const MethodInfo& info : method_catalog()) {
-      auto m = make_method(info.name, opt);
+      auto m = make_method(info.name, testing::with_tables(opt));
       const auto t0 = std::chrono::steady_clock::now();
       Image img;
       std::string error;
@@ -124,7 +125,7 @@ TEST_F(FinitePropertyGl, GlEngineIsFiniteOnRandomValidScenes) {
   const MethodOptions opt = cheap_options();
   std::vector<std::pair<std::string, std::unique_ptr<Method>>> methods;
   for (const char* n : {"point", "supersample", "reference", "staa-temporal", "staa"})
-    methods.emplace_back(n, make_method_on(Engine::gl, n, opt));
+    methods.emplace_back(n, make_method_on(Engine::gl, n, testing::with_tables(opt)));
   RenderSettings rs;
   rs.threads = 1;
   std::map<std::string, int> failures;
@@ -170,7 +171,7 @@ std::vector<std::string> non_finite_renders(const std::string& dir) {
     s.height = 16;
     const SceneModel model(s);
     for (const MethodInfo& info : method_catalog()) {
-      auto m = make_method(info.name, cheap_options());
+      auto m = make_method(info.name, testing::with_tables(cheap_options()));
       const std::string what = f.filename().string() + " " + info.name + ": ";
       try {
         Image img;

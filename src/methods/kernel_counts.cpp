@@ -88,11 +88,13 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
     counts = same_struct<kc::SampleCounts>(
         kernel_sample_counts(StratifiedSettings{o.samples, o.samples.st == 1}));
   }
-  const PathTables& tables = PathTables::shared();
+  // The path tables: staa's alone (the caller's, MethodOptions::path_tables).
+  const PathTables* tables = method == "staa" ? &required_path_tables(o, method) : nullptr;
   const KernelFitTexture& fits = kernel_fit_texture();
   const kc::StaaParams params =
       same_struct<kc::StaaParams>(staa_kernel_params<kd::StaaParams>(o.staa));
-  const kc::PathTableInfo tinfo = same_struct<kc::PathTableInfo>(tables.kernel_info());
+  const kc::PathTableInfo tinfo =
+      tables ? same_struct<kc::PathTableInfo>(tables->kernel_info()) : kc::PathTableInfo{};
   const kc::KernelFitInfo finfo = same_struct<kc::KernelFitInfo>(fits.info);
 
   const int w = m.scene.width, h = m.scene.height;
@@ -110,7 +112,7 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
         kc::staa_temporal_pixel(waves, f, i, j);
       } else {
         kc::StaaPath path;
-        const kc::StaaResult r = kc::staa_pixel(waves, tables.f_texture(), tables.s_texture(),
+        const kc::StaaResult r = kc::staa_pixel(waves, tables->f_texture(), tables->s_texture(),
                                                 tinfo, fits.view(), finfo, f, params, i, j, path);
         if (r.exact_pending) ++s.host_finished;
       }

@@ -14,6 +14,7 @@
 #include "kernel/kernel_counting.h"
 #include "kernel/kernel_double.h"
 #include "methods/kernel_inputs.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -41,7 +42,7 @@ Scene water_only(int n) {
 TEST(KernelCounts, PointVisitsEachWaveOncePerWaterPixel) {
   for (int n : {1, 7, 33}) {
     const SceneModel m(water_only(n));
-    const KernelWork k = count_kernel_work(m, "point", {}, 3);
+    const KernelWork k = count_kernel_work(m, "point", testing::with_tables({}), 3);
     EXPECT_EQ(k.pixels, 24 * 16);
     EXPECT_DOUBLE_EQ(k.waves.mean, n) << n;
     EXPECT_EQ(k.waves.max, uint64_t(n)) << n;
@@ -58,7 +59,7 @@ TEST(KernelCounts, SkyPixelsVisitNoWave) {
   // The shared camera of small_scene sees the horizon: the pixels above it visit no wave.
   const int n = 5;
   const SceneModel m(testing::small_scene(some_waves(n), 24, 16));
-  const KernelWork k = count_kernel_work(m, "point", {}, 0);
+  const KernelWork k = count_kernel_work(m, "point", testing::with_tables({}), 0);
   EXPECT_EQ(k.waves.max, uint64_t(n));
   EXPECT_GT(k.waves.mean, 0.0);
   EXPECT_LT(k.waves.mean, double(n)) << "some pixels see the sky";
@@ -70,7 +71,7 @@ TEST(KernelCounts, SupersampleVisitsEachWavePerSample) {
   MethodOptions o;
   o.samples = SampleCounts{3, 2, 1};
   o.samples_given = true;
-  const KernelWork k = count_kernel_work(m, "supersample", o, 1);
+  const KernelWork k = count_kernel_work(m, "supersample", testing::with_tables(o), 1);
   EXPECT_DOUBLE_EQ(k.waves.mean, 6.0 * n);
   EXPECT_EQ(k.waves.max, uint64_t(6 * n));
 }
@@ -79,7 +80,7 @@ TEST(KernelCounts, StaaCountsItsQuadratureAndTables) {
   Scene s = testing::project_scene("medium");
   set_image_size(s, 32, 18);
   const SceneModel small(s);
-  const KernelWork k = count_kernel_work(small, "staa", {}, 2);
+  const KernelWork k = count_kernel_work(small, "staa", testing::with_tables({}), 2);
   EXPECT_GE(k.waves.max, small.waves.size()) << "a pixel of water visits every wave";
   EXPECT_GT(k.table_fetches.mean, 0.0) << "the path tables are read";
   EXPECT_GT(k.transcendentals.mean, k.waves.mean);
@@ -99,7 +100,7 @@ TEST(KernelCounts, StaaFallbackCostDoesNotGrowWithThePath) {
     for (int segments : {1, 4}) {
       MethodOptions o;
       o.staa.segments = segments;
-      const KernelWork k = count_kernel_work(m, "staa", o, 2);
+      const KernelWork k = count_kernel_work(m, "staa", testing::with_tables(o), 2);
       EXPECT_GT(k.nodes.max, 0u) << name << ": some pixel takes the fallback";
       EXPECT_LE(k.nodes.max, uint64_t(150 * segments)) << name << " K " << segments;
     }
@@ -108,7 +109,7 @@ TEST(KernelCounts, StaaFallbackCostDoesNotGrowWithThePath) {
 
 TEST(KernelCounts, DisplacedWaterMarches) {
   const SceneModel m(testing::displaced_variant(water_only(4)));
-  const KernelWork k = count_kernel_work(m, "point", {}, 0);
+  const KernelWork k = count_kernel_work(m, "point", testing::with_tables({}), 0);
   EXPECT_GT(k.march_steps.mean, 1.0);
   EXPECT_GE(k.waves.mean, 4.0 * k.march_steps.mean) << "each step sums the waves' heights";
 }
@@ -137,8 +138,8 @@ TEST(KernelCounts, TheCountingKernelRendersWhatTheDoubleKernelRenders) {
 
 TEST(KernelCounts, MethodsWithoutACountingRenderAreRefused) {
   const SceneModel m(water_only(2));
-  EXPECT_THROW(count_kernel_work(m, "lean", {}, 0), Error);
-  EXPECT_THROW(count_kernel_work(m, "reference", {}, 0), Error);
+  EXPECT_THROW(count_kernel_work(m, "lean", testing::with_tables({}), 0), Error);
+  EXPECT_THROW(count_kernel_work(m, "reference", testing::with_tables({}), 0), Error);
 }
 
 }  // namespace

@@ -77,6 +77,11 @@ struct MethodInfo {
 // Every method `--method` accepts, in the order `--help` lists them.
 const std::vector<MethodInfo>& method_catalog();
 
+// The caller's path tables (options.path_tables) for `method`, loaded on the first request;
+// sg::Error naming `method` when none were given.
+class PathTables;
+const PathTables& required_path_tables(const MethodOptions& options, const std::string& method);
+
 // Builds a method by name; throws sg::Error ("--method: unknown method 'x' (choose ...)").
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& options);
 

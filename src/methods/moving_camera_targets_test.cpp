@@ -22,6 +22,7 @@
 #include "engine/render.h"
 #include "methods/method.h"
 #include "metrics/metrics.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -34,7 +35,7 @@ struct Sequence {
 
 Sequence render_sequence(const SceneModel& m, const std::string& method, const MethodOptions& o) {
   Sequence s;
-  std::unique_ptr<Method> p = make_method(method, o);
+  std::unique_ptr<Method> p = make_method(method, testing::with_tables(o));
   for (int f = 0; f < 10; ++f) {
     s.frames.push_back(render_frame(m, *p, f, {}));
     if (const Image* var = p->pixel_variance()) {

@@ -12,6 +12,7 @@
 
 #include "engine/render.h"
 #include "methods/method.h"
+#include "testing/path_tables.h"
 #include "testing/render_range.h"
 #include "testing/testing.h"
 
@@ -120,7 +121,7 @@ TEST(MovingCamera, ReferenceMatchesBruteForceTimeSampling) {
   o.samples = SampleCounts{4, 4, 8};
   o.samples_given = true;
   o.batches = 4;
-  auto ref = make_method("reference", o);
+  auto ref = make_method("reference", testing::with_tables(o));
   const Image img = render_frame(SceneModel(s), *ref, frame, {});
   const Image* var = ref->pixel_variance();
   ASSERT_NE(var, nullptr);
@@ -128,7 +129,7 @@ TEST(MovingCamera, ReferenceMatchesBruteForceTimeSampling) {
   // motion would converge to.
   Scene held = s;
   held.camera = CameraDesc{{0, 2.5, -5}, {0, 0, -60}, {0, 1, 0}, 40, {}};
-  auto ref_held = make_method("reference", o);
+  auto ref_held = make_method("reference", testing::with_tables(o));
   const Image still = render_frame(SceneModel(held), *ref_held, frame, {});
   std::mt19937_64 rng(12345);
   double se = 0, se_held = 0, noise = 0, lit = 0;

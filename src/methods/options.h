@@ -144,7 +144,13 @@ struct BrunetonOptions {
   BrunetonFresnel fresnel = BrunetonFresnel::fit;  // --bruneton-fresnel fit|integral
 };
 
+class PathTableStore;
+
 struct MethodOptions {
+  // The path tables that `staa` reads (shading/path_table_store.h): created by the caller
+  // (the CLI's run, a test, an embedding engine) and outliving the methods made with these
+  // options. No flag; `staa` refuses to be made without them.
+  const PathTableStore* path_tables = nullptr;
   SampleCounts samples{8, 8, 8};  // --samples, for reference and supersample
   bool samples_given = false;     // false: each method's default (reference: its own)
   int batches = 2;                // --batches, for reference

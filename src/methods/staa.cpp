@@ -95,11 +95,11 @@ void finish_exact(const kd::Frame& f, int K, const Result& r, const Path& path,
 
 }  // namespace
 
-StaaMethod::StaaMethod(const StaaOptions& o, Precision precision, double intersect_tolerance,
-                       bool cascade_fields)
+StaaMethod::StaaMethod(const StaaOptions& o, const PathTables& tables, Precision precision,
+                       double intersect_tolerance, bool cascade_fields)
     : o_(o),
       precision_(precision),
-      tables_(&PathTables::shared()),
+      tables_(&tables),
       inputs_(o.segments, precision, intersect_tolerance, 1, cascade_fields),
       params_(staa_kernel_params<kd::StaaParams>(o)),
       params_float_(staa_kernel_params<kf::StaaParams>(o)) {}

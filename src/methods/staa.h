@@ -57,9 +57,11 @@ extern template kf::StaaParams staa_kernel_params<kf::StaaParams>(const StaaOpti
 
 class StaaMethod final : public Method {
  public:
-  explicit StaaMethod(const StaaOptions& o, Precision precision = Precision::float64,
-                      double intersect_tolerance = kDefaultIntersectTolerance,
-                      bool cascade_fields = true);
+  // `tables`: the path tables (the caller's, MethodOptions::path_tables), which outlive the
+  // method.
+  StaaMethod(const StaaOptions& o, const PathTables& tables,
+             Precision precision = Precision::float64,
+             double intersect_tolerance = kDefaultIntersectTolerance, bool cascade_fields = true);
   std::string name() const override { return "staa"; }
   void begin_frame(const FrameContext& ctx) override;
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;

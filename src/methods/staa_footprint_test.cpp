@@ -17,6 +17,7 @@
 #include "methods/supersample.h"
 #include "metrics/metrics.h"
 #include "shading/kernel_frame.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -94,7 +95,7 @@ TEST(StaaFootprint, NoneIsThePaperMethodBitForBit) {
     b.kernels = 3;
     b.segments = 2;
     const std::string dir = sg::testing::source_dir() + "/tests/golden/";
-    StaaMethod ma(a), mb(b);
+    StaaMethod ma(a, testing::path_tables()), mb(b, testing::path_tables());
     Image ia = render_frame(m, ma, 4, {}), ib = render_frame(m, mb, 7, {});
     Image ga = read_image(dir + "staa_" + scene + "_96x54_f4.pfm");
     Image gb = read_image(dir + "staa_uniform_k3_s2_" + scene + "_96x54_f7.pfm");
@@ -123,7 +124,7 @@ TEST(StaaFootprint, EachModeBeatsTheCentreSampleOnOneWave) {
   for (int k = 0; k < 3; ++k) {
     StaaOptions o;
     o.footprint = modes[k];
-    StaaMethod staa(o);
+    StaaMethod staa(o, testing::path_tables());
     std::vector<Image> a;
     for (int f = 0; f < frames; ++f)
       a.push_back(render_frame(m, staa, f, {}));
@@ -203,7 +204,7 @@ TEST(StaaFootprint, FootprintAlongThePathOnANearGlint) {
       read_image(testing::source_dir() + "/tests/data/displaced-targets/swell_00.exr");
   const Image var =
       read_image(testing::source_dir() + "/tests/data/displaced-targets/swell_variance_00.exr");
-  StaaMethod staa(StaaOptions{});
+  StaaMethod staa(StaaOptions{}, testing::path_tables());
   const Image a = render_frame(m, staa, 0, {});
   const double r = ref.at(91, 83, 0), se = std::sqrt(var.at(91, 83, 0)), v = a.at(91, 83, 0);
   std::printf("near glint: staa %.4f, reference %.4f (standard error %.4f)\n", v, r, se);

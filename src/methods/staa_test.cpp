@@ -11,6 +11,7 @@
 #include <map>
 #include <string>
 
+#include "base/error.h"
 #include "engine/render.h"
 #include "methods/point.h"
 #include "methods/staa_temporal.h"
@@ -20,10 +21,26 @@
 #include "scene/footprint.h"
 #include "shading/aliasing.h"
 #include "testing/begun.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
 namespace {
+
+TEST(Staa, IsMadeWithTheCallersPathTablesOnly) {
+  // The tables are a resource the caller creates (shading/path_table_store.h): without
+  // them `staa` is refused, naming the field; the methods that read none need none.
+  try {
+    make_method("staa", MethodOptions{});
+    FAIL() << "staa made without path tables";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("MethodOptions::path_tables"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(make_method("point", MethodOptions{}));
+  EXPECT_NO_THROW(make_method("staa-temporal", MethodOptions{}));
+  EXPECT_NO_THROW(make_method("staa", testing::with_tables()));
+}
 
 TEST(Staa, EqualsTheTemporalMethodWhereNothingAliases) {
   // The paper's method (no footprint term): with no aliasing wave, Sec. 3.3 exactly.
@@ -35,7 +52,7 @@ TEST(Staa, EqualsTheTemporalMethodWhereNothingAliases) {
   StaaOptions o;
   o.segments = 4;
   o.footprint = FootprintMode::none;
-  StaaMethod staa(o);
+  StaaMethod staa(o, testing::path_tables());
   StaaTemporalMethod temporal(4);
   int lit = 0;
   FrameContext c{m, frame_time(s, 4), 0};
@@ -79,7 +96,8 @@ TEST(Staa, AliasRangeDefaultsFollowTheFootprintMode) {
     given.alias_end = alias_range(def).end;
     StaaOptions other = given;
     other.alias_start = 0.25;
-    StaaMethod a(def), b(given), c(other);
+    StaaMethod a(def, testing::path_tables()), b(given, testing::path_tables()),
+        c(other, testing::path_tables());
     const Image ia = render_frame(m, a, 3, {}), ib = render_frame(m, b, 3, {}),
                 ic = render_frame(m, c, 3, {});
     EXPECT_EQ(ia.data, ib.data);
@@ -112,7 +130,7 @@ TEST(Staa, ContinuousWhereAWaveStartsToAlias) {
         o.alias_start = start;
         o.alias_end = 1e3;  // a wide region: only the one wave's share is near 0
         o.segments = 2;
-        StaaMethod staa(o);
+        StaaMethod staa(o, testing::path_tables());
         FrameContext c{m, frame_time(s, 0), 0};
         return testing::begun(staa, c).shade(c, i, j);
       };
@@ -162,7 +180,7 @@ SeamStep seam_step(FootprintMode mode, double transition_width) {
     o.footprint = mode;
     o.alias_start = fmax;
     o.alias_end = fmax + transition_width;
-    StaaMethod staa(o);
+    StaaMethod staa(o, testing::path_tables());
     StratifiedMethod ref("reference", {{8, 8, 4}, false});
     for (int f = 0; f < 16; ++f) {
       FrameContext c{m, frame_time(s, f), 0};
@@ -229,7 +247,7 @@ TEST(Staa, KernelsConvergeToTheExactRdfMass) {
     for (int i = 50; i < 110; ++i) {
       StaaOptions exact_o;
       exact_o.elongation_threshold = 1e-9;  // always the quadrature fallback
-      StaaMethod exact(exact_o);
+      StaaMethod exact(exact_o, testing::path_tables());
       FrameContext c{m, frame_time(s, 1), 0};
       auto e = testing::begun(exact, c).shares(c, i, j);
       if (!e.aliasing || e.in_light < 1e-3) continue;
@@ -238,7 +256,9 @@ TEST(Staa, KernelsConvergeToTheExactRdfMass) {
         StaaOptions o;
         o.kernels = counts[q];
         o.elongation_threshold = 1e9;  // kernels at any elongation
-        err[q] += std::fabs(testing::begun(StaaMethod(o), c).shares(c, i, j).in_light - e.in_light);
+        err[q] += std::fabs(
+            testing::begun(StaaMethod(o, testing::path_tables()), c).shares(c, i, j).in_light -
+            e.in_light);
       }
     }
   }
@@ -261,8 +281,8 @@ TEST(Staa, FallbackAlongThePathEqualsTheCurrentTimeWithoutMotion) {
   b.fallback_along_path = false;
   for (int j = 50; j < 90; j += 5) {
     FrameContext c{m, frame_time(s, 2), 0};
-    EXPECT_NEAR(testing::begun(StaaMethod(a), c).shade(c, 80, j),
-                testing::begun(StaaMethod(b), c).shade(c, 80, j), 1e-12);
+    EXPECT_NEAR(testing::begun(StaaMethod(a, testing::path_tables()), c).shade(c, 80, j),
+                testing::begun(StaaMethod(b, testing::path_tables()), c).shade(c, 80, j), 1e-12);
   }
 }
 
@@ -279,7 +299,7 @@ TEST(Staa, BeatsPointSamplingOnTheSharedScenes) {
     s.width = 160;
     s.height = 90;
     SceneModel m(s);
-    StaaMethod staa(StaaOptions{});
+    StaaMethod staa(StaaOptions{}, testing::path_tables());
     PointMethod point;
     StratifiedMethod ref("reference", {{6, 6, 4}, false});
     std::vector<Image> a, b, r;

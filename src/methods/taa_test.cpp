@@ -27,6 +27,7 @@
 #include "scene/intersect.h"
 #include "shading/radiance.h"
 #include "testing/calm_water.h"
+#include "testing/path_tables.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -380,7 +381,7 @@ TEST(Taa, AMovingCameraReprojectedBeatsTheHistoryOfAStillCamera) {
     MethodOptions o;
     o.samples = SampleCounts{4, 4, 1};
     auto run = [&](const std::string& name, const MethodOptions& opts) {
-      auto m = make_method(name, opts);
+      auto m = make_method(name, testing::with_tables(opts));
       std::vector<Image> frames;
       render_frames(model, *m, 10, 13, RenderSettings{},
                     [&](int, const Image& img) { frames.push_back(img); });

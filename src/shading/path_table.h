@@ -1,5 +1,5 @@
 // The path-integral tables of Podee et al. 2021, Sec. 3.5 (Eqs. 17-19) and Sec. 4, for the
-// unit disk, with their lookups, their on-disk cache and a process-wide shared instance.
+// unit disk, with their lookups and their on-disk cache.
 //
 // Tables (float, as a GPU would hold them; float rounding, 6e-8 relative, is far below the
 // interpolation error), 8 MiB in all (a game engine's budget for two textures):
@@ -48,10 +48,9 @@
 // The slices are independent and are computed in parallel, so the bytes do not depend on
 // the number of threads.
 //
-// Cache: one file, path_tables.bin (8 MiB), in the folder set by set_cache_dir (the CLI's
-// --cache-dir), else $SUNGLINT_CACHE_DIR, else $XDG_CACHE_HOME/sunglint, else
-// $HOME/.cache/sunglint, else <temp>/sunglint. When the shared tables are generated, the
-// notice set by set_cache_notice is called once (the CLI announces the file on stderr).
+// Cache: one file, path_tables.bin (8 MiB), in a folder the caller names
+// (shading/path_table_store.h: the CLI's --cache-dir, else $SUNGLINT_CACHE_DIR, else
+// $XDG_CACHE_HOME/sunglint, else $HOME/.cache/sunglint, else <temp>/sunglint).
 // Little-endian: the magic "SGPATHTB", the format version, the dimensions, the fingerprint of
 // the grid and generation sources (source_fingerprint), the parameters, the payload size, the F
 // and S floats, and a zlib crc32 of everything before it. A missing, truncated, corrupt or stale
@@ -106,19 +105,8 @@ class PathTables {
   // Reads `path` if it holds these tables, else generates them and tries to write it.
   static PathTables load_or_generate(const std::string& path, const PathTableParams& params = {},
                                      PathTableCacheResult* result = nullptr);
-  // The cache directory (see above); "" when none can be named.
-  static std::string default_cache_dir();
-  // Overrides the cache directory of shared() ("" restores the default); call it before the
-  // first use of shared().
-  static void set_cache_dir(const std::string& dir);
-  // Called once, by the first use of shared(), when it generated the tables (and wrote them
-  // to the cache file, or could not: see the result's `written` and `note`).
-  static void set_cache_notice(std::function<void(const PathTableCacheResult&)> notice);
   static constexpr const char* kCacheFileName = "path_tables.bin";
-  // The process-wide tables with the default parameters, loaded or generated on first use
-  // (thread-safe), and how they were obtained.
-  static const PathTables& shared();
-  static const PathTableCacheResult& shared_cache_result();
+  // One program run's tables, loaded or generated on first use: shading/path_table_store.h.
 
   std::string serialize() const;
   // The tables in `bytes` when they are whole, intact and made with `expected` by this

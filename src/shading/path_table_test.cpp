@@ -25,6 +25,8 @@
 #include "scene/light.h"
 #include "shading/arc.h"
 #include "shading/disk_gaussian.h"
+#include "shading/path_table_store.h"
+#include "testing/path_tables.h"
 #include "testing/paths.h"
 #include "testing/quadrature.h"
 
@@ -54,7 +56,7 @@ const PathTables& table() {
                 double(PathTables::generate(p).bytes()) / 1048576.0);
     return new PathTables(PathTables::generate(p));
   }();
-  return shape ? *shape : PathTables::shared();
+  return shape ? *shape : testing::path_tables();
 }
 
 // Breakpoints of u -> F(sqrt(u^2 + v^2)) for narrow Gaussians: where the line crosses the
@@ -492,7 +494,7 @@ TEST(PathTableCache, GenerationIsDeterministicAcrossThreadCounts) {
   EXPECT_EQ(one, PathTables::generate(small_params(), 8).serialize());
 }
 
-TEST(PathTableCache, SharedInstanceIsOneAndCached) {
+TEST(PathTableCache, AStoreLoadsOnceAcrossThreadsAndCaches) {
   std::vector<const PathTables*> seen(6, nullptr);
   std::vector<std::thread> pool;
   for (size_t i = 0; i < seen.size(); ++i)
@@ -501,7 +503,7 @@ TEST(PathTableCache, SharedInstanceIsOneAndCached) {
     th.join();
   for (const PathTables* s : seen)
     EXPECT_EQ(s, seen[0]);
-  const PathTableCacheResult& r = PathTables::shared_cache_result();
+  const PathTableCacheResult& r = testing::path_table_store().cache_result();
   EXPECT_EQ(r.path, sg::testing::binary_dir() + "/test-cache/" + PathTables::kCacheFileName);
   EXPECT_TRUE(r.loaded || r.written) << r.note;
   EXPECT_TRUE(fs::exists(r.path));
@@ -514,14 +516,28 @@ TEST(PathTableCache, DefaultDirectoryFollowsTheEnvironment) {
   setenv("SUNGLINT_CACHE_DIR", "/x/sg", 1);
   setenv("XDG_CACHE_HOME", "/x/xdg", 1);
   setenv("HOME", "/x/home", 1);
-  EXPECT_EQ(PathTables::default_cache_dir(), "/x/sg");
+  EXPECT_EQ(path_table_cache_dir_from_environment(), "/x/sg");
   unsetenv("SUNGLINT_CACHE_DIR");
-  EXPECT_EQ(PathTables::default_cache_dir(), "/x/xdg/sunglint");
+  EXPECT_EQ(path_table_cache_dir_from_environment(), "/x/xdg/sunglint");
   unsetenv("XDG_CACHE_HOME");
-  EXPECT_EQ(PathTables::default_cache_dir(), "/x/home/.cache/sunglint");
+  EXPECT_EQ(path_table_cache_dir_from_environment(), "/x/home/.cache/sunglint");
   unsetenv("HOME");
-  EXPECT_EQ(PathTables::default_cache_dir(), (fs::temp_directory_path() / "sunglint").string());
+  EXPECT_EQ(path_table_cache_dir_from_environment(),
+            (fs::temp_directory_path() / "sunglint").string());
   if (keep_sg) setenv("SUNGLINT_CACHE_DIR", saved.c_str(), 1);
+}
+
+TEST(PathTableCache, AStoreTakesItsFileBeforeItsTablesOnly) {
+  const std::string dir = sg::testing::binary_dir() + "/test-cache";
+  PathTableStore store("");
+  store.set_cache_file(dir + "/" + PathTables::kCacheFileName);
+  EXPECT_EQ(&store.tables(), &store.tables());
+  EXPECT_TRUE(store.cache_result().loaded || store.cache_result().written)
+      << store.cache_result().note;
+  EXPECT_THROW(store.set_cache_file(""), Error);
+  int generated = 0;
+  PathTableStore memory("", [&](const PathTableCacheResult&) { ++generated; });
+  EXPECT_EQ(generated, 0) << "nothing is made before the first request";
 }
 
 TEST(PathTableCache, BadInputNamesTheCulprit) {

@@ -8,6 +8,7 @@
 
 #include "engine/render.h"
 #include "methods/method.h"
+#include "testing/path_tables.h"
 
 namespace sg::testing {
 
@@ -16,7 +17,7 @@ inline std::vector<Image> render_range(const Scene& s, const std::string& method
   MethodOptions o;
   o.samples = SampleCounts{2, 2, 2};
   const SceneModel model(s);
-  auto m = make_method(method, o);
+  auto m = make_method(method, testing::with_tables(o));
   std::vector<Image> frames;
   render_frames(model, *m, first, last, RenderSettings{},
                 [&](int, const Image& img) { frames.push_back(img); });

@@ -152,8 +152,7 @@ json methods_json(const kf::PathTableInfo& tinfo, const kf::KernelFitInfo& finfo
 }
 
 // F, the fine grids of F per slice (PathTables::fine_grid) and the kernel fits.
-json tables_json() {
-  const PathTables& t = PathTables::shared();
+json tables_json(const PathTables& t) {
   const PathTableParams& p = t.params();
   const kernel_tables::R32Texture2D f = t.f_texture();
   std::vector<float> fine;
@@ -225,7 +224,7 @@ std::vector<std::string> web_method_ids() {
   return ids;
 }
 
-WebPage write_web_page(const WebPageOptions& o) {
+WebPage write_web_page(const WebPageOptions& o, const PathTables& tables) {
   if (o.scenes.empty()) throw Error("give at least one scene file");
   // The scenes, checked by the loader, kept as their files' text for the page's own checks.
   WebPage page;
@@ -260,14 +259,13 @@ WebPage write_web_page(const WebPageOptions& o) {
   }
   prepare_output_folder(o.out_dir, "--out");
 
-  const PathTables& tables = PathTables::shared();
   json data = {
       {"kernel", gl_engine::kernel_fingerprint()},
       {"scenes", scenes},
       {"methods", methods_json(tables.kernel_info_float(), kernel_fit_texture().info_float)},
       {"default_method", "staa"},
       {"default_split", "point"},
-      {"tables", tables_json()},
+      {"tables", tables_json(tables)},
       {"display", display_json()}};
 
   // The GLSL the page compiles, by the names host.js includes them by.

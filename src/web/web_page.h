@@ -19,6 +19,10 @@
 #include <string>
 #include <vector>
 
+namespace sg {
+class PathTables;
+}
+
 namespace sg::web {
 
 // A scene of the page: its file and the image size the page renders it at (0: the file's;
@@ -49,8 +53,9 @@ struct WebPage {
 std::vector<std::string> web_method_ids();
 
 // Checks the scenes (the loader's errors, naming the file) and the sizes, then writes the
-// page. Throws sg::Error naming the culprit; writes nothing when a scene is bad.
-WebPage write_web_page(const WebPageOptions& options);
+// page with `tables` (the caller's path tables, shading/path_table_store.h) in it. Throws
+// sg::Error naming the culprit; writes nothing when a scene is bad.
+WebPage write_web_page(const WebPageOptions& options, const PathTables& tables);
 
 // The page's size limit (docs/web.md): 2 MiB, path tables included.
 inline constexpr size_t kWebPageBudgetBytes = 2u << 20;
