@@ -6,10 +6,6 @@ namespace sg {
 
 namespace {
 
-std::string cache_file_in(const std::string& dir) {
-  return dir.empty() ? std::string() : dir + "/" + PathTables::kCacheFileName;
-}
-
 // The path-integral tables (used by `staa`) are generated once and cached in an 8 MiB file;
 // say so when that happens, and where.
 void announce_path_table_cache(const PathTableCacheResult& r) {
@@ -27,13 +23,13 @@ void announce_path_table_cache(const PathTableCacheResult& r) {
 }  // namespace
 
 PathTableStore& cli_path_tables() {
-  static PathTableStore store(cache_file_in(path_table_cache_dir_from_environment()),
+  static PathTableStore store(path_table_cache_file(path_table_cache_dir_from_environment()),
                               announce_path_table_cache);
   return store;
 }
 
 void set_cli_cache_dir(const std::string& dir) {
-  cli_path_tables().set_cache_file(cache_file_in(dir));
+  cli_path_tables().set_cache_file(path_table_cache_file(dir));
 }
 
 }  // namespace sg

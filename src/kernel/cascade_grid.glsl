@@ -84,10 +84,8 @@ SG_FN int cascade_data_end(IN(Frame) f, IN(Cascade) c) {
 
 SG_FN Cascade cascade_at(IN(WaveBuffer) waves, IN(Frame) f, int c) {
   int data = cascade_data_start(f);
-  for (int q = 0; q < c; ++q) {
-    int nq = int(wave_texel(waves, f.cascade_base + 2 * q).y + 0.5);
-    data += (f.segments + 1) * cascade_instant_texels(nq);
-  }
+  for (int q = 0; q < c; ++q)
+    data = cascade_data_end(f, cascade_header(waves, f, q, data));
   return cascade_header(waves, f, c, data);
 }
 

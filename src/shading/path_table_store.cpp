@@ -31,6 +31,10 @@ const PathTableCacheResult& PathTableStore::cache_result() const {
   return result_;
 }
 
+std::string path_table_cache_file(const std::string& dir) {
+  return dir.empty() ? std::string() : dir + "/" + PathTables::kCacheFileName;
+}
+
 std::string path_table_cache_dir_from_environment() {
   auto env = [](const char* name) {
     const char* v = std::getenv(name);

@@ -50,5 +50,7 @@ class PathTableStore {
 // $XDG_CACHE_HOME/sunglint, else $HOME/.cache/sunglint, else <temp>/sunglint; "" when none
 // can be named. The caller decides to read the environment (the CLI, the tests).
 std::string path_table_cache_dir_from_environment();
+// The cache file in folder `dir` (path_tables.bin), "" for no folder.
+std::string path_table_cache_file(const std::string& dir);
 
 }  // namespace sg

@@ -10,13 +10,8 @@
 
 namespace sg::testing {
 
-inline std::string path_table_cache_file() {
-  const std::string dir = path_table_cache_dir_from_environment();
-  return dir.empty() ? std::string() : dir + "/" + PathTables::kCacheFileName;
-}
-
 inline const PathTableStore& path_table_store() {
-  static const PathTableStore store(path_table_cache_file());
+  static const PathTableStore store(path_table_cache_file(path_table_cache_dir_from_environment()));
   return store;
 }
 
