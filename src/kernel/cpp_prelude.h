@@ -105,6 +105,7 @@ struct Arrays {
   const T* b = nullptr;
   const T* theta0 = nullptr;
   const T* c = nullptr;
+  const T* k = nullptr;
   const T* slope = nullptr;
   const T* rot_c = nullptr;
   const T* rot_s = nullptr;

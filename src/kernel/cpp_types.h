@@ -118,6 +118,15 @@ inline bool isinf(real x) {
 // GLSL's round-half-away? No: GLSL's round() may go either way at .5; the kernel uses
 // floor(x + 0.5) where it needs a rule.
 
+// The lane-generic subset's choice and branch test (kernel/wave_terms.glsl): on one real,
+// the ternary and the condition itself (kernel/cpu/lane_types.h: lane by lane).
+inline real select(bool c, real a, real b) {
+  return c ? a : b;
+}
+inline bool any_lane(bool c) {
+  return c;
+}
+
 // texelFetch of GLSL for R32F textures: the value in .x.
 inline vec4 texelFetch(const R32Texture2D& t, const ivec2& p, int) {
   SG_COUNT(table_fetches, 1);

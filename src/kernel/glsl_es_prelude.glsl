@@ -38,6 +38,14 @@ precision highp sampler2DArray;
 const real kRealEpsilon = 1.1920928955078125e-07;
 const real kRealMax = 3.4028234663852886e+38;
 const bool kDoublePrecision = false;
+// The lane-generic subset's choice and branch test (kernel/wave_terms.glsl): on one real,
+// the ternary and the condition itself.
+real select(bool c, real a, real b) {
+  return c ? a : b;
+}
+bool any_lane(bool c) {
+  return c;
+}
 
 // Texel i >= 0 of a buffer held in a 2D texture 1024 texels wide, row by row.
 vec4 sg_buffer_texel(sampler2D t, int i) {

@@ -23,3 +23,11 @@
 const real kRealEpsilon = 1.1920928955078125e-07;
 const real kRealMax = 3.4028234663852886e+38;
 const bool kDoublePrecision = false;
+// The lane-generic subset's choice and branch test (kernel/wave_terms.glsl): on one real,
+// the ternary and the condition itself.
+real select(bool c, real a, real b) {
+  return c ? a : b;
+}
+bool any_lane(bool c) {
+  return c;
+}

@@ -6,10 +6,12 @@
 // computes and where its formulas come from.
 // clang-format off
 #include "kernel/constants.glsl"
+#include "kernel/wave_terms.glsl"
 #include "kernel/special.glsl"
 #include "kernel/rng.glsl"
 #include "kernel/camera.glsl"
 #include "kernel/waves.glsl"
+#include "kernel/path_terms.glsl"
 #include "kernel/cascade_grid.glsl"
 #include "kernel/light.glsl"
 #include "kernel/radiance.glsl"
@@ -30,6 +32,7 @@
 #include "kernel/reflection_footprint.glsl"
 #include "kernel/smooth_terms.glsl"
 #include "kernel/cascade_fields.glsl"
+#include "kernel/staa_waves.glsl"
 #include "kernel/staa.glsl"
 #include "kernel/sampling.glsl"
 #include "kernel/reference_path.glsl"

@@ -19,6 +19,8 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,
                             const StaaParams& p, int i, int j, StaaPath& path);
+StaaResult float_staa_exact_result(const Frame& f, const StaaPath& path, const StaaResult& r,
+                                   real in_light);
 // For the tests: the replacements of functions GLSL lacks, and the sums over the waves
 // (vectorised when the buffer carries arrays, else the kernel's loops).
 real float_erfc(real x);

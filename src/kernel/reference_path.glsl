@@ -6,15 +6,9 @@
 // of one sub-interval between two instants, whose error the host bounds when it picks K
 // (methods/reference.h, reference_time_split).
 
-// The gradient and its time derivative at the path's instants t_0 .. t_K.
-struct PathDerivatives {
-  vec2 g[kMaxSegments + 1];
-  vec2 dg[kMaxSegments + 1];
-};
-
-// The definition (the CPU engine's vectorised equivalent under SG_CPU_WAVE_SUMS): with
-// theta_k = theta - c (end - t_k), g = sum A cos(theta_k) (a, b) and
-// dg/dt = -sum A c sin(theta_k) (a, b); the window ending dt (<= 0) after the display time.
+// The definition (the CPU engine runs the same terms in SIMD lanes under
+// SG_CPU_WAVE_SUMS): path_terms.glsl, path_derivatives_add, over every wave; the window
+// ending dt (<= 0) after the display time.
 SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point,
                                                 real dt) {
   PathDerivatives p;
@@ -22,19 +16,11 @@ SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) 
     p.g[k] = vec2(0.0);
     p.dg[k] = vec2(0.0);
   }
+  PathInstants inst = path_instants_fixed(f);
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
     real theta = wave_phase(w, point.x, point.z, dt);
-    real s = sin(theta);
-    real c = cos(theta);
-    vec2 k = vec2(w.a, w.b);
-    p.g[f.segments] += (w.A * c) * k;
-    p.dg[f.segments] -= (w.A * w.c * s) * k;
-    for (int q = 0; q < f.segments; ++q) {
-      vec2 cs = wave_instant_cos_sin(waves, f, i, q, s, c);
-      p.g[q] += (w.A * cs.x) * k;
-      p.dg[q] -= (w.A * w.c * cs.y) * k;
-    }
+    path_derivatives_add(p, inst, waves, i, w, sin(theta), cos(theta));
   }
   return p;
 }

@@ -22,29 +22,6 @@
 // of the view from p_k towards camera_at(t_k) (PathViews). A fixed camera keeps the one
 // point and view, and the phases by rotation as above, bit for bit.
 
-struct PathGradients {
-  vec2 g[kMaxSegments + 1];  // (dh/dx, dh/dz) of the resolved waves at t_0 .. t_K
-};
-
-// Zero gradients for the instants of K sub-arcs (the rest of the array is not read).
-SG_FN PathGradients path_gradients_zero(int K) {
-  PathGradients p;
-  for (int k = 0; k <= K; ++k)
-    p.g[k] = vec2(0.0);
-  return p;
-}
-
-// Wave i's term, of resolved amplitude A and phase theta (sine s, cosine c) at the display
-// time, in the gradients of every instant.
-SG_FN void path_gradients_add(INOUT(PathGradients) p, IN(WaveBuffer) waves, IN(Frame) f, int i,
-                              IN(Wave) w, real A, real s, real c) {
-  vec2 k = vec2(w.a, w.b);
-  p.g[f.segments] += (A * c) * k;
-  for (int q = 0; q < f.segments; ++q) {
-    p.g[q] += (A * wave_instant_cos_sin(waves, f, i, q, s, c).x) * k;
-  }
-}
-
 // The water points and views of the path's instants. moving false: the camera stands
 // still over the shutter, and every instant has the display time's point and view.
 struct PathViews {
@@ -94,26 +71,37 @@ SG_FN PathViews path_views(IN(Frame) f, IN(Footprint) fp, real px, real py) {
   return v;
 }
 
-// Wave i's term in the gradients of every instant under a moving camera: its phase at the
-// display time's point (cosine c) for instant K, and at p_k and t_k for the others.
-SG_FN void path_gradients_add_moving(INOUT(PathGradients) p, IN(Frame) f, IN(PathViews) v,
-                                     IN(Wave) w, real A, real c) {
-  vec2 k = vec2(w.a, w.b);
-  p.g[f.segments] += (A * c) * k;
-  for (int q = 0; q < f.segments; ++q) {
-    real theta = wave_phase(w, v.point[q].x, v.point[q].y, path_instant_dt(f, q));
-    p.g[q] += (A * cos(theta)) * k;
-  }
+// The instants as the sums over the waves take them (wave_terms.glsl): a fixed camera's.
+SG_FN PathInstants path_instants_fixed(IN(Frame) f) {
+  PathInstants inst;
+  inst.segments = f.segments;
+  inst.wave_stride = f.wave_stride;
+  inst.moving = false;
+  return inst;
 }
 
-// Every wave at full amplitude: the path of staa-temporal (the definition; the CPU engine's
-// vectorised equivalent under SG_CPU_WAVE_SUMS).
+// Under a moving camera (v.moving), each instant's water point and dt as well.
+SG_FN PathInstants path_instants(IN(Frame) f, IN(PathViews) v) {
+  PathInstants inst = path_instants_fixed(f);
+  inst.moving = v.moving;
+  if (v.moving) {
+    for (int k = 0; k <= f.segments; ++k) {
+      inst.points[k] = v.point[k];
+      inst.dts[k] = k < f.segments ? path_instant_dt(f, k) : 0.0;
+    }
+  }
+  return inst;
+}
+
+// Every wave at full amplitude: the path of staa-temporal (the definition; the CPU engine
+// runs the same terms, path_terms.glsl, in SIMD lanes under SG_CPU_WAVE_SUMS).
 SG_FN PathGradients wave_sum_path(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
   PathGradients p = path_gradients_zero(f.segments);
+  PathInstants inst = path_instants_fixed(f);
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
     real theta = wave_phase(w, point.x, point.z, 0.0);
-    path_gradients_add(p, waves, f, i, w, w.A, sin(theta), cos(theta));
+    path_gradients_add(p, inst, waves, i, w, w.A, sin(theta), cos(theta));
   }
   return p;
 }
@@ -126,14 +114,14 @@ SG_FN PathGradients path_gradients(IN(WaveBuffer) waves, IN(Frame) f, vec3 point
 }
 #endif
 
-// The same under a moving camera (the definition; the CPU engine's vectorised equivalent
-// under SG_CPU_WAVE_SUMS).
+// The same under a moving camera (the definition; in SIMD lanes on the CPU, as above).
 SG_FN PathGradients wave_sum_path_moving(IN(WaveBuffer) waves, IN(Frame) f, IN(PathViews) v) {
   PathGradients p = path_gradients_zero(f.segments);
+  PathInstants inst = path_instants(f, v);
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
     real theta = wave_phase(w, v.point[f.segments].x, v.point[f.segments].y, 0.0);
-    path_gradients_add_moving(p, f, v, w, w.A, cos(theta));
+    path_gradients_add_moving(p, inst, w, w.A, cos(theta));
   }
   return p;
 }

@@ -69,13 +69,6 @@ SG_FN real normal_interval(real lo, real hi, real s) {
   return normal_mass(lo / s, hi / s);
 }
 
-// sin(x) / x from x and its sine sin_x (which a caller may have from a reduced angle or
-// an angle addition), accurate near 0.
-SG_FN real sinc_from(real x, real sin_x) {
-  if (abs(x) < 1e-4) return 1.0 - x * x / 6.0;
-  return sin_x / x;
-}
-
 // sin(x) / x, accurate near 0.
 SG_FN real sinc(real x) {
   return sinc_from(x, sin(x));
@@ -102,15 +95,6 @@ SG_FN real exp_minus_one(real u) {
   p = 1.0 + u * (1.0 / 3.0) * p;
   p = 1.0 + u * 0.5 * p;
   return u * p;
-}
-
-// x reduced to [-pi, pi]: x - 2 pi k, k = round(x / 2 pi). GPUs' sin and cos lose
-// accuracy away from [-pi, pi]. 2 pi is split Cody-Waite style into 6.28125 (8 bits, so
-// that k 6.28125 is exact for |k| < 2^16 in float) and the rest, so the reduction adds
-// about |k| 2e-3 times the precision's rounding, well below what x itself carries.
-SG_FN real wrap_angle(real x) {
-  real k = floor(x * kInvTwoPi + 0.5);
-  return (x - k * 6.28125) - k * 0.0019353071795864769252867665590;
 }
 
 // The standard normal quantile Phi^-1(p), 0 < p < 1: P. J. Acklam's rational

@@ -40,37 +40,10 @@
 // swept_half_width). The pixel-footprint term stays the display time's: the motion is the
 // path's. A fixed camera takes none of these branches (bit for bit as before).
 
-// What the pass over the waves gathers for one pixel.
-struct StaaSums {
-  PathGradients path;  // the resolved waves' gradients at the instants
-  // The resolved waves' Hessian (xx, xz, zz) at the instants; under a moving camera the
-  // display time's at every instant.
-  vec3 hess[kMaxSegments + 1];
-  NdfMoments ndf;  // the aliasing waves' NDF
-  bool any_alias;  // some wave with A > 0 has alpha > 0
-  // The smooth terms (--smooth-cells n > 0): every wave's moments at its full amplitude
-  // (not split by Eq. 20) over n x n cells of the pixel (ndf.glsl, box_cells_add), and the
-  // remainder's covariance, which every cell shares.
-  BoxCells cells;
-  vec3 remainder;
-};
-
 // Reflections further than this from the light (r . L / |r| below it) are not projected
 // on the light plane: the gnomonic projection diverges at 90 degrees, and an RDF would
 // need a spread of more than tan(84 deg) ~ 10 plane units to reach the disk from there.
 const real kMinCosToLight = 0.1;
-
-SG_FN StaaSums staa_sums_zero(int K) {
-  StaaSums s;
-  s.path = path_gradients_zero(K);
-  for (int k = 0; k <= kMaxSegments; ++k)
-    s.hess[k] = vec3(0.0);
-  s.ndf = ndf_zero();
-  s.any_alias = false;
-  s.cells = box_cells_zero();
-  s.remainder = vec3(0.0);
-  return s;
-}
 
 // The fully aliasing remainder (Bruneton et al. 2010, Sec. 3.2: with the waves sorted by
 // wavelength, the variance of what a pixel does not resolve is a difference of sums).
@@ -143,23 +116,6 @@ SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
   return p.smooth_cells;
 }
 
-// Wave i's resolved share A (sine s and cosine c of its display-time phase) in the
-// gradients and Hessians of the path's instants (still camera): instant k's phase is
-// theta - c (end - t_k), its cosine and sine by angle subtraction (waves.glsl,
-// wave_instant_cos_sin); the gradient A cos k, the Hessian -A sin k k^T.
-SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f, int i, IN(Wave) w,
-                         real A, real s, real c) {
-  vec2 k = vec2(w.a, w.b);
-  vec3 kk = vec3(k.x * k.x, k.x * k.y, k.y * k.y);
-  sums.path.g[f.segments] += (A * c) * k;
-  sums.hess[f.segments] -= (A * s) * kk;
-  for (int q = 0; q < f.segments; ++q) {
-    vec2 cs = wave_instant_cos_sin(waves, f, i, q, s, c);
-    sums.path.g[q] += (A * cs.x) * k;
-    sums.hess[q] -= (A * cs.y) * kk;
-  }
-}
-
 // Under a moving camera the instants' Hessians are not summed: each is the display time's.
 SG_FN void staa_hessians_held(INOUT(StaaSums) sums, IN(Frame) f, bool moving) {
   if (!moving) return;
@@ -167,73 +123,59 @@ SG_FN void staa_hessians_held(INOUT(StaaSums) sums, IN(Frame) f, bool moving) {
     sums.hess[q] = sums.hess[f.segments];
 }
 
-// The one pass over the waves (step 2): the definition; the CPU engine's vectorised
-// equivalent under SG_CPU_WAVE_SUMS (kernel/cpu/wave_sums.h), tested equal to it.
-SG_FN StaaSums wave_sum_staa(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
-                             IN(PathViews) v) {
-  StaaSums sums = staa_sums_zero(f.segments);
-  bool moving = v.moving;
-  vec2 sweep = v.point[f.segments] - v.point[0];
-  mat2 J = footprint_xz_jacobian(fp);
-  real det = determinant(J);
-  mat2 Jinv = det != 0.0 ? inverse(J) : mat2(0.0);
-  bool curvature = p.footprint != 0 && p.curvature_limit > 0.0;
-  real limit = p.curvature_limit * f.light.radius;
-  int c = staa_remainder_start(waves, f, p, J);
-  int side = staa_smooth_side(f, p);
-  for (int i = 0; i < c; ++i) {
-    Wave w = wave_at(waves, f, i);
-    vec2 k = vec2(w.a, w.b);
-    real theta = wave_phase(w, fp.point.x, fp.point.z, 0.0);
-    real s = sin(theta);
-    real c = cos(theta);
-    real freq = moving ? swept_frequency(k, J, sweep, p.nyquist_max)
-                       : projected_frequency(k, J, p.nyquist_max);
-    real alpha = alias_fraction(freq, p.alias_start, p.alias_end);
-    real D = det != 0.0 ? footprint_half_width(k, Jinv) : 0.0;
-    if (curvature) {
-      // Where the linearisation breaks: a resolved wave of phase half-width D has a slope
-      // A |k| cos(theta) that departs from its tangent by up to A |k| D^2 / 2 across the
-      // pixel; the reflection moves twice as far. Past `curvature_limit` disk radii the
-      // wave goes to the aliasing set, ramping over a factor of two.
-      real dev = w.slope * D * D;
-      alpha = max(alpha, clamp(dev / limit - 1.0, 0.0, 1.0));
-    }
-    real resolved = (1.0 - alpha) * w.A;
-    if (moving) {
-      path_gradients_add_moving(sums.path, f, v, w, resolved, c);
-      sums.hess[f.segments] -= (resolved * s) * vec3(k.x * k.x, k.x * k.y, k.y * k.y);
-    } else {
-      staa_path_add(sums, waves, f, i, w, resolved, s, c);
-    }
-    real aliasing = alpha * w.A;
-    if (aliasing > 0.0) {
-      sums.any_alias = true;
-      if (p.per_pixel_ndf) {
-        real Dn = moving ? swept_half_width(D, k, sweep) : D;
-        ndf_add_per_pixel(sums.ndf, aliasing, k, c, Dn, sin(Dn), cos(Dn));
-      } else {
-        ndf_add_uniform(sums.ndf, aliasing, k);
-      }
-    }
-    if (side > 0) {
-      box_cells_add(sums.cells, side, w.A, k, s, c, 0.5 * vec2(dot(k, J[0]), dot(k, J[1])));
-    }
-  }
-  staa_add_remainder(sums, waves, f, c);
-  staa_hessians_held(sums, f, moving);
-  return sums;
+// The pass's pixel-wide inputs (staa_waves.glsl): the footprint's Jacobian and its
+// inverse, Eq. 20's band, the curvature limit, the smooth terms' cells, and under a moving
+// camera the instants' points and times and the motion.
+SG_FN StaaWavePixel staa_wave_pixel(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
+                                    IN(PathViews) v) {
+  StaaWavePixel px;
+  px.point = vec2(fp.point.x, fp.point.z);
+  px.J = footprint_xz_jacobian(fp);
+  real det = determinant(px.J);
+  px.invertible = det != 0.0;
+  px.Jinv = px.invertible ? inverse(px.J) : mat2(0.0);
+  px.max_norm = p.nyquist_max;
+  px.alias_start = p.alias_start;
+  px.alias_end = p.alias_end;
+  px.curvature = p.footprint != 0 && p.curvature_limit > 0.0;
+  px.limit = p.curvature_limit * f.light.radius;
+  px.per_pixel_ndf = p.per_pixel_ndf;
+  px.cells = staa_smooth_side(f, p);
+  px.inst = path_instants(f, v);
+  px.sweep = v.point[f.segments] - v.point[0];
+  return px;
+}
+
+// Waves 0 <= i < n, one by one (staa_waves.glsl): the definition; the CPU engine runs the
+// same text over the waves in SIMD lanes under SG_CPU_WAVE_SUMS (kernel/cpu/wave_sums.h).
+SG_FN void staa_waves_loop(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f,
+                           IN(StaaWavePixel) px, int n) {
+  for (int i = 0; i < n; ++i)
+    staa_wave_add(sums, px, waves, i, wave_at(waves, f, i));
 }
 
 #ifdef SG_CPU_WAVE_SUMS
-StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
-                        IN(PathViews) v);
+void staa_waves_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f, IN(StaaWavePixel) px,
+                    int n);
 #else
-SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
-                              IN(PathViews) v) {
-  return wave_sum_staa(waves, f, p, fp, v);
+SG_FN void staa_waves_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) f,
+                          IN(StaaWavePixel) px, int n) {
+  staa_waves_loop(sums, waves, f, px, n);
 }
 #endif
+
+// The one pass over the waves (step 2): the waves below the remainder one by one, then the
+// remainder's sums.
+SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
+                              IN(PathViews) v) {
+  StaaSums sums = staa_sums_zero(f.segments);
+  StaaWavePixel px = staa_wave_pixel(f, p, fp, v);
+  int c = staa_remainder_start(waves, f, p, px.J);
+  staa_waves_add(sums, waves, f, px, c);
+  staa_add_remainder(sums, waves, f, c);
+  staa_hessians_held(sums, f, v.moving);
+  return sums;
+}
 
 // The lattice cascades' share (cascade_fields.glsl), after the pass over the waves: their
 // filtered slopes and curvatures in the path's gradients and Hessians, their sub-footprint
@@ -686,7 +628,7 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     rdf.D = mat2(0.0);
     if (path.valid[K]) rdf = staa_rdf(f, p, fp, v, sums, ndf);
     if (rdf.exact) {
-      // The host finishes the pixel (methods/staa.cpp, finish_exact).
+      // The host integrates the light's share and ends with staa_exact_result.
       res.exact_pending = true;
       res.exact_D = rdf.D;
     } else {
@@ -700,6 +642,23 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
       res.weights = staa_weights(f, res);
     }
   }
+  return res;
+}
+
+// A `--footprint exact` pixel that staa_finish handed to the host (res.exact_pending): with
+// the light's share in_light of the swept parallelogram D (shading/swept_footprint.h, which
+// the host integrates), the share below the horizon over the parallelogram's moment-matched
+// Gaussian D D^T / 12 unless the smooth terms gave it, the cap, and the weights, as
+// staa_finish ends its other pixels.
+SG_FN StaaResult staa_exact_result(IN(Frame) f, IN(StaaPath) path, IN(StaaResult) r,
+                                   real in_light) {
+  StaaResult res = r;
+  if (!res.terms_valid) {
+    res.below = staa_below_share(f, path, res.exact_D * transpose(res.exact_D) / 12.0);
+  }
+  res.in_light = clamp(in_light, 0.0, 1.0 - res.below);
+  res.weights = staa_weights(f, res);
+  res.exact_pending = false;
   return res;
 }
 

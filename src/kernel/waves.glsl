@@ -21,16 +21,6 @@
 //                  slope and curvature bounds (its slab, and the bounds on the first and
 //                  second derivatives of its height along a ray, intersect.glsl).
 // The host sums in double; entry N is the empty suffix (zeros and the whole prefix).
-struct Wave {
-  real A;
-  real a;
-  real b;
-  real theta0;
-  real c;
-  real k;
-  real slope;
-};
-
 SG_FN Wave wave_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
   SG_COUNT(waves, 1);
   vec4 t0 = wave_texel(waves, i * f.wave_stride);
@@ -46,22 +36,19 @@ SG_FN Wave wave_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
   return w;
 }
 
-// (cos, sin) of c (end - t_k): the rotation from the display time back to instant k < K.
-SG_FN vec2 wave_rotation(IN(WaveBuffer) waves, IN(Frame) f, int i, int k) {
-  vec4 t = wave_texel(waves, i * f.wave_stride + 2 + k / 2);
+// (cos, sin) of c (end - t_k): the rotation from the display time back to instant k < K,
+// for waves `stride` texels apart (Frame.wave_stride).
+SG_FN vec2 wave_rotation_of(IN(WaveBuffer) waves, int stride, int i, int k) {
+  vec4 t = wave_texel(waves, i * stride + 2 + k / 2);
   return (k % 2) == 0 ? vec2(t.x, t.y) : vec2(t.z, t.w);
 }
-
-// (cos, sin) of wave i's phase at instant k < K, theta_k = theta - c (end - t_k), from the
-// sine s and cosine c of its display-time phase theta, by angle subtraction.
-SG_FN vec2 wave_instant_cos_sin(IN(WaveBuffer) waves, IN(Frame) f, int i, int k, real s, real c) {
-  vec2 rot = wave_rotation(waves, f, i, k);
-  return vec2(c * rot.x + s * rot.y, s * rot.x - c * rot.y);
+SG_FN vec2 wave_rotation(IN(WaveBuffer) waves, IN(Frame) f, int i, int k) {
+  return wave_rotation_of(waves, f.wave_stride, i, k);
 }
 
-// Wave i's phase at (x, z) and dt, reduced to [-pi, pi] for sin and cos.
-SG_FN real wave_phase(IN(Wave) w, real x, real z, real dt) {
-  return wrap_angle(w.a * x + w.b * z + w.theta0 + w.c * dt);
+// (cos, sin) of wave i's phase at instant k < K (wave_terms.glsl, rotated_cos_sin).
+SG_FN vec2 wave_instant_cos_sin(IN(WaveBuffer) waves, IN(Frame) f, int i, int k, real s, real c) {
+  return rotated_cos_sin(wave_rotation(waves, f, i, k), s, c);
 }
 
 // The sums of entry i (0 <= i <= N) of the table above.
@@ -104,13 +91,12 @@ SG_FN int first_wave_below(IN(WaveBuffer) waves, IN(Frame) f, real amplitude) {
   return lo;
 }
 
-// The sums over the waves at one point and time: the definitions. The CPU engine replaces
-// the two that every method calls by vectorised equivalents (SG_CPU_WAVE_SUMS below;
-// kernel/cpu/wave_sums.h), tested equal to these.
+// The sums over the waves at one point and time: the definitions, over wave_terms.glsl's
+// terms. The CPU engine runs the same terms in SIMD lanes (SG_CPU_WAVE_SUMS below;
+// kernel/cpu/lane_passes.inc), tested equal to these.
 // The height of wave i.
 SG_FN real wave_height_term(IN(WaveBuffer) waves, IN(Frame) f, int i, real x, real z, real dt) {
-  Wave w = wave_at(waves, f, i);
-  return w.A * sin(wave_phase(w, x, z, dt));
+  return wave_height_of(wave_at(waves, f, i), x, z, dt);
 }
 
 // The height of the first n waves (in |k| order), summed in that order, eight waves an
@@ -138,11 +124,7 @@ SG_FN vec2 wave_sum_height_slope(IN(WaveBuffer) waves, IN(Frame) f, int lo, int 
                                  real dt, real ux, real uz) {
   vec2 r = vec2(0.0);
   for (int j = 0; j < kMarchBlock; ++j) {
-    if (lo + j < hi) {
-      Wave w = wave_at(waves, f, lo + j);
-      real th = wave_phase(w, x, z, dt);
-      r += w.A * vec2(sin(th), cos(th) * (w.a * ux + w.b * uz));
-    }
+    if (lo + j < hi) r += wave_height_slope_of(wave_at(waves, f, lo + j), x, z, dt, ux, uz);
   }
   return r;
 }
@@ -154,11 +136,8 @@ SG_FN real wave_sum_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, re
 // (dh/dx, dh/dz)
 SG_FN vec2 wave_sum_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
   vec2 g = vec2(0.0);
-  for (int i = 0; i < f.wave_count; ++i) {
-    Wave w = wave_at(waves, f, i);
-    real k = w.A * cos(wave_phase(w, x, z, dt));
-    g += k * vec2(w.a, w.b);
-  }
+  for (int i = 0; i < f.wave_count; ++i)
+    g += wave_gradient_of(wave_at(waves, f, i), x, z, dt);
   return g;
 }
 

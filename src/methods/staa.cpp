@@ -53,44 +53,18 @@ StaaMethod::Shares to_shares(const Result& r) {
   return s;
 }
 
-// `--footprint exact` on a pixel without aliasing waves: the swept parallelogram
-// (shading/swept_footprint.h) for the light; the horizon's share and the smooth terms as
-// the Gaussian term has them (over the normals when the kernel took them, else the
-// moment-matched parallelogram on the light plane).
-template <class Result, class Path>
-void finish_exact(const kd::Frame& f, int K, const Result& r, const Path& path,
-                  StaaMethod::Shares& s) {
+// `--footprint exact` on a pixel without aliasing waves: the light's share of the swept
+// parallelogram (shading/swept_footprint.h), in double; the kernel ends the pixel
+// (staa.glsl, staa_exact_result).
+template <class Path>
+double exact_light_share(double tan_radius, int K, const mat2& D, const Path& path) {
   std::vector<vec2> centre(K + 1);
   std::vector<char> valid(K + 1);
   for (int k = 0; k <= K; ++k) {
     centre[k] = vec2(path.centre[k]);
     valid[k] = path.valid[k];
   }
-  const mat2 D(r.exact_D);
-  const double R = f.light.tan_radius;
-  s.in_light = swept_parallelogram_share(centre, valid, D, R);
-  if (r.terms_valid) {
-    kd::SmoothTerms smooth;
-    smooth.f_above = r.terms.f_above;
-    smooth.f_zenith = r.terms.f_zenith;
-    smooth.f_horizon = r.terms.f_horizon;
-    smooth.above = r.terms.above;
-    s.below = 1.0 - smooth.above;
-    s.in_light = std::clamp(s.in_light, 0.0, 1.0 - s.below);
-    s.weights = RadianceWeights(kd::smooth_weights(f, smooth, s.fresnel, s.in_light));
-    return;
-  }
-  const mat2 cov_fp = D * glm::transpose(D) / 12.0;
-  double below = 0;
-  int counted = 0;
-  for (int k = 0; k <= K; ++k) {
-    if (!valid[k]) continue;
-    below += kd::horizon_share(f.light, centre[k], cov_fp);
-    ++counted;
-  }
-  s.below = below / counted;
-  s.in_light = std::clamp(s.in_light, 0.0, 1.0 - s.below);
-  s.weights = RadianceWeights(kd::combine_weights(f, s.fresnel, s.in_light, s.below, s.sky_y));
+  return swept_parallelogram_share(centre, valid, D, tan_radius);
 }
 
 }  // namespace
@@ -117,17 +91,20 @@ StaaMethod::Shares StaaMethod::shares(const FrameContext& ctx, int i, int j) con
         kf::float_staa_pixel(wave_buffer(inputs_.f()), tables_->f_texture(), tables_->s_texture(),
                              tables_->kernel_info_float(), fits.view(), fits.info_float,
                              inputs_.f().frame, params_float_, i, j, path);
-    Shares s = to_shares(r);
-    if (r.exact_pending) finish_exact(widen(inputs_.f().frame), o_.segments, r, path, s);
-    return s;
+    if (!r.exact_pending) return to_shares(r);
+    const kf::Frame& f = inputs_.f().frame;
+    const double in_light =
+        exact_light_share(f.light.tan_radius, o_.segments, mat2(r.exact_D), path);
+    return to_shares(kf::float_staa_exact_result(f, path, r, kf::real(in_light)));
   }
   kd::StaaPath path;
   const kd::StaaResult r = kd::staa_pixel(wave_buffer(inputs_.d()), tables_->f_texture(),
                                           tables_->s_texture(), tables_->kernel_info(), fits.view(),
                                           fits.info, inputs_.d().frame, params_, i, j, path);
-  Shares s = to_shares(r);
-  if (r.exact_pending) finish_exact(inputs_.d().frame, o_.segments, r, path, s);
-  return s;
+  if (!r.exact_pending) return to_shares(r);
+  const kd::Frame& f = inputs_.d().frame;
+  return to_shares(kd::staa_exact_result(
+      f, path, r, exact_light_share(f.light.tan_radius, o_.segments, mat2(r.exact_D), path)));
 }
 
 RadianceWeights StaaMethod::weights(const FrameContext& ctx, int i, int j) const {

@@ -132,7 +132,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
   // The arrays are padded with waves of amplitude 0 to a multiple of the widest vector.
   const int lanes = wave_simd::kLanePadding;
   const int np = (n + lanes - 1) / lanes * lanes;
-  for (auto* v : {&out.A, &out.a, &out.b, &out.theta0, &out.c, &out.slope})
+  for (auto* v : {&out.A, &out.a, &out.b, &out.theta0, &out.c, &out.k, &out.slope})
     v->assign(np, R(0));
   out.rot_c.assign(static_cast<size_t>(np) * segments, R(0));
   out.rot_s.assign(static_cast<size_t>(np) * segments, R(0));
@@ -150,6 +150,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
     out.b[q] = tx[0].z;
     out.theta0[q] = tx[0].w;
     out.c[q] = tx[1].x;
+    out.k[q] = tx[1].y;
     out.slope[q] = tx[1].z;
     for (int s = 0; s < segments; ++s) {
       const double delta =

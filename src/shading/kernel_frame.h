@@ -37,8 +37,9 @@ struct KernelInputs {
   std::vector<Vec4> texels;  // the wave buffer (kernel/waves.glsl: layout)
   std::vector<int> order;    // file index of the wave at each position of the buffer
   // The same waves as arrays (the CPU engine's vectorised sums): amplitude, wave vector,
-  // phase at the display time, angular frequency, slope amplitude; rotations [k][wave].
-  std::vector<Real> A, a, b, theta0, c, slope, rot_c, rot_s;
+  // phase at the display time, angular frequency, wavenumber, slope amplitude; rotations
+  // [k][wave].
+  std::vector<Real> A, a, b, theta0, c, k, slope, rot_c, rot_s;
   // The cascades' fields' builder, kept from frame to frame (its FFTs' lattices), when
   // the frames shade cascades from fields.
   std::shared_ptr<CascadeFields> cascades;
@@ -49,6 +50,7 @@ struct KernelInputs {
     w.b = b.data();
     w.theta0 = theta0.data();
     w.c = c.data();
+    w.k = k.data();
     w.slope = slope.data();
     w.rot_c = rot_c.data();
     w.rot_s = rot_s.data();

@@ -1,8 +1,11 @@
-// The kernel's functions in float precision (kernel/kernel_float.h). This translation
-// unit is compiled with -fsingle-precision-constant (src/CMakeLists.txt): it must include
-// nothing but glm and the kernel, whose literals are then floats, as in GLSL.
+// The kernel's functions in float precision (kernel/kernel_float.h), and its passes over
+// the waves in SIMD lanes (kernel/cpu/lane_passes.inc), compiled for each instruction set
+// Highway targets and dispatched at run time. This translation unit is compiled with
+// -fsingle-precision-constant (src/CMakeLists.txt): it must include nothing but glm,
+// Highway and the kernel, whose literals are then floats, as in GLSL.
+#ifndef SG_KERNEL_FLOAT_CPP_ONCE
+#define SG_KERNEL_FLOAT_CPP_ONCE
 #include "kernel/kernel_float.h"
-
 #include "kernel/cpu/wave_sums.h"
 
 namespace sg::kf {
@@ -10,7 +13,6 @@ namespace sg::kf {
 #define SG_CPU_WAVE_SUMS
 #include "kernel/kernel.glsl"
 #undef SG_CPU_WAVE_SUMS
-#include "kernel/cpu/wave_sums_hooks.inc"
 
 vec4 float_point_pixel(const WaveBuffer& waves, const Frame& f, int i, int j) {
   return point_pixel(waves, f, i, j);
@@ -31,6 +33,10 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,
                             const StaaParams& p, int i, int j, StaaPath& path) {
   return staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, f, p, i, j, path);
+}
+StaaResult float_staa_exact_result(const Frame& f, const StaaPath& path, const StaaResult& r,
+                                   real in_light) {
+  return staa_exact_result(f, path, r, in_light);
 }
 real float_erfc(real x) {
   return erfc(x);
@@ -71,3 +77,12 @@ void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point,
 }
 
 }  // namespace sg::kf
+#endif
+
+// Highway's per-target compilation (kernel/cpu/lane_targets.inc): this file is included
+// again once per instruction set.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "kernel/cpu/kernel_float.cpp"
+#define SG_LANE_KERNEL kf
+#define SG_LANE_REAL float
+#include "kernel/cpu/lane_targets.inc"

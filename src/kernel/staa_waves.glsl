@@ -1,0 +1,120 @@
+// `staa`'s pass over the waves, one wave's terms (Podee et al. 2021 Sec. 3.2-3.4, with
+// sunglint's footprint term; staa.glsl step 2): its projected frequency splits it into a
+// resolved share (1 - alpha) A and an aliasing share alpha A (Eq. 20, aliasing.glsl); the
+// resolved share adds to the gradients and Hessians at the path's instants, the aliasing
+// share to the NDF's moments (Eq. 3, or Eqs. 4-7 with Appendix A: ndf.glsl), and with the
+// smooth terms on, the whole wave to the pixel's cells (ndf.glsl, box_cells_add).
+// Lane-generic (wave_terms.glsl): the GPU's loop (staa.glsl, staa_waves_loop) and the CPU
+// engine's SIMD lanes (kernel/cpu/wave_sums.cpp) run this same text.
+
+// What the pass over the waves gathers for one pixel.
+struct StaaSums {
+  PathGradients path;  // the resolved waves' gradients at the instants
+  // The resolved waves' Hessian (xx, xz, zz) at the instants; under a moving camera the
+  // display time's at every instant.
+  vec3 hess[kMaxSegments + 1];
+  NdfMoments ndf;  // the aliasing waves' NDF
+  bool any_alias;  // some wave with A > 0 has alpha > 0
+  // The smooth terms (--smooth-cells n > 0): every wave's moments at its full amplitude
+  // (not split by Eq. 20) over n x n cells of the pixel (ndf.glsl, box_cells_add), and the
+  // remainder's covariance, which every cell shares.
+  BoxCells cells;
+  vec3 remainder;
+};
+
+// Zero sums for the instants of K sub-arcs (the rest of the arrays is not read), in place:
+// the sums are large (in the CPU's SIMD lanes, kilobytes), and no copy is made of them.
+SG_FN StaaSums staa_sums_zero(int K) {
+  StaaSums s;
+  for (int k = 0; k <= K; ++k) {
+    s.path.g[k] = vec2(0.0);
+    s.hess[k] = vec3(0.0);
+  }
+  s.ndf.mean = vec2(0.0);
+  s.ndf.cov = vec3(0.0);
+  s.any_alias = false;
+  for (int c = 0; c < kMaxBoxCells; ++c) {
+    s.cells.m[c].mean = vec2(0.0);
+    s.cells.m[c].cov = vec3(0.0);
+  }
+  s.remainder = vec3(0.0);
+  return s;
+}
+
+// The pass's pixel-wide inputs (staa.glsl, staa_wave_pixel fills them).
+struct StaaWavePixel {
+  vec2 point;       // (x, z) of the water point at the display time, camera-relative
+  mat2 J;           // the footprint's Jacobian (footprint.glsl: columns dX/dpx, dX/dpy)
+  mat2 Jinv;        // its inverse, 0 where J is singular
+  bool invertible;  // det J != 0
+  bool max_norm;    // Eq. 20's frequency: the larger axis (else the norm)
+  real alias_start;
+  real alias_end;
+  bool curvature;      // the curvature limit is on
+  real limit;          // the curvature limit times the light's radius
+  bool per_pixel_ndf;  // Appendix A's moments (else Eq. 3)
+  int cells;           // the smooth terms' cells per side (0: none)
+  PathInstants inst;   // the path's instants (wave_terms.glsl)
+  vec2 sweep;          // a moving camera's motion p_K - p_0 over the shutter
+};
+
+// Wave i's resolved share A (sine s and cosine c of its display-time phase) in the
+// gradients and Hessians of the path's instants (still camera): instant k's phase is
+// theta - c (end - t_k), its cosine and sine by angle subtraction (rotated_cos_sin); the
+// gradient A cos k, the Hessian -A sin k k^T. Under a moving camera the gradients as
+// path_gradients_add_moving takes them and the display time's Hessian alone.
+SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, IN(WaveBuffer) waves, int i,
+                         IN(Wave) w, real A, real s, real c) {
+  vec2 k = vec2(w.a, w.b);
+  vec3 kk = vec3(k.x * k.x, k.x * k.y, k.y * k.y);
+  if (inst.moving) {
+    path_gradients_add_moving(sums.path, inst, w, A, c);
+    sums.hess[inst.segments] -= (A * s) * kk;
+    return;
+  }
+  sums.path.g[inst.segments] += (A * c) * k;
+  sums.hess[inst.segments] -= (A * s) * kk;
+  for (int q = 0; q < inst.segments; ++q) {
+    vec2 cs = rotated_cos_sin(wave_rotation_of(waves, inst.wave_stride, i, q), s, c);
+    sums.path.g[q] += (A * cs.x) * k;
+    sums.hess[q] -= (A * cs.y) * kk;
+  }
+}
+
+// Wave i's terms in the pixel's sums.
+SG_FN void staa_wave_add(INOUT(StaaSums) sums, IN(StaaWavePixel) px, IN(WaveBuffer) waves, int i,
+                         IN(Wave) w) {
+  vec2 k = vec2(w.a, w.b);
+  real theta = wave_phase(w, px.point.x, px.point.y, 0.0);
+  real s = sin(theta);
+  real c = cos(theta);
+  real freq = px.inst.moving ? swept_frequency(k, px.J, px.sweep, px.max_norm)
+                             : projected_frequency(k, px.J, px.max_norm);
+  real alpha = alias_fraction(freq, px.alias_start, px.alias_end);
+  real D = px.invertible ? footprint_half_width(k, px.Jinv) : 0.0;
+  if (px.curvature) {
+    // Where the linearisation breaks: a resolved wave of phase half-width D has a slope
+    // A |k| cos(theta) that departs from its tangent by up to A |k| D^2 / 2 across the
+    // pixel; the reflection moves twice as far. Past `curvature_limit` disk radii the
+    // wave goes to the aliasing set, ramping over a factor of two.
+    real dev = w.slope * D * D;
+    alpha = max(alpha, clamp(dev / px.limit - 1.0, 0.0, 1.0));
+  }
+  real resolved = (1.0 - alpha) * w.A;
+  // A share of 0 adds nothing: the branch skips the instants' terms of the fully aliasing
+  // waves.
+  if (any_lane(resolved != 0.0)) staa_path_add(sums, px.inst, waves, i, w, resolved, s, c);
+  real aliasing = alpha * w.A;
+  if (any_lane(aliasing > 0.0)) {
+    sums.any_alias = true;
+    if (px.per_pixel_ndf) {
+      real Dn = px.inst.moving ? swept_half_width(D, k, px.sweep) : D;
+      ndf_add_per_pixel(sums.ndf, aliasing, k, c, Dn, sin(Dn), cos(Dn));
+    } else {
+      ndf_add_uniform(sums.ndf, aliasing, k);
+    }
+  }
+  if (px.cells > 0) {
+    box_cells_add(sums.cells, px.cells, w.A, k, s, c, 0.5 * vec2(dot(k, px.J[0]), dot(k, px.J[1])));
+  }
+}
