@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "kernel/kernel_double.h"
+
 namespace sg {
 
 LightModel::LightModel(const LightDesc& d) {
@@ -13,7 +15,16 @@ LightModel::LightModel(const LightDesc& d) {
   radius = radians(d.angular_radius_deg);
   cos_radius = std::cos(radius);
   tan_radius = std::tan(radius);
+  sin_radius = std::sin(radius);
+  chord2 = 4 * std::sin(0.5 * radius) * std::sin(0.5 * radius);
   visible = d.visible;
+}
+
+bool LightModel::contains(const vec3& unit_dir) const {
+  kd::Light l;
+  l.L = L;
+  l.chord2 = chord2;
+  return kd::light_contains(l, unit_dir);
 }
 
 }  // namespace sg

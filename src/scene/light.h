@@ -21,12 +21,16 @@ struct LightModel {
   double radius = 0;  // angular radius, radians
   double cos_radius = 1;
   double tan_radius = 0;  // radius of the disk on the light plane
+  double sin_radius = 0;
+  double chord2 = 0;  // 4 sin^2(radius / 2): |r - L|^2 for a unit r on the disk's rim
   bool visible = false;
 
   LightModel() = default;
   explicit LightModel(const LightDesc& d);
 
-  bool contains(const vec3& unit_dir) const { return dot(unit_dir, L) >= cos_radius; }
+  // Whether unit direction r lies in the disk: the kernel's test (kernel/light.glsl,
+  // light_contains), |r - L|^2 <= chord2.
+  bool contains(const vec3& unit_dir) const;
 
   // Light-plane coordinates of direction r (any length, r . L > 0).
   vec2 to_plane(const vec3& r) const {

@@ -26,9 +26,9 @@ void fill_light(const LightModel& l, Light& out) {
   out.e2 = v3(l.e2);
   out.radius = R(l.radius);
   out.cos_radius = R(l.cos_radius);
-  out.sin_radius = R(std::sin(l.radius));
+  out.sin_radius = R(l.sin_radius);
   out.tan_radius = R(l.tan_radius);
-  out.chord2 = R(4 * sqr(std::sin(0.5 * l.radius)));
+  out.chord2 = R(l.chord2);
   out.visible = l.visible;
 }
 

@@ -1,5 +1,6 @@
-// The radiance of the scene spec ("Radiance along a camera ray"), written once and used
-// by every method, the reference renderer and the tests.
+// The radiance of the scene spec ("Radiance along a camera ray") for host code: the
+// kernel's formulas (kernel/radiance.glsl, kernel/light.glsl), written once there, called
+// in double on the model's light, Fresnel mode and sky.
 //
 // At a water point with unit view direction v (towards the camera) and unit normal n:
 //   r = 2 (n . v) n - v                                   (mirror reflection)
@@ -20,77 +21,74 @@
 // the horizon. `combine_weights` turns such fractions into the same weights.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
-
+#include "kernel/kernel_double.h"
 #include "math/vec.h"
 #include "scene/model.h"
+#include "shading/kernel_frame.h"
 
 namespace sg {
 
 struct RayHit;
 
-inline constexpr double kSchlickR0 = 0.02;
+// The formulas are the kernel's (kernel/radiance.glsl, kernel/light.glsl), called in double
+// on the scene's light, Fresnel mode and sky: these are the host's names for them.
+inline const double kSchlickR0 = kd::kSchlickR0;
+
+// The kernel's view of the model's shading inputs: a Frame whose light, Fresnel mode and
+// sky are the model's (kernel/radiance.glsl reads no other field; the rest is not set).
+inline kd::Frame radiance_frame(const SceneModel& m) {
+  kd::Frame f;
+  f.light = kernel_light(m.light);
+  f.fresnel = m.scene.surface.fresnel == FresnelMode::none ? 0 : 1;
+  f.sky_gradient = m.scene.sky.gradient;
+  f.sky_exponent = m.scene.sky.exponent;
+  return f;
+}
 
 // RadianceWeights (scene/model.h): x light, y zenith, z horizon, w sea.
 
 // r = 2 (n . v) n - v
 inline vec3 reflect_view(const vec3& n, const vec3& v) {
-  return 2.0 * dot(n, v) * n - v;
+  return kd::reflect_view(n, v);
 }
 
 // Schlick's approximation (scene spec 4). n_dot_v is clamped to [0, 1].
 inline double fresnel_schlick(double n_dot_v) {
-  double m = 1.0 - clamp(n_dot_v, 0.0, 1.0);
-  double m2 = m * m;
-  return kSchlickR0 + (1.0 - kSchlickR0) * m2 * m2 * m;
+  return kd::fresnel_schlick(n_dot_v);
 }
 
 inline double fresnel(FresnelMode mode, double n_dot_v) {
-  return mode == FresnelMode::none ? 1.0 : fresnel_schlick(n_dot_v);
+  return kd::fresnel_factor(mode == FresnelMode::none ? 0 : 1, n_dot_v);
 }
 
 // The sky's weights in direction d (d.y the height of the unit direction): zenith
-// max(d.y, 0)^exponent, horizon the rest, each share to its own digits (kernel/radiance.glsl:
-// sky_shares; here std::expm1).
-// A constant sky puts its whole weight on the horizon (zenith == horizon there).
+// max(d.y, 0)^exponent, horizon the rest, each share to its own digits. A constant sky
+// puts its whole weight on the horizon (zenith == horizon there).
 inline RadianceWeights sky_weights(const SceneModel& m, double dir_y) {
-  if (!m.scene.sky.gradient) return RadianceWeights(0.0, 0.0, 1.0, 0.0);
-  if (!(dir_y > 0)) return RadianceWeights(0.0, 0.0, 1.0, 0.0);
-  const double u = m.scene.sky.exponent * std::log(std::min(dir_y, 1.0));
-  return RadianceWeights(0.0, std::exp(u), -std::expm1(u), 0.0);
+  return kd::sky_weights(radiance_frame(m), dir_y);
 }
 
 inline RadianceWeights light_weights() {
-  return RadianceWeights(1.0, 0.0, 0.0, 0.0);
+  return kd::light_weights();
 }
 inline RadianceWeights sea_weights() {
-  return RadianceWeights(0.0, 0.0, 0.0, 1.0);
+  return kd::sea_weights();
 }
 
 // Weights along a camera ray with unit direction `dir` that hits no water.
 inline RadianceWeights miss_weights(const SceneModel& m, const vec3& dir) {
-  if (m.light.visible && m.light.contains(dir)) return light_weights();
-  return sky_weights(m, dir.y);
+  return kd::miss_weights(radiance_frame(m), dir);
 }
 
 // Weights reflected at a water point seen from unit direction v, for a normal along `nm`
-// of any length (the unit normal is nm / |nm|). With n = nm / |nm| the reflection
-// 2 (n . v) n - v equals 2 (nm . v) / (nm . nm) nm - v, which needs no square root; r is
-// then unit to rounding, so the cone test r . L >= cos(rho) is exact to 1e-16.
+// of any length (the reflection 2 (nm . v) / (nm . nm) nm - v needs no square root).
 inline RadianceWeights water_weights(const SceneModel& m, const vec3& nm, const vec3& v) {
-  const double nv = dot(nm, v), nn = dot(nm, nm);
-  const vec3 r = (2.0 * nv / nn) * nm - v;
-  if (r.y <= 0) return sea_weights();
-  const RadianceWeights above = m.light.contains(r) ? light_weights() : sky_weights(m, r.y);
-  if (m.scene.surface.fresnel == FresnelMode::none) return above;
-  const double F = fresnel_schlick(nv / std::sqrt(nn));
-  return F * above + (1.0 - F) * sea_weights();
+  return kd::water_weights(radiance_frame(m), nm, v);
 }
 
 // The (unnormalised) normal (-dh/dx, 1, -dh/dz) of the scene spec for gradient g.
 inline vec3 normal_direction(vec2 g) {
-  return vec3(-g.x, 1.0, -g.y);
+  return kd::normal_direction(g);
 }
 
 // The expected weights when a fraction `in_light` of the footprint and shutter reflects
@@ -99,10 +97,7 @@ inline vec3 normal_direction(vec2 g) {
 // factor of the part above the horizon.
 inline RadianceWeights combine_weights(const SceneModel& m, double F, double in_light, double below,
                                        double sky_y) {
-  const double above = 1.0 - below;
-  const double sky = std::max(0.0, above - in_light);
-  const RadianceWeights s = sky_weights(m, sky_y);
-  return RadianceWeights(F * in_light, F * sky * s.y, F * sky * s.z, below + (1.0 - F) * above);
+  return kd::combine_weights(radiance_frame(m), F, in_light, below, sky_y);
 }
 
 // Pixel (i, j) whose centre ray hits no water, for the methods that integrate over the
