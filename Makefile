@@ -61,7 +61,10 @@ sanitize-build: deps
 # the Release suite only; the code it runs (the moving camera's staa, supersample, point and
 # reference) runs under the sanitizers in `MovingCamera.*` and the GL engine's moving-camera
 # test (docs/ci.md).
-SANITIZE_EXCLUDE ?= ^MovingCameraTargets\.
+# `Staa.BeatsPointSamplingOnTheSharedScenes` (staa against point over ten frames of the
+# four shared scenes: 75 s under the sanitizers) likewise: its code runs under them in
+# `StaaFootprint.*` and the GL engine's shared-scenes test.
+SANITIZE_EXCLUDE ?= ^(MovingCameraTargets\.|Staa\.BeatsPointSamplingOnTheSharedScenes$$)
 sanitize-test:
 	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L '^(unit|gl|slow)$$' \
 	  -LE '^cli$$' -E '$(SANITIZE_EXCLUDE)'

@@ -9,7 +9,6 @@
 // differentials": the ray differentials of a pinhole camera).
 #pragma once
 
-#include "kernel/kernel_double.h"
 #include "math/vec.h"
 #include "scene/scene.h"
 
@@ -26,33 +25,29 @@ class CameraModel {
 
   // The (unnormalised) direction through image-plane point (px, py), pixel units, and
   // d direction / d px and d direction / d py: the kernel's (kernel/camera.glsl).
-  vec3 direction(double px, double py) const { return kd::camera_direction(k_, px, py); }
-  vec3 ddir_dpx() const { return kd::camera_ddir_dpx(k_); }
-  vec3 ddir_dpy() const { return kd::camera_ddir_dpy(k_); }
+  vec3 direction(double px, double py) const;
+  vec3 ddir_dpx() const;
+  vec3 ddir_dpy() const;
 
   // The image-plane point (px, py) that direction `dir` passes through; false when the
   // direction points away from the image plane.
   bool project(const vec3& dir, double& px, double& py) const;
 
   // tan(hfov / 2) and tan(vfov / 2).
-  double half_w() const { return k_.half_w; }
-  double half_h() const { return k_.half_h; }
-  const vec3& forward() const { return k_.forward; }
-  const vec3& right() const { return k_.right; }
-  const vec3& up() const { return k_.up; }
+  double half_w() const { return half_w_; }
+  double half_h() const { return half_h_; }
+  const vec3& forward() const { return forward_; }
+  const vec3& right() const { return right_; }
+  const vec3& up() const { return up_; }
 
  private:
-  vec3 position_{0};
+  vec3 position_{0}, forward_{0, 0, -1}, right_{1, 0, 0}, up_{0, 1, 0};
+  double half_w_ = 1, half_h_ = 1;
   int width_ = 1, height_ = 1;
-  // The kernel's camera (kernel/interface.glsl): the basis, the half-extents and the size;
-  // its position is not used here (the kernel's is camera-relative).
-  kd::Camera k_{vec3(0), vec3(0, 0, -1), vec3(1, 0, 0), vec3(0, 1, 0), 1, 1, 1, 1};
 };
 
 // Transfer of a ray differential onto a surface (Igehy 1999, Eq. 10 for a plane): the
 // kernel's (kernel/camera.glsl, transfer_differential).
-inline vec3 transfer_differential(const vec3& d, double s, const vec3& dd, const vec3& m) {
-  return kd::transfer_differential(d, s, dd, m);
-}
+vec3 transfer_differential(const vec3& d, double s, const vec3& dd, const vec3& m);
 
 }  // namespace sg

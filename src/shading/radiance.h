@@ -21,84 +21,51 @@
 // the horizon. `combine_weights` turns such fractions into the same weights.
 #pragma once
 
-#include "kernel/kernel_double.h"
 #include "math/vec.h"
 #include "scene/model.h"
-#include "shading/kernel_frame.h"
 
 namespace sg {
 
 struct RayHit;
 
 // The formulas are the kernel's (kernel/radiance.glsl, kernel/light.glsl), called in double
-// on the scene's light, Fresnel mode and sky: these are the host's names for them.
-inline const double kSchlickR0 = kd::kSchlickR0;
+// (radiance.cpp) on the model's light, Fresnel mode and sky: these are the host's names
+// for them. RadianceWeights (scene/model.h): x light, y zenith, z horizon, w sea.
 
-// The kernel's view of the model's shading inputs: a Frame whose light, Fresnel mode and
-// sky are the model's (kernel/radiance.glsl reads no other field; the rest is not set).
-inline kd::Frame radiance_frame(const SceneModel& m) {
-  kd::Frame f;
-  f.light = kernel_light(m.light);
-  f.fresnel = m.scene.surface.fresnel == FresnelMode::none ? 0 : 1;
-  f.sky_gradient = m.scene.sky.gradient;
-  f.sky_exponent = m.scene.sky.exponent;
-  return f;
-}
-
-// RadianceWeights (scene/model.h): x light, y zenith, z horizon, w sea.
+// Schlick's R0 for water (kernel/constants.glsl).
+extern const double kSchlickR0;
 
 // r = 2 (n . v) n - v
-inline vec3 reflect_view(const vec3& n, const vec3& v) {
-  return kd::reflect_view(n, v);
-}
+vec3 reflect_view(const vec3& n, const vec3& v);
 
 // Schlick's approximation (scene spec 4). n_dot_v is clamped to [0, 1].
-inline double fresnel_schlick(double n_dot_v) {
-  return kd::fresnel_schlick(n_dot_v);
-}
-
-inline double fresnel(FresnelMode mode, double n_dot_v) {
-  return kd::fresnel_factor(mode == FresnelMode::none ? 0 : 1, n_dot_v);
-}
+double fresnel_schlick(double n_dot_v);
+double fresnel(FresnelMode mode, double n_dot_v);
 
 // The sky's weights in direction d (d.y the height of the unit direction): zenith
 // max(d.y, 0)^exponent, horizon the rest, each share to its own digits. A constant sky
 // puts its whole weight on the horizon (zenith == horizon there).
-inline RadianceWeights sky_weights(const SceneModel& m, double dir_y) {
-  return kd::sky_weights(radiance_frame(m), dir_y);
-}
+RadianceWeights sky_weights(const SceneModel& m, double dir_y);
 
-inline RadianceWeights light_weights() {
-  return kd::light_weights();
-}
-inline RadianceWeights sea_weights() {
-  return kd::sea_weights();
-}
+RadianceWeights light_weights();
+RadianceWeights sea_weights();
 
 // Weights along a camera ray with unit direction `dir` that hits no water.
-inline RadianceWeights miss_weights(const SceneModel& m, const vec3& dir) {
-  return kd::miss_weights(radiance_frame(m), dir);
-}
+RadianceWeights miss_weights(const SceneModel& m, const vec3& dir);
 
 // Weights reflected at a water point seen from unit direction v, for a normal along `nm`
 // of any length (the reflection 2 (nm . v) / (nm . nm) nm - v needs no square root).
-inline RadianceWeights water_weights(const SceneModel& m, const vec3& nm, const vec3& v) {
-  return kd::water_weights(radiance_frame(m), nm, v);
-}
+RadianceWeights water_weights(const SceneModel& m, const vec3& nm, const vec3& v);
 
 // The (unnormalised) normal (-dh/dx, 1, -dh/dz) of the scene spec for gradient g.
-inline vec3 normal_direction(vec2 g) {
-  return kd::normal_direction(g);
-}
+vec3 normal_direction(vec2 g);
 
 // The expected weights when a fraction `in_light` of the footprint and shutter reflects
 // into the light disk, `below` reflects below the horizon and the rest sees the sky in
 // directions of height `sky_y` (the split between zenith and horizon); F is the Fresnel
 // factor of the part above the horizon.
-inline RadianceWeights combine_weights(const SceneModel& m, double F, double in_light, double below,
-                                       double sky_y) {
-  return kd::combine_weights(radiance_frame(m), F, in_light, below, sky_y);
-}
+RadianceWeights combine_weights(const SceneModel& m, double F, double in_light, double below,
+                                double sky_y);
 
 // Pixel (i, j) whose centre ray hits no water, for the methods that integrate over the
 // pixel: the sky at the centre, and the light over the part of the pixel square that sees
