@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/footprint.h"
 #include "scene/model.h"
 #include "shading/kernel_frame.h"
+#include "shading/water_geometry.h"
 #include "shading/wave_lod.h"
 
 namespace sg {

@@ -5,18 +5,17 @@
 #include <vector>
 
 #include "base/error.h"
-#include "scene/footprint.h"
-#include "scene/intersect.h"
 #include "shading/gaussian_disk.h"
 #include "shading/ndf.h"
 #include "shading/ocean_brdf.h"
 #include "shading/radiance.h"
+#include "shading/water_geometry.h"
 #include "shading/wave_lod.h"
 
 namespace sg {
 
 void BrunetonMethod::begin_frame(const FrameContext& ctx) {
-  reset_fallbacks();
+  begin_host_frame(ctx);
   cascades_.build(ctx);
   if (sorted_model_.load(std::memory_order_acquire) != ctx.model.id ||
       sorted_fields_ != cascades_.active()) {
@@ -55,11 +54,8 @@ RadianceWeights BrunetonMethod::weights(const FrameContext& ctx, int i, int j) c
   // 2. Position: the rest plane, or the filtered height field.
   vec3 P = rest.point;
   if (m.displaced()) {
-    const RayHit hit = intersect_displaced(waves.weighted(w), o, d, t);
-    if (!hit.hit) {
-      if (hit.exhausted) count_fallback();  // a march that found no water: the sky
-      return miss_pixel_weights(m, i, j);
-    }
+    const RayHit hit = water(ctx).intersect_filtered(w, o, d, t);
+    if (!hit.hit) return miss_pixel_weights(m, i, j);
     if (!(hit.s > 0)) return fallback(ctx, i, j);  // the camera is under the surface
     P = hit.point;
   }

@@ -57,17 +57,17 @@
 #include <cstdint>
 #include <memory>
 
-#include "methods/fallback.h"
 #include "methods/host_cascades.h"
+#include "methods/host_method.h"
 #include "methods/method.h"
 #include "shading/wave_lod.h"
 
 namespace sg {
 
-// Fallback (methods/fallback.h): where the camera is under the filtered surface (the hit is the
+// Fallback (methods/host_method.h): where the camera is under the filtered surface (the hit is the
 // camera: no view direction) or the BRDF's value is not finite, the pixel gets the spec's radiance
 // along its centre ray (what `point` returns) and is counted.
-class BrunetonMethod final : public Method, public FallbackCounter {
+class BrunetonMethod final : public Method, public HostMethod {
  public:
   explicit BrunetonMethod(BrunetonOptions o, bool cascade_fields = true)
       : options_(o), cascades_(cascade_fields) {}

@@ -106,7 +106,7 @@ void fill_lean_map_from_waves(LeanMap& map, const LeanMapRegion& region, const W
 }
 
 void LeanMethod::begin_frame(const FrameContext& ctx) {
-  reset_fallbacks();
+  begin_host_frame(ctx);
   const SceneModel& m = ctx.model;
   cascades_.build(ctx);
   const WaveField& w = cascades_.waves(m);
@@ -138,7 +138,7 @@ LeanMoments LeanMethod::lookup(const PixelFootprint& fp) const {
 
 RadianceWeights LeanMethod::weights(const FrameContext& ctx, int i, int j) const {
   const SceneModel& m = ctx.model;
-  const PixelFootprint fp = pixel_footprint(m, i + 0.5, j + 0.5, ctx.time.end);
+  const PixelFootprint fp = water(ctx).footprint(i + 0.5, j + 0.5, ctx.time.end);
   if (!fp.hit) return miss_pixel_weights(m, i, j);
   if (fp.at_camera) return fallback(ctx, i, j);
   const LeanMoments mo = lookup(fp);

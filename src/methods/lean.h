@@ -56,8 +56,8 @@
 
 #include <span>
 
-#include "methods/fallback.h"
 #include "methods/host_cascades.h"
+#include "methods/host_method.h"
 #include "methods/lean_coverage.h"
 #include "methods/lean_map.h"
 #include "methods/method.h"
@@ -65,11 +65,10 @@
 
 namespace sg {
 
-// Fallback (methods/fallback.h): where the camera is under the surface (a point footprint, no map
-// footprint to filter) or the NDF's shading is not finite,
-// the pixel gets the spec's radiance along its centre ray (what `point` returns) and is
-// counted.
-class LeanMethod final : public Method, public FallbackCounter {
+// Fallback (methods/host_method.h): where the camera is under the surface (a point footprint, no
+// map footprint to filter) or the NDF's shading is not finite, the pixel gets the spec's radiance
+// along its centre ray (what `point` returns) and is counted.
+class LeanMethod final : public Method, public HostMethod {
  public:
   // Throws sg::Error naming the flag for a bad option.
   explicit LeanMethod(const LeanOptions& options, bool cascade_fields = true);

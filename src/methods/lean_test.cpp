@@ -25,6 +25,7 @@
 #include "shading/ndf.h"
 #include "shading/ndf_radiance.h"
 #include "shading/radiance.h"
+#include "shading/water_geometry.h"
 #include "testing/calm_water.h"
 #include "testing/testing.h"
 

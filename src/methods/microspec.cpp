@@ -4,10 +4,10 @@
 #include <cmath>
 #include <vector>
 
-#include "scene/intersect.h"
 #include "shading/circle_polygon.h"
 #include "shading/convex_polygon.h"
 #include "shading/radiance.h"
+#include "shading/water_geometry.h"
 
 namespace sg {
 namespace {
@@ -20,13 +20,14 @@ constexpr double kDegenerateArea = 1e-9;
 
 }  // namespace
 
-CornerReflection corner_reflection(const SceneModel& m, double px, double py, double t) {
+CornerReflection corner_reflection(const WaterGeometry& water, double px, double py, double t) {
   CornerReflection c;
+  const SceneModel& m = water.model();
   const vec3 o = m.camera.position();
   const vec3 d = normalize(m.camera.direction(px, py));
-  RayHit hit = m.displaced() ? intersect_displaced(m.waves, o, d, t) : intersect_flat(o, d);
+  const RayHit hit = water.intersect(o, d, t);
   if (!hit.hit) return c;
-  const vec3 n = normal_from_gradient(m.waves.gradient(hit.point.x, hit.point.z, t));
+  const vec3 n = normal_from_gradient(water.gradient(hit.point.x, hit.point.z, t));
   c.hit = true;
   c.at_camera = !(hit.s > 0);
   c.v = -d;
@@ -121,7 +122,7 @@ RadianceWeights microspec_weights(const SceneModel& m, const std::array<CornerRe
 RadianceWeights MicrospecMethod::shade_corners(const FrameContext& ctx, int i, int j,
                                                const std::array<CornerReflection, 4>& c) const {
   for (const auto& k : c) {
-    if (!k.hit) return centre_ray_weights(ctx, i, j);  // as `point` (see microspec.h)
+    if (!k.hit) return centre_ray_weights(ctx, water(ctx), i, j);  // as `point` (microspec.h)
     if (k.at_camera) return fallback(ctx, i, j);
   }
   return finite_or_fallback(microspec_weights(ctx.model, c, options_.area), ctx, i, j);
@@ -129,9 +130,10 @@ RadianceWeights MicrospecMethod::shade_corners(const FrameContext& ctx, int i, i
 
 RadianceWeights MicrospecMethod::weights(const FrameContext& ctx, int i, int j) const {
   const double t = ctx.time.end;
+  const WaterGeometry& g = water(ctx);
   const std::array<CornerReflection, 4> c = {
-      corner_reflection(ctx.model, i, j, t), corner_reflection(ctx.model, i + 1, j, t),
-      corner_reflection(ctx.model, i + 1, j + 1, t), corner_reflection(ctx.model, i, j + 1, t)};
+      corner_reflection(g, i, j, t), corner_reflection(g, i + 1, j, t),
+      corner_reflection(g, i + 1, j + 1, t), corner_reflection(g, i, j + 1, t)};
   return shade_corners(ctx, i, j, c);
 }
 
@@ -140,9 +142,10 @@ void MicrospecMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1
   thread_local std::vector<CornerReflection> grid;
   const int w = x1 - x0 + 1;
   grid.resize(static_cast<size_t>(w) * (y1 - y0 + 1));
+  const WaterGeometry& g = water(ctx);
   for (int j = y0; j <= y1; ++j) {
     for (int i = x0; i <= x1; ++i)
-      grid[(j - y0) * w + (i - x0)] = corner_reflection(ctx.model, i, j, ctx.time.end);
+      grid[(j - y0) * w + (i - x0)] = corner_reflection(g, i, j, ctx.time.end);
   }
   for (int j = y0; j < y1; ++j) {
     for (int i = x0; i < x1; ++i) {

@@ -62,7 +62,7 @@
 
 #include <array>
 
-#include "methods/fallback.h"
+#include "methods/host_method.h"
 #include "methods/method.h"
 
 namespace sg {
@@ -75,7 +75,7 @@ struct CornerReflection {
   vec3 r{0};               // unit reflected direction
   vec3 v{0};               // unit view direction (towards the camera)
 };
-CornerReflection corner_reflection(const SceneModel& m, double px, double py, double t);
+CornerReflection corner_reflection(const WaterGeometry& water, double px, double py, double t);
 
 // What the reflection space of a pixel sees: the fraction mirroring the light (gated by
 // the brightest reflection lying in the disk), the fraction below the horizon, and the
@@ -97,15 +97,15 @@ RadianceWeights microspec_weights(const SceneModel& m,
                                   const std::array<CornerReflection, 4>& corners,
                                   MicrospecArea area);
 
-// Fallback (methods/fallback.h): where the camera is under the surface at a corner (the corner's
+// Fallback (methods/host_method.h): where the camera is under the surface at a corner (the corner's
 // reflection is not a point of the water seen from above) or the value is not finite,
 // the pixel gets the spec's radiance along its centre ray (what `point` returns) and is
 // counted.
-class MicrospecMethod final : public Method, public FallbackCounter {
+class MicrospecMethod final : public Method, public HostMethod {
  public:
   explicit MicrospecMethod(MicrospecOptions o) : options_(o) {}
   std::string name() const override { return "microspec"; }
-  void begin_frame(const FrameContext&) override { reset_fallbacks(); }
+  void begin_frame(const FrameContext& ctx) override { begin_host_frame(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;
   // Neighbouring pixels share corners: a tile traces its (w+1) x (h+1) corners once.
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,

@@ -232,6 +232,8 @@ TEST(Microspec, CalmWaterMatchesTheExactCoveragePerPixel) {
   MicrospecMethod method(MicrospecOptions{});
   MicrospecMethod approx(MicrospecOptions{MicrospecArea::approx});
   FrameContext ctx{m, frame_time(s, 0), 0};
+  method.begin_frame(ctx);
+  approx.begin_frame(ctx);
   double worst = 0, worst_approx = 0, sum = 0, sum_exact = 0;
   int partial = 0;
   for (int j = static_cast<int>(cy) - 6; j <= static_cast<int>(cy) + 6; ++j) {

@@ -15,17 +15,18 @@ constexpr double kMinLightCos = 0.05;
 
 }  // namespace
 
-SpecaaSample specaa_sample(const SceneModel& m, double px, double py, double t,
+SpecaaSample specaa_sample(const WaterGeometry& water, double px, double py, double t,
                            const HostCascades* cascades) {
+  const SceneModel& m = water.model();
   SpecaaSample s;
-  s.footprint = pixel_footprint(m, px, py, t);
+  s.footprint = water.footprint(px, py, t);
   if (!s.footprint.hit) return s;
   s.hit = true;
   const vec3& P = s.footprint.point;
   if (cascades != nullptr && cascades->active()) {
     s.g = cascades->waves(m).gradient(P.x, P.z, t) + cascades->gradient(P);
   } else {
-    s.g = m.waves.gradient(P.x, P.z, t);
+    s.g = water.gradient(P.x, P.z, t);
   }
   s.frame = water_shading_frame(s.g);
   s.h_perp = projected_half_vector(s.frame, s.footprint.view, m.light.L);
@@ -92,12 +93,12 @@ RadianceWeights SpecaaMethod::shade_pixel(const FrameContext& ctx, int i, int j,
 
 RadianceWeights SpecaaMethod::weights(const FrameContext& ctx, int i, int j) const {
   const double t = ctx.time.end;
-  const SpecaaSample own = specaa_sample(ctx.model, i + 0.5, j + 0.5, t, &cascades_);
+  const SpecaaSample own = specaa_sample(water(ctx), i + 0.5, j + 0.5, t, &cascades_);
   if (options_.derivatives == SpecaaDerivatives::analytic) {
     return shade_pixel(ctx, i, j, own, SpecaaSample{}, SpecaaSample{});
   }
-  const SpecaaSample nx = specaa_sample(ctx.model, (i ^ 1) + 0.5, j + 0.5, t, &cascades_);
-  const SpecaaSample ny = specaa_sample(ctx.model, i + 0.5, (j ^ 1) + 0.5, t, &cascades_);
+  const SpecaaSample nx = specaa_sample(water(ctx), (i ^ 1) + 0.5, j + 0.5, t, &cascades_);
+  const SpecaaSample ny = specaa_sample(water(ctx), i + 0.5, (j ^ 1) + 0.5, t, &cascades_);
   return shade_pixel(ctx, i, j, own, nx, ny);
 }
 
@@ -115,7 +116,7 @@ void SpecaaMethod::shade_tile(const FrameContext& ctx, int x0, int y0, int x1, i
   for (int j = qy0; j < qy1; ++j) {
     for (int i = qx0; i < qx1; ++i)
       grid[(j - qy0) * w + (i - qx0)] =
-          specaa_sample(ctx.model, i + 0.5, j + 0.5, ctx.time.end, &cascades_);
+          specaa_sample(water(ctx), i + 0.5, j + 0.5, ctx.time.end, &cascades_);
   }
   auto at = [&](int i, int j) -> const SpecaaSample& { return grid[(j - qy0) * w + (i - qx0)]; };
   for (int j = y0; j < y1; ++j) {

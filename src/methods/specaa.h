@@ -36,8 +36,8 @@
 // A pixel whose centre ray misses the water sees the sky (miss_radiance), as `point`.
 #pragma once
 
-#include "methods/fallback.h"
 #include "methods/host_cascades.h"
+#include "methods/host_method.h"
 #include "methods/method.h"
 #include "scene/footprint.h"
 #include "shading/specular_aa.h"
@@ -52,9 +52,10 @@ struct SpecaaSample {
   ShadingFrame frame;
   vec2 h_perp{0};
 };
+// The sample at image-plane point (px, py) on `water` (shading/water_geometry.h).
 // `cascades`: the frame's cascade fields (methods/host_cascades.h) where they are active,
 // else every wave of the model is summed.
-SpecaaSample specaa_sample(const SceneModel& m, double px, double py, double t,
+SpecaaSample specaa_sample(const WaterGeometry& water, double px, double py, double t,
                            const HostCascades* cascades = nullptr);
 
 // The analytic derivatives (dh_perp/dpx, dh_perp/dpy) at a sample.
@@ -65,16 +66,16 @@ void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, dou
 RadianceWeights specaa_weights(const SceneModel& m, const SpecaaSample& s, const vec2& ddx,
                                const vec2& ddy, const SpecaaOptions& o);
 
-// Fallback (methods/fallback.h): where the camera is under the surface (no footprint, no
+// Fallback (methods/host_method.h): where the camera is under the surface (no footprint, no
 // derivatives) or the lobe's shading is not finite, the pixel gets the spec's radiance along its
 // centre ray (what `point` returns) and is counted.
-class SpecaaMethod final : public Method, public FallbackCounter {
+class SpecaaMethod final : public Method, public HostMethod {
  public:
   explicit SpecaaMethod(SpecaaOptions o, bool cascade_fields = true)
       : options_(o), cascades_(cascade_fields) {}
   std::string name() const override { return "specaa"; }
   void begin_frame(const FrameContext& ctx) override {
-    reset_fallbacks();
+    begin_host_frame(ctx);
     cascades_.build(ctx);
   }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;

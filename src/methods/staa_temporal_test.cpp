@@ -12,10 +12,10 @@
 #include <new>
 
 #include "methods/stratified.h"
-#include "scene/footprint.h"
 #include "shading/aliasing.h"
 #include "shading/radiance.h"
 #include "shading/reflection_path.h"
+#include "shading/water_geometry.h"
 #include "testing/begun.h"
 #include "testing/testing.h"
 

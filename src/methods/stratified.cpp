@@ -1,7 +1,7 @@
 #include "methods/stratified.h"
 
 #include "kernel/kernel_float.h"
-#include "scene/intersect.h"
+#include "shading/water_geometry.h"
 
 namespace sg {
 

@@ -19,6 +19,7 @@
 #include "methods/point.h"
 #include "methods/supersample.h"
 #include "shading/radiance.h"
+#include "shading/water_geometry.h"
 #include "testing/calm_water.h"
 #include "testing/testing.h"
 
@@ -71,13 +72,14 @@ double direct_pixel(const FrameContext& ctx, int i, int j, const StratifiedSetti
     times[q] = ctx.time.start + (q + rng.uniform()) / s.samples.st * ctx.time.duration();
   }
   double sum = 0;
+  const WaterGeometry water(m, ctx.time);
   for (int cy = 0; cy < s.samples.sy; ++cy) {
     for (int cx = 0; cx < s.samples.sx; ++cx) {
       double px = i + (cx + rng.uniform()) / s.samples.sx;
       double py = j + (cy + rng.uniform()) / s.samples.sy;
       for (double t : times)
-        sum +=
-            grey_value(m, weights_along_ray(m, m.camera.position(), m.camera.direction(px, py), t));
+        sum += grey_value(
+            m, weights_along_ray(water, m.camera.position(), m.camera.direction(px, py), t));
     }
   }
   return sum / (double(s.samples.st) * s.samples.sx * s.samples.sy);
@@ -198,11 +200,12 @@ TEST(Point, CentreRayAtTheDisplayTime) {
   FrameContext ctx{m, frame_time(s, 7), 0};
   PointMethod p;
   p.begin_frame(ctx);
+  const WaterGeometry water(m, ctx.time);
   for (int j : {200, 260, 300}) {
     for (int i : {100, 320}) {
       EXPECT_EQ(
           p.shade(ctx, i, j),
-          grey_value(m, weights_along_ray(m, m.camera.position(),
+          grey_value(m, weights_along_ray(water, m.camera.position(),
                                           m.camera.direction(i + 0.5, j + 0.5), s.frame_time(7))));
     }
   }

@@ -8,8 +8,8 @@
 #include "base/error.h"
 #include "methods/taa_resolve.h"
 #include "scene/camera_path.h"
-#include "scene/intersect.h"
 #include "shading/radiance.h"
+#include "shading/water_geometry.h"
 
 namespace sg {
 
@@ -34,7 +34,7 @@ void TaaMethod::begin_frame(const FrameContext& ctx) {
        history_.height != m.height() || history_.channels != (m.scene.grey() ? 1 : 3))) {
     reset();  // a cut: the history belongs to another sequence
   }
-  reset_fallbacks();
+  begin_host_frame(ctx);
   jitter_ = taa_jitter(ctx.time.frame, options_.jitter_count);
   t_prev_ = m.scene.frame_time(ctx.time.frame - 1);
   motion_.assign(static_cast<size_t>(m.width()) * m.height(), vec2(0));
@@ -55,13 +55,14 @@ RadianceWeights TaaMethod::sample(const FrameContext& ctx, int i, int j, vec2* m
   const vec3 origin = m.camera.position();
   if (motion && camera_moves_) return sample_moving(ctx, p, motion);
   if (!motion || !m.displaced()) {
-    return weights_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end);
+    return weights_along_ray(water(ctx), origin, m.camera.direction(p.x, p.y), ctx.time.end);
   }
   RayHit hit;
   const RadianceWeights value =
-      weights_along_ray(m, origin, m.camera.direction(p.x, p.y), ctx.time.end, &hit);
+      weights_along_ray(water(ctx), origin, m.camera.direction(p.x, p.y), ctx.time.end, &hit);
   if (hit.hit) {
-    const vec3 before(hit.point.x, m.waves.height(hit.point.x, hit.point.z, t_prev_), hit.point.z);
+    const vec3 before(hit.point.x, water(ctx).height(hit.point.x, hit.point.z, t_prev_),
+                      hit.point.z);
     double px, py;
     if (m.camera.project(before - origin, px, py)) *motion = p - vec2(px, py);
   }
@@ -73,14 +74,14 @@ RadianceWeights TaaMethod::sample_moving(const FrameContext& ctx, const vec2& p,
   const SceneModel& m = ctx.model;
   const vec3 dir = m.camera.direction(p.x, p.y);
   RayHit hit;
-  const RadianceWeights value = weights_along_ray(m, m.camera.position(), dir, ctx.time.end, &hit);
+  const WaterGeometry& g = water(ctx);
+  const RadianceWeights value = weights_along_ray(g, m.camera.position(), dir, ctx.time.end, &hit);
   double px, py;
   bool seen;
   if (hit.hit) {
     const vec3 before =
-        m.displaced()
-            ? vec3(hit.point.x, m.waves.height(hit.point.x, hit.point.z, t_prev_), hit.point.z)
-            : hit.point;
+        m.displaced() ? vec3(hit.point.x, g.height(hit.point.x, hit.point.z, t_prev_), hit.point.z)
+                      : hit.point;
     seen = prev_camera_.project(before - prev_camera_.position(), px, py);
   } else {
     seen = prev_camera_.project(dir, px, py);  // the sky: a direction

@@ -47,14 +47,14 @@
 
 #include <vector>
 
-#include "methods/fallback.h"
+#include "methods/host_method.h"
 #include "methods/method.h"
 
 namespace sg {
 
-// Fallback (methods/fallback.h): a blended value that is not finite is replaced by the
+// Fallback (methods/host_method.h): a blended value that is not finite is replaced by the
 // current sample and counted.
-class TaaMethod final : public Method, public FallbackCounter {
+class TaaMethod final : public Method, public HostMethod {
  public:
   // Throws sg::Error naming the flag for a bad option.
   explicit TaaMethod(const TaaOptions& options);

@@ -24,8 +24,8 @@
 #include "methods/taa_resolve.h"
 #include "metrics/metrics.h"
 #include "scene/camera_path.h"
-#include "scene/intersect.h"
 #include "shading/radiance.h"
+#include "shading/water_geometry.h"
 #include "testing/calm_water.h"
 #include "testing/path_tables.h"
 #include "testing/testing.h"
@@ -156,10 +156,11 @@ TEST(Taa, AlphaOneOutputsTheCurrentJitteredFrame) {
   int lit = 0;
   render_frames(m, taa, 5, 7, RenderSettings{}, [&](int f, const Image& img) {
     const vec2 jit = taa_jitter(f, 8);
+    const WaterGeometry water(m, frame_time(s, f));
     for (int j = 0; j < m.height(); ++j) {
       for (int i = 0; i < m.width(); ++i) {
         const double v =
-            grey_value(m, weights_along_ray(m, m.camera.position(),
+            grey_value(m, weights_along_ray(water, m.camera.position(),
                                             m.camera.direction(i + 0.5 + jit.x, j + 0.5 + jit.y),
                                             s.frame_time(f)));
         ASSERT_EQ(img.at(i, j), static_cast<float>(v)) << i << "," << j;
@@ -271,6 +272,7 @@ TEST(Taa, DisplacedMotionVectorsPointToWhereTheSurfacePointWasSeen) {
   taa.begin_frame(ctx);
   const vec2 jit = taa.jitter();
   const double t_prev = s.frame_time(f - 1);
+  const WaterGeometry water(m, ctx.time);
   int checked = 0, moved = 0;
   for (int j = 14; j < 36; j += 3) {
     for (int i = 2; i < 64; i += 7) {
@@ -279,12 +281,10 @@ TEST(Taa, DisplacedMotionVectorsPointToWhereTheSurfacePointWasSeen) {
       Image one(64, 36);
       taa.shade_tile(ctx, i, j, i + 1, j + 1, one);
       motion = taa.motion()[static_cast<size_t>(j) * 64 + i];
-      RayHit now = intersect_displaced(m.waves, m.camera.position(),
-                                       normalize(m.camera.direction(p.x, p.y)), ctx.time.end);
+      RayHit now = water.intersect(m.camera.position(), m.camera.direction(p.x, p.y), ctx.time.end);
       if (!now.hit) continue;
       const vec2 q = p - motion;
-      RayHit then = intersect_displaced(m.waves, m.camera.position(),
-                                        normalize(m.camera.direction(q.x, q.y)), t_prev);
+      RayHit then = water.intersect(m.camera.position(), m.camera.direction(q.x, q.y), t_prev);
       ASSERT_TRUE(then.hit);
       if (length(vec2(then.point.x - now.point.x, then.point.z - now.point.z)) < 1e-6) {
         ++checked;
@@ -337,6 +337,7 @@ TEST(Taa, MovingCameraMotionVectorsPointToWhereThePointWasSeenBefore) {
   const SceneModel m = frame_model(s, ft);
   const double t_prev = s.frame_time(f - 1);
   const CameraModel prev(camera_at(s.camera, t_prev), s.width, s.height);
+  const WaterGeometry geometry(m, ft);
   TaaMethod taa(TaaOptions{});
   FrameContext ctx{m, ft, 0};
   taa.begin_frame(ctx);
@@ -349,10 +350,9 @@ TEST(Taa, MovingCameraMotionVectorsPointToWhereThePointWasSeenBefore) {
       const vec2 q = p - taa.motion()[static_cast<size_t>(j) * 64 + i];
       ASSERT_GT(length(p - q), 0.3) << i << " " << j;  // everything moves
       const vec3 d = normalize(m.camera.direction(p.x, p.y));
-      const RayHit now = intersect_displaced(m.waves, m.camera.position(), d, ft.end);
+      const RayHit now = geometry.intersect(m.camera.position(), d, ft.end);
       if (now.hit) {
-        const RayHit then = intersect_displaced(m.waves, prev.position(),
-                                                normalize(prev.direction(q.x, q.y)), t_prev);
+        const RayHit then = geometry.intersect(prev.position(), prev.direction(q.x, q.y), t_prev);
         ASSERT_TRUE(then.hit);
         // A wave crest may hide the point from the previous camera (near the horizon).
         close += length(vec2(then.point.x - now.point.x, then.point.z - now.point.z)) < 1e-6;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "scene/footprint.h"
+#include "shading/water_geometry.h"
 
 namespace sg {
 
@@ -15,9 +15,10 @@ WaterRegions water_regions(const SceneModel& model, double t) {
   r.near.assign(n, 0);
   r.far.assign(n, 0);
   std::vector<std::pair<double, size_t>> seen;  // (distance, pixel index)
+  const WaterGeometry water(model, FrameTime{0, t, t});
   for (int j = 0; j < h; ++j) {
     for (int i = 0; i < w; ++i) {
-      const PixelFootprint f = pixel_footprint(model, i + 0.5, j + 0.5, t);
+      const PixelFootprint f = water.footprint(i + 0.5, j + 0.5, t);
       if (!f.hit) continue;
       const size_t k = static_cast<size_t>(j) * w + i;
       r.water[k] = 1;

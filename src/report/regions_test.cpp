@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "report/regions.h"
-#include "scene/footprint.h"
+#include "shading/water_geometry.h"
 #include "testing/testing.h"
 
 namespace sg {

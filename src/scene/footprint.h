@@ -7,11 +7,12 @@
 // On flat water the surface is the plane y = 0. On displaced water the point is the first
 // hit of the height field at time t and the differentials are transferred to its tangent
 // plane (the waves' local slope); their horizontal parts are what the aliasing
-// classification and the per-pixel NDF use.
+// classification and the per-pixel NDF use. The kernel computes it
+// (kernel/footprint.glsl); shading/water_geometry.h gives it to host code in world
+// coordinates.
 #pragma once
 
 #include "math/vec.h"
-#include "scene/model.h"
 
 namespace sg {
 
@@ -30,12 +31,5 @@ struct PixelFootprint {
   // The 2x2 map from image-plane offsets (px, py) to horizontal offsets (x, z).
   mat2 xz_jacobian() const { return mat2(vec2(dp_dpx.x, dp_dpx.z), vec2(dp_dpy.x, dp_dpy.z)); }
 };
-
-// The footprint of image-plane point (px, py) (a pixel centre is (i + 1/2, j + 1/2)).
-PixelFootprint pixel_footprint(const SceneModel& m, double px, double py, double t);
-
-// The footprint on the water at rest (the plane y = 0) whatever the geometry: where a
-// projected grid (Bruneton et al. 2010, Sec. 3.2) places the pixel before displacing it.
-PixelFootprint rest_plane_footprint(const SceneModel& m, double px, double py);
 
 }  // namespace sg

@@ -11,6 +11,39 @@
 namespace sg {
 namespace {
 
+// The wave buffer's sums after its n waves (kernel/waves.glsl): from each position q on,
+// the suffix's slope moments and squared amplitude, its amplitude, and the prefix's
+// amplitude, slope and curvature bounds, in double.
+template <class V4>
+void write_sums(std::span<const double> A, std::span<const double> a, std::span<const double> b,
+                int stride, std::vector<V4>& texels) {
+  using R = decltype(V4{}.x);
+  const int n = static_cast<int>(A.size());
+  const size_t base = static_cast<size_t>(n) * stride;
+  texels.resize(base);
+  texels.resize(base + 2 * static_cast<size_t>(n + 1), V4(0));
+  std::vector<double> pre_A(n + 1, 0.0), pre_Ak(n + 1, 0.0), pre_Ak2(n + 1, 0.0);
+  for (int q = 0; q < n; ++q) {
+    const double k = std::hypot(a[q], b[q]);
+    pre_A[q + 1] = pre_A[q] + A[q];
+    pre_Ak[q + 1] = pre_Ak[q] + A[q] * k;
+    pre_Ak2[q + 1] = pre_Ak2[q] + A[q] * k * k;
+  }
+  double sxx = 0, sxz = 0, szz = 0, sA2 = 0, sA = 0;
+  for (int q = n; q >= 0; --q) {
+    if (q < n) {
+      const double e = 0.5 * A[q] * A[q];
+      sxx += e * a[q] * a[q];
+      sxz += e * a[q] * b[q];
+      szz += e * b[q] * b[q];
+      sA2 += A[q] * A[q];
+      sA += A[q];
+    }
+    texels[base + 2 * q] = V4(R(sxx), R(sxz), R(szz), R(sA2));
+    texels[base + 2 * q + 1] = V4(R(sA), R(pre_A[q]), R(pre_Ak[q]), R(pre_Ak2[q]));
+  }
+}
+
 // x reduced to [-pi, pi] in double.
 double reduce_angle(double x) {
   return std::remainder(x, kTwoPi);
@@ -92,6 +125,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
                             ? CameraModel(camera_at(m.scene.camera, ft.end), m.width(), m.height())
                             : m.camera;
   fill_camera_keys(m.scene.camera, ft, c.position(), f.camera_keys);
+  out.origin = glm::dvec3(c.position().x, 0.0, c.position().z);
   f.camera.position = V3(0, R(c.position().y), 0);
   f.camera.forward = v3(c.forward());
   f.camera.right = v3(c.right());
@@ -168,32 +202,15 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
       out.rot_s[static_cast<size_t>(s) * np + q] = rs;
     }
   }
-  // The sums from each position on (kernel/waves.glsl): suffix moments and amplitude,
-  // prefix amplitude, slope and curvature, in double, in buffer order.
-  const size_t base = static_cast<size_t>(n) * stride;
-  out.texels.resize(base + 2 * static_cast<size_t>(n + 1), V4(0));
-  std::vector<double> pre_A(n + 1, 0.0), pre_Ak(n + 1, 0.0), pre_Ak2(n + 1, 0.0);
+  // The sums from each position on (kernel/waves.glsl), in double, in buffer order.
+  std::vector<double> sA(n), sa(n), sb(n);
   for (int q = 0; q < n; ++q) {
     const int i = out.order[q];
-    const double k = std::hypot(w.a[i], w.b[i]);
-    pre_A[q + 1] = pre_A[q] + w.A[i];
-    pre_Ak[q + 1] = pre_Ak[q] + w.A[i] * k;
-    pre_Ak2[q + 1] = pre_Ak2[q] + w.A[i] * k * k;
+    sA[q] = w.A[i];
+    sa[q] = w.a[i];
+    sb[q] = w.b[i];
   }
-  double sxx = 0, sxz = 0, szz = 0, sA2 = 0, sA = 0;
-  for (int q = n; q >= 0; --q) {
-    if (q < n) {
-      const int i = out.order[q];
-      const double e = 0.5 * w.A[i] * w.A[i];
-      sxx += e * w.a[i] * w.a[i];
-      sxz += e * w.a[i] * w.b[i];
-      szz += e * w.b[i] * w.b[i];
-      sA2 += w.A[i] * w.A[i];
-      sA += w.A[i];
-    }
-    out.texels[base + 2 * q] = V4(R(sxx), R(sxz), R(szz), R(sA2));
-    out.texels[base + 2 * q + 1] = V4(R(sA), R(pre_A[q]), R(pre_Ak[q]), R(pre_Ak2[q]));
-  }
+  write_sums(sA, sa, sb, stride, out.texels);
   // The cascades' fields after the sums (kernel/cascade_fields.glsl).
   if (fields) {
     f.cascade_count = static_cast<int>(m.scene.surface.cascades.size());
@@ -206,6 +223,11 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
 }
 
 }  // namespace
+
+void write_wave_sums(std::span<const double> A, std::span<const double> a,
+                     std::span<const double> b, int stride, std::vector<kd::vec4>& texels) {
+  write_sums(A, a, b, stride, texels);
+}
 
 kd::Light kernel_light(const LightModel& l) {
   kd::Light k;

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "kernel/kernel_double.h"
@@ -36,6 +37,9 @@ struct KernelInputs {
   Frame frame{};
   std::vector<Vec4> texels;  // the wave buffer (kernel/waves.glsl: layout)
   std::vector<int> order;    // file index of the wave at each position of the buffer
+  // The world point at the origin of the camera-relative coordinates: the camera's (x, z)
+  // at the display time (a moving camera's from its keys), y = 0.
+  glm::dvec3 origin{0.0};
   // The same waves as arrays (the CPU engine's vectorised sums): amplitude, wave vector,
   // phase at the display time, angular frequency, wavenumber, slope amplitude; rotations
   // [k][wave].
@@ -67,6 +71,12 @@ using KernelInputsF = KernelInputs<kf::Frame, kf::vec4>;
 inline int wave_stride(int segments) {
   return 2 + (segments + 1) / 2;
 }
+
+// The wave buffer's sums (kernel/waves.glsl) for its first n = A.size() waves, of amplitudes
+// A[q] and wave vectors (a[q], b[q]) in buffer order, each `stride` texels: `texels` is
+// cut to those waves' texels and the sums from each position on are written after them.
+void write_wave_sums(std::span<const double> A, std::span<const double> a,
+                     std::span<const double> b, int stride, std::vector<kd::vec4>& texels);
 
 // The kernel's light (kernel/interface.glsl) for a light model, in double.
 kd::Light kernel_light(const LightModel& l);

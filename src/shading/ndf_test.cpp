@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "math/rng.h"
-#include "scene/footprint.h"
 #include "shading/aliasing.h"
+#include "shading/water_geometry.h"
 #include "testing/testing.h"
 
 namespace sg {

@@ -1,7 +1,7 @@
 #include "shading/radiance.h"
 
-#include "scene/intersect.h"
 #include "shading/kernel_frame.h"
+#include "shading/water_geometry.h"
 
 namespace sg {
 
@@ -54,15 +54,14 @@ RadianceWeights combine_weights(const SceneModel& m, double F, double in_light, 
   return kd::combine_weights(radiance_frame(m), F, in_light, below, sky_y);
 }
 
-RadianceWeights weights_along_ray(const SceneModel& m, const vec3& origin, const vec3& dir,
+RadianceWeights weights_along_ray(const WaterGeometry& water, const vec3& origin, const vec3& dir,
                                   double t, RayHit* hit_out) {
+  const SceneModel& m = water.model();
   const vec3 d = normalize(dir);
-  RayHit hit =
-      m.displaced() ? intersect_displaced(m.waves, origin, d, t) : intersect_flat(origin, d);
+  const RayHit hit = water.intersect(origin, d, t);
   if (hit_out) *hit_out = hit;
   if (!hit.hit) return miss_weights(m, d);
-  const vec3 n = normal_from_gradient(m.waves.gradient(hit.point.x, hit.point.z, t));
-  return water_weights(m, n, -d);
+  return water_weights(m, normal_direction(water.gradient(hit.point.x, hit.point.z, t)), -d);
 }
 
 RadianceWeights miss_pixel_weights(const SceneModel& m, int i, int j) {

@@ -27,6 +27,7 @@
 namespace sg {
 
 struct RayHit;
+class WaterGeometry;
 
 // The formulas are the kernel's (kernel/radiance.glsl, kernel/light.glsl), called in double
 // (radiance.cpp) on the model's light, Fresnel mode and sky: these are the host's names
@@ -72,10 +73,11 @@ RadianceWeights combine_weights(const SceneModel& m, double F, double in_light, 
 // its disk (kernel/disk_coverage.glsl).
 RadianceWeights miss_pixel_weights(const SceneModel& m, int i, int j);
 
-// Weights along the camera ray from `origin` with direction `dir` (any length) at time t:
-// intersection (flat or displaced), normal, reflection, shading. When `hit` is given it
-// receives the intersection (for motion vectors; hit->s is along the unit direction).
-RadianceWeights weights_along_ray(const SceneModel& m, const vec3& origin, const vec3& dir,
+// Weights along the camera ray from `origin` with direction `dir` (any length) at time t
+// on the water of `water`'s model (shading/water_geometry.h): intersection (flat or
+// displaced), normal, reflection, shading. When `hit` is given it receives the
+// intersection (for motion vectors; hit->s is along the unit direction).
+RadianceWeights weights_along_ray(const WaterGeometry& water, const vec3& origin, const vec3& dir,
                                   double t, RayHit* hit = nullptr);
 
 }  // namespace sg

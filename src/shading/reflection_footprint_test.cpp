@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "shading/water_geometry.h"
 #include "testing/testing.h"
 
 namespace sg {

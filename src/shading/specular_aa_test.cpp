@@ -10,9 +10,8 @@
 #include <cmath>
 
 #include "math/rng.h"
-#include "scene/footprint.h"
-#include "scene/intersect.h"
 #include "scene/model.h"
+#include "shading/water_geometry.h"
 
 namespace sg {
 namespace {

@@ -13,9 +13,9 @@
 
 #include "math/rng.h"
 #include "ocean/ocean.h"
-#include "scene/footprint.h"
 #include "scene/model.h"
 #include "shading/ndf.h"
+#include "shading/water_geometry.h"
 #include "shading/wave_lod.h"
 
 namespace sg {

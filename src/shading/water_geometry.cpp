@@ -1,0 +1,155 @@
+#include "shading/water_geometry.h"
+
+#include <vector>
+
+#include "base/error.h"
+#include "kernel/cpu/wave_sums.h"
+#include "shading/kernel_frame.h"
+
+namespace sg {
+
+struct WaterGeometry::Inputs {
+  KernelInputsD in;
+};
+
+WaterGeometry::WaterGeometry() = default;
+WaterGeometry::~WaterGeometry() = default;
+WaterGeometry::WaterGeometry(WaterGeometry&&) noexcept = default;
+WaterGeometry& WaterGeometry::operator=(WaterGeometry&&) noexcept = default;
+
+WaterGeometry::WaterGeometry(const SceneModel& m, const FrameTime& ft)
+    : model_(&m), model_id_(m.id), time_(ft), in_(std::make_unique<Inputs>()) {
+  // One segment (no rotations are read: every time is a dt), seed 0 (no sampling), every
+  // wave in the intersection, the cascades as their sines.
+  build_kernel_inputs(m, ft, 1, 0, in_->in, 0.0, 1, false);
+}
+
+bool WaterGeometry::is_for(const SceneModel& m, const FrameTime& ft) const {
+  return in_ && model_ == &m && model_id_ == m.id && time_.frame == ft.frame &&
+         time_.start == ft.start && time_.end == ft.end;
+}
+
+namespace {
+
+// `origin`: the world point at the camera-relative coordinates' origin.
+RayHit to_world(const vec3& origin, const kd::RayHit& h) {
+  RayHit r;
+  r.hit = h.hit;
+  r.s = h.s;
+  r.point = h.hit ? vec3(h.point) + origin : vec3(0);
+  return r;
+}
+
+PixelFootprint to_world(const vec3& origin, const kd::Footprint& k) {
+  PixelFootprint f;
+  if (!k.hit) return f;
+  f.hit = true;
+  f.point = vec3(k.point) + origin;
+  f.view = k.view;
+  f.dp_dpx = k.dp_dpx;
+  f.dp_dpy = k.dp_dpy;
+  f.distance = k.distance;
+  f.at_camera = !(k.distance > 0);
+  return f;
+}
+
+}  // namespace
+
+RayHit WaterGeometry::intersect(const vec3& origin, const vec3& dir, double t) const {
+  return model_->displaced() ? intersect_displaced(origin, dir, t) : intersect_flat(origin, dir);
+}
+
+RayHit WaterGeometry::intersect_displaced(const vec3& origin, const vec3& dir, double t) const {
+  const double len = length(dir);
+  const kd::WaveBuffer wb = wave_buffer(in_->in);
+  kd::RayHit h =
+      kd::intersect_displaced(wb, in_->in.frame, origin - in_->in.origin, dir / len, t - time_.end);
+  h.s /= len;
+  return to_world(in_->in.origin, h);
+}
+
+RayHit WaterGeometry::intersect_filtered(std::span<const double> w, const vec3& origin,
+                                         const vec3& dir, double t) const {
+  const KernelInputsD& all = in_->in;
+  const int n = static_cast<int>(w.size());
+  if (n > all.frame.wave_count) {
+    throw Error("WaterGeometry::intersect_filtered: " + std::to_string(n) + " weights for " +
+                std::to_string(all.frame.wave_count) + " waves");
+  }
+  const int stride = all.frame.wave_stride;
+  // The texels and the arrays of the vectorised sums with amplitudes A w (the arrays
+  // padded with amplitude 0 to the lanes' multiple); the other arrays are the frame's.
+  const int padded =
+      (n + wave_simd::kLanePadding - 1) / wave_simd::kLanePadding * wave_simd::kLanePadding;
+  thread_local std::vector<kd::vec4> texels;
+  thread_local std::vector<double> A, a, b, slope;
+  texels.assign(all.texels.begin(), all.texels.begin() + static_cast<long>(n) * stride);
+  A.assign(padded, 0.0);
+  slope.assign(padded, 0.0);
+  a.resize(n);
+  b.resize(n);
+  double amplitude = 0, slope_sum = 0;
+  for (int q = 0; q < n; ++q) {
+    kd::vec4* tx = &texels[static_cast<size_t>(q) * stride];
+    tx[0].x *= w[q];  // A
+    tx[1].z *= w[q];  // A |k|
+    A[q] = tx[0].x;
+    slope[q] = tx[1].z;
+    a[q] = tx[0].y;
+    b[q] = tx[0].z;
+    amplitude += std::abs(A[q]);
+    slope_sum += std::abs(slope[q]);
+  }
+  write_wave_sums(std::span<const double>(A.data(), n), a, b, stride, texels);
+  kd::Frame f = all.frame;
+  f.wave_count = n;
+  f.amplitude_bound = amplitude;
+  f.slope_bound = slope_sum;
+  wave_simd::Arrays<double> arrays = all.arrays();
+  arrays.A = A.data();
+  arrays.slope = slope.data();
+  arrays.count = n;
+  const kd::WaveBuffer wb{texels.data(), static_cast<int>(texels.size()), arrays};
+  const double len = length(dir);
+  kd::RayHit h = kd::intersect_displaced(wb, f, origin - in_->in.origin, dir / len, t - time_.end);
+  h.s /= len;
+  return to_world(in_->in.origin, h);
+}
+
+double WaterGeometry::height(double x, double z, double t) const {
+  const vec3 p = vec3(x, 0, z) - in_->in.origin;
+  return kd::water_height(wave_buffer(in_->in), in_->in.frame, p.x, p.z, t - time_.end);
+}
+
+vec2 WaterGeometry::gradient(double x, double z, double t) const {
+  const vec3 p = vec3(x, 0, z) - in_->in.origin;
+  return kd::water_gradient(wave_buffer(in_->in), in_->in.frame, p.x, p.z, t - time_.end);
+}
+
+PixelFootprint WaterGeometry::footprint(double px, double py, double t) const {
+  return to_world(in_->in.origin, kd::pixel_footprint(wave_buffer(in_->in), in_->in.frame, px, py,
+                                                      t - time_.end, model_->displaced()));
+}
+
+PixelFootprint rest_plane_footprint(const SceneModel& m, double px, double py) {
+  kd::Frame f{};
+  f.camera = kernel_camera(m.camera);
+  const kd::WaveBuffer none{nullptr, 0, {}};
+  const vec3 origin(m.camera.position().x, 0.0, m.camera.position().z);
+  return to_world(origin, kd::pixel_footprint(none, f, px, py, 0.0, false));
+}
+
+PixelFootprint pixel_footprint(const SceneModel& m, double px, double py, double t) {
+  return WaterGeometry(m, FrameTime{0, t, t}).footprint(px, py, t);
+}
+
+RayHit intersect_flat(const vec3& origin, const vec3& dir) {
+  RayHit r;
+  const kd::RayHit h = kd::intersect_flat(origin, dir);
+  r.hit = h.hit;
+  r.s = h.s;
+  r.point = h.point;
+  return r;
+}
+
+}  // namespace sg
