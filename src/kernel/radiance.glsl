@@ -10,8 +10,11 @@
 //   sky(d) = horizon + (zenith - horizon) max(d.y, 0)^exponent.
 // A camera ray that hits no water sees the sky, or the light when it is visible.
 
-SG_FN vec3 reflect_view(vec3 n, vec3 v) {
-  return 2.0 * dot(n, v) * n - v;
+// The mirror reflection of the unit view v about a normal along `nm` of any length: with
+// n = nm / |nm|, 2 (n . v) n - v = 2 (nm . v) / (nm . nm) nm - v, which needs no square
+// root and is unit to rounding. Every reflection the kernel and the host take is this one.
+SG_FN vec3 reflect_view(vec3 nm, vec3 v) {
+  return (2.0 * dot(nm, v) / dot(nm, nm)) * nm - v;
 }
 
 // Schlick's approximation; n_dot_v is clamped to [0, 1].
@@ -61,17 +64,13 @@ SG_FN vec4 miss_weights(IN(Frame) f, vec3 dir) {
   return sky_weights(f, dir.y);
 }
 
-// The water seen from unit direction v with a normal along `nm` of any length: with
-// n = nm / |nm| the reflection 2 (n . v) n - v equals 2 (nm . v) / (nm . nm) nm - v,
-// which needs no square root and is unit to rounding.
+// The water seen from unit direction v with a normal along `nm` of any length.
 SG_FN vec4 water_weights(IN(Frame) f, vec3 nm, vec3 v) {
-  real nv = dot(nm, v);
-  real nn = dot(nm, nm);
-  vec3 r = (2.0 * nv / nn) * nm - v;
+  vec3 r = reflect_view(nm, v);
   if (r.y <= 0.0) return sea_weights();
   vec4 above = light_contains(f.light, r) ? light_weights() : sky_weights(f, r.y);
   if (f.fresnel == 0) return above;
-  real F = fresnel_schlick(nv * inversesqrt(nn));
+  real F = fresnel_schlick(dot(nm, v) * inversesqrt(dot(nm, nm)));
   return F * above + (1.0 - F) * sea_weights();
 }
 

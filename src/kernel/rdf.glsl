@@ -8,8 +8,7 @@
 // covariance Sigma maps to a Gaussian RDF of covariance J_c Sigma J_c^T (Eq. 16).
 
 SG_FN vec3 reflect_about_ndf_point(vec2 n, vec3 v) {
-  vec3 m = vec3(n.x, 1.0, n.y);
-  return (2.0 * dot(m, v) / dot(m, m)) * m - v;
+  return reflect_view(vec3(n.x, 1.0, n.y), v);
 }
 
 // d(light-plane point) / d(direction r): 3 columns of 2 rows, for r of any length:
@@ -44,7 +43,7 @@ SG_FN mat3 reflection_jacobian_view(vec3 m) {
 // J_c = dPhi/dn at n (Eq. 12); columns dPhi/dn_x and dPhi/dn_z.
 SG_FN mat2 ndf_to_light_plane_jacobian(vec2 n, vec3 v, IN(Light) l) {
   vec3 m = vec3(n.x, 1.0, n.y);
-  vec3 r = (2.0 * dot(m, v) / dot(m, m)) * m - v;
+  vec3 r = reflect_view(m, v);
   mat3x2 JP = light_plane_jacobian(r, l) * reflection_jacobian_normal(m, v);
   return mat2(JP[0], JP[2]);
 }

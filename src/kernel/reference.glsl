@@ -227,7 +227,7 @@ SG_FN bool reference_pixel_busy(IN(WaveBuffer) waves, IN(Frame) f, real margin, 
     vec3 previous = vec3(0.0);
     for (int k = 0; k <= f.segments; ++k) {
       vec3 m = normal_direction(p.g[k]);
-      vec3 r = (2.0 * dot(m, -d) / dot(m, m)) * m + d;
+      vec3 r = reflect_view(m, -d);
       dmin = min(dmin, length(r - f.light.L));
       ymin = min(ymin, r.y);
       if (k > 0) step = max(step, length(r - previous));

@@ -37,7 +37,7 @@ SG_FN ReflectionFootprint reflection_footprint(IN(Light) l, IN(Footprint) fp, ve
   res.D = mat2(0.0);
   vec3 nm = vec3(-g.x + shift.x, 1.0, -g.y + shift.y);
   vec3 v = fp.view;
-  vec3 r = (2.0 * dot(nm, v) / dot(nm, nm)) * nm - v;
+  vec3 r = reflect_view(nm, v);
   if (dot(r, l.L) <= 0.0) return res;
   res.valid = true;
   res.P = light_to_plane(l, r);

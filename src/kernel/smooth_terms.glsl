@@ -37,10 +37,9 @@ const real kGh3 = 1.7320508075688772;  // sqrt(3); weights 1/6, 2/3, 1/6
 // matter, and without a gradient). Both shares are summed, not one and 1 minus it: each
 // keeps its digits where the other is near 1.
 SG_FN vec3 smooth_integrand(IN(Frame) f, vec2 s, vec3 v) {
-  real mm = 1.0 + dot(s, s);
-  real mv = s.x * v.x + s.y * v.z + v.y;
-  real F = f.fresnel == 0 ? 1.0 : fresnel_schlick(mv * inversesqrt(mm));
-  real ry = 2.0 * mv / mm - v.y;
+  vec3 m = vec3(s.x, 1.0, s.y);
+  real F = f.fresnel == 0 ? 1.0 : fresnel_schlick(dot(m, v) * inversesqrt(dot(m, m)));
+  real ry = reflect_view(m, v).y;
   vec2 zh = vec2(0.0, 1.0);
   if (f.sky_gradient) zh = sky_shares(f, ry);
   return vec3(F, F * zh.x, F * zh.y);

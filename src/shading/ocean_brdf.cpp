@@ -116,7 +116,7 @@ double below_horizon_fraction(const vec3& v, const vec3& n, const vec3& tx, cons
   bool finite = true;
   auto U = [&](const vec2& zeta) {
     const vec3 f = normalize(-zeta.x * tx - zeta.y * ty + n);
-    const vec3 r = 2 * dot(f, v) * f - v;
+    const vec3 r = reflect_view(f, v);
     if (1 + r.y < 1e-9) finite = false;  // straight down: the map's pole
     return vec2(r.x, r.z) / std::max(1 + r.y, 1e-9);
   };

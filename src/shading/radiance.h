@@ -36,8 +36,9 @@ class WaterGeometry;
 // Schlick's R0 for water (kernel/constants.glsl).
 extern const double kSchlickR0;
 
-// r = 2 (n . v) n - v
-vec3 reflect_view(const vec3& n, const vec3& v);
+// The mirror reflection 2 (n . v) n - v of the unit view v about the normal n = nm / |nm|,
+// for `nm` of any length.
+vec3 reflect_view(const vec3& nm, const vec3& v);
 
 // Schlick's approximation (scene spec 4). n_dot_v is clamped to [0, 1].
 double fresnel_schlick(double n_dot_v);
