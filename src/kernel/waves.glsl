@@ -21,10 +21,48 @@
 //                  slope and curvature bounds (its slab, and the bounds on the first and
 //                  second derivatives of its height along a ray, intersect.glsl).
 // The host sums in double; entry N is the empty suffix (zeros and the whole prefix).
+//
+// The layout is written once, here: the host packs the texels with the functions below
+// (shading/kernel_frame.cpp) and the kernel reads them back at the same offsets.
+
+// Texels per wave for K path segments.
+SG_FN int wave_stride_for(int segments) {
+  return 2 + (segments + 1) / 2;
+}
+// The first texel of wave i, of the rotation of its instant k, of the sums' entry i.
+SG_FN int wave_texel_index(int stride, int i) {
+  return i * stride;
+}
+SG_FN int wave_rotation_index(int stride, int i, int k) {
+  return i * stride + 2 + k / 2;
+}
+SG_FN int wave_sums_index(int wave_count, int stride, int i) {
+  return wave_count * stride + 2 * i;
+}
+// A wave's two texels.
+SG_FN vec4 wave_pack_phase(IN(Wave) w) {
+  return vec4(w.A, w.a, w.b, w.theta0);
+}
+SG_FN vec4 wave_pack_motion(IN(Wave) w) {
+  return vec4(w.c, w.k, w.slope, 0.0);
+}
+// Texel t with instant k's rotation (cos, sin) = r put in its half.
+SG_FN vec4 wave_pack_rotation(vec4 t, int k, vec2 r) {
+  return (k % 2) == 0 ? vec4(r.x, r.y, t.z, t.w) : vec4(t.x, t.y, r.x, r.y);
+}
+// The sums' entry: the suffix's slope covariance and squared amplitude; the suffix's
+// amplitude and the prefix's amplitude, slope and curvature bounds.
+SG_FN vec4 wave_pack_suffix(vec3 cov, real amplitude2) {
+  return vec4(cov, amplitude2);
+}
+SG_FN vec4 wave_pack_bounds(real suffix_amplitude, vec3 prefix) {
+  return vec4(suffix_amplitude, prefix);
+}
+
 SG_FN Wave wave_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
   SG_COUNT(waves, 1);
-  vec4 t0 = wave_texel(waves, i * f.wave_stride);
-  vec4 t1 = wave_texel(waves, i * f.wave_stride + 1);
+  vec4 t0 = wave_texel(waves, wave_texel_index(f.wave_stride, i));
+  vec4 t1 = wave_texel(waves, wave_texel_index(f.wave_stride, i) + 1);
   Wave w;
   w.A = t0.x;
   w.a = t0.y;
@@ -39,7 +77,7 @@ SG_FN Wave wave_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
 // (cos, sin) of c (end - t_k): the rotation from the display time back to instant k < K,
 // for waves `stride` texels apart (Frame.wave_stride).
 SG_FN vec2 wave_rotation_of(IN(WaveBuffer) waves, int stride, int i, int k) {
-  vec4 t = wave_texel(waves, i * stride + 2 + k / 2);
+  vec4 t = wave_texel(waves, wave_rotation_index(stride, i, k));
   return (k % 2) == 0 ? vec2(t.x, t.y) : vec2(t.z, t.w);
 }
 SG_FN vec2 wave_rotation(IN(WaveBuffer) waves, IN(Frame) f, int i, int k) {
@@ -53,10 +91,10 @@ SG_FN vec2 wave_instant_cos_sin(IN(WaveBuffer) waves, IN(Frame) f, int i, int k,
 
 // The sums of entry i (0 <= i <= N) of the table above.
 SG_FN vec4 wave_suffix_moments(IN(WaveBuffer) waves, IN(Frame) f, int i) {
-  return wave_texel(waves, f.wave_count * f.wave_stride + 2 * i);
+  return wave_texel(waves, wave_sums_index(f.wave_count, f.wave_stride, i));
 }
 SG_FN vec4 wave_bounds_at(IN(WaveBuffer) waves, IN(Frame) f, int i) {
-  return wave_texel(waves, f.wave_count * f.wave_stride + 2 * i + 1);
+  return wave_texel(waves, wave_sums_index(f.wave_count, f.wave_stride, i) + 1);
 }
 
 // The first position whose wavenumber is at least `k` (N when none is): a binary search
@@ -66,7 +104,7 @@ SG_FN int first_wave_from(IN(WaveBuffer) waves, IN(Frame) f, real k) {
   int hi = f.wave_count;
   while (lo < hi) {
     int mid = (lo + hi) / 2;
-    if (wave_texel(waves, mid * f.wave_stride + 1).y < k) {
+    if (wave_texel(waves, wave_texel_index(f.wave_stride, mid) + 1).y < k) {
       lo = mid + 1;
     } else {
       hi = mid;

@@ -17,11 +17,10 @@ namespace {
 template <class V4>
 void write_sums(std::span<const double> A, std::span<const double> a, std::span<const double> b,
                 int stride, std::vector<V4>& texels) {
-  using R = decltype(V4{}.x);
   const int n = static_cast<int>(A.size());
-  const size_t base = static_cast<size_t>(n) * stride;
+  const size_t base = static_cast<size_t>(kd::wave_sums_index(n, stride, 0));
   texels.resize(base);
-  texels.resize(base + 2 * static_cast<size_t>(n + 1), V4(0));
+  texels.resize(static_cast<size_t>(kd::wave_sums_index(n, stride, n + 1)), V4(0));
   std::vector<double> pre_A(n + 1, 0.0), pre_Ak(n + 1, 0.0), pre_Ak2(n + 1, 0.0);
   for (int q = 0; q < n; ++q) {
     const double k = std::hypot(a[q], b[q]);
@@ -39,8 +38,9 @@ void write_sums(std::span<const double> A, std::span<const double> a, std::span<
       sA2 += A[q] * A[q];
       sA += A[q];
     }
-    texels[base + 2 * q] = V4(R(sxx), R(sxz), R(szz), R(sA2));
-    texels[base + 2 * q + 1] = V4(R(sA), R(pre_A[q]), R(pre_Ak[q]), R(pre_Ak2[q]));
+    const size_t e = static_cast<size_t>(kd::wave_sums_index(n, stride, q));
+    texels[e] = V4(kd::wave_pack_suffix(kd::vec3(sxx, sxz, szz), sA2));
+    texels[e + 1] = V4(kd::wave_pack_bounds(sA, kd::vec3(pre_A[q], pre_Ak[q], pre_Ak2[q])));
   }
 }
 
@@ -162,7 +162,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
     return std::hypot(w.a[p], w.b[p]) < std::hypot(w.a[q], w.b[q]);
   });
   const int stride = f.wave_stride;
-  out.texels.assign(static_cast<size_t>(n) * stride, V4(0));
+  out.texels.assign(static_cast<size_t>(kd::wave_texel_index(stride, n)), V4(0));
   // The arrays are padded with waves of amplitude 0 to a multiple of the widest vector.
   const int lanes = wave_simd::kLanePadding;
   const int np = (n + lanes - 1) / lanes * lanes;
@@ -176,28 +176,30 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
     const double k = std::hypot(w.a[i], w.b[i]);
     const double theta0 =
         reduce_angle(w.a[i] * xc + w.b[i] * zc + reduce_angle(w.c[i] * t) + reduce_angle(w.phi[i]));
-    V4* tx = &out.texels[static_cast<size_t>(q) * stride];
-    tx[0] = V4(R(w.A[i]), R(w.a[i]), R(w.b[i]), R(theta0));
-    tx[1] = V4(R(w.c[i]), R(k), R(w.A[i] * k), 0);
-    out.A[q] = tx[0].x;
-    out.a[q] = tx[0].y;
-    out.b[q] = tx[0].z;
-    out.theta0[q] = tx[0].w;
-    out.c[q] = tx[1].x;
-    out.k[q] = tx[1].y;
-    out.slope[q] = tx[1].z;
+    // The wave in the precision of the frame, packed by the kernel's layout (waves.glsl).
+    kd::Wave wave;
+    wave.A = R(w.A[i]);
+    wave.a = R(w.a[i]);
+    wave.b = R(w.b[i]);
+    wave.theta0 = R(theta0);
+    wave.c = R(w.c[i]);
+    wave.k = R(k);
+    wave.slope = R(w.A[i] * k);
+    out.texels[kd::wave_texel_index(stride, q)] = V4(kd::wave_pack_phase(wave));
+    out.texels[kd::wave_texel_index(stride, q) + 1] = V4(kd::wave_pack_motion(wave));
+    out.A[q] = R(wave.A);
+    out.a[q] = R(wave.a);
+    out.b[q] = R(wave.b);
+    out.theta0[q] = R(wave.theta0);
+    out.c[q] = R(wave.c);
+    out.k[q] = R(wave.k);
+    out.slope[q] = R(wave.slope);
     for (int s = 0; s < segments; ++s) {
       const double delta =
           reduce_angle(w.c[i] * (ft.duration() / windows * (segments - s) / segments));
-      V4& r = tx[2 + s / 2];
       const R rc = R(std::cos(delta)), rs = R(std::sin(delta));
-      if (s % 2 == 0) {
-        r.x = rc;
-        r.y = rs;
-      } else {
-        r.z = rc;
-        r.w = rs;
-      }
+      V4& r = out.texels[kd::wave_rotation_index(stride, q, s)];
+      r = V4(kd::wave_pack_rotation(kd::vec4(r), s, kd::vec2(rc, rs)));
       out.rot_c[static_cast<size_t>(s) * np + q] = rc;
       out.rot_s[static_cast<size_t>(s) * np + q] = rs;
     }

@@ -65,11 +65,9 @@ struct KernelInputs {
 using KernelInputsD = KernelInputs<kd::Frame, kd::vec4>;
 using KernelInputsF = KernelInputs<kf::Frame, kf::vec4>;
 
-// Texels per wave for K path segments: (A, a, b, theta0), (c, |k|, A |k|, 0), then the
-// rotations two per texel. The buffer holds wave_count * stride texels of waves, then
-// 2 (wave_count + 1) of sums (kernel/waves.glsl).
+// Texels per wave for K path segments (kernel/waves.glsl, wave_stride_for: the layout).
 inline int wave_stride(int segments) {
-  return 2 + (segments + 1) / 2;
+  return kd::wave_stride_for(segments);
 }
 
 // The wave buffer's sums (kernel/waves.glsl) for its first n = A.size() waves, of amplitudes

@@ -83,20 +83,23 @@ RayHit WaterGeometry::intersect_filtered(std::span<const double> w, const vec3& 
       (n + wave_simd::kLanePadding - 1) / wave_simd::kLanePadding * wave_simd::kLanePadding;
   thread_local std::vector<kd::vec4> texels;
   thread_local std::vector<double> A, a, b, slope;
-  texels.assign(all.texels.begin(), all.texels.begin() + static_cast<long>(n) * stride);
+  texels.assign(all.texels.begin(), all.texels.begin() + kd::wave_texel_index(stride, n));
+  const kd::WaveBuffer frame_waves = wave_buffer(all, false);
   A.assign(padded, 0.0);
   slope.assign(padded, 0.0);
   a.resize(n);
   b.resize(n);
   double amplitude = 0, slope_sum = 0;
   for (int q = 0; q < n; ++q) {
-    kd::vec4* tx = &texels[static_cast<size_t>(q) * stride];
-    tx[0].x *= w[q];  // A
-    tx[1].z *= w[q];  // A |k|
-    A[q] = tx[0].x;
-    slope[q] = tx[1].z;
-    a[q] = tx[0].y;
-    b[q] = tx[0].z;
+    kd::Wave wave = kd::wave_at(frame_waves, all.frame, q);
+    wave.A *= w[q];
+    wave.slope *= w[q];
+    texels[kd::wave_texel_index(stride, q)] = kd::wave_pack_phase(wave);
+    texels[kd::wave_texel_index(stride, q) + 1] = kd::wave_pack_motion(wave);
+    A[q] = wave.A;
+    slope[q] = wave.slope;
+    a[q] = wave.a;
+    b[q] = wave.b;
     amplitude += std::abs(A[q]);
     slope_sum += std::abs(slope[q]);
   }
