@@ -66,7 +66,7 @@ struct StaaWavePixel {
 SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, IN(WaveBuffer) waves, int i,
                          IN(Wave) w, real A, real s, real c) {
   vec2 k = vec2(w.a, w.b);
-  vec3 kk = vec3(k.x * k.x, k.x * k.y, k.y * k.y);
+  vec3 kk = wave_curvature_of(w);
   if (inst.moving) {
     path_gradients_add_moving(sums.path, inst, w, A, c);
     sums.hess[inst.segments] -= (A * s) * kk;

@@ -76,6 +76,17 @@ SG_FN vec2 wave_height_slope_of(IN(Wave) w, real x, real z, real dt, real ux, re
   return w.A * vec2(sin(th), cos(th) * (w.a * ux + w.b * uz));
 }
 
+// One wave's curvature factors (a^2, a b, b^2): its Hessian (h_xx, h_xz, h_zz) is
+// -A sin(theta) times them.
+SG_FN vec3 wave_curvature_of(IN(Wave) w) {
+  return vec3(w.a * w.a, w.a * w.b, w.b * w.b);
+}
+
+// One wave's Hessian (h_xx, h_xz, h_zz) = -A sin(theta) (a^2, a b, b^2).
+SG_FN vec3 wave_hessian_of(IN(Wave) w, real x, real z, real dt) {
+  return -(w.A * sin(wave_phase(w, x, z, dt))) * wave_curvature_of(w);
+}
+
 // One wave's gradient (dh/dx, dh/dz) = A cos(theta) (a, b).
 SG_FN vec2 wave_gradient_of(IN(Wave) w, real x, real z, real dt) {
   real k = w.A * cos(wave_phase(w, x, z, dt));

@@ -179,6 +179,15 @@ SG_FN vec2 wave_sum_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, 
   return g;
 }
 
+// (h_xx, h_xz, h_zz) summed over the waves in position order: the host's baselines at a
+// point (`staa` sums its Hessians in its own pass over the waves, staa_waves.glsl).
+SG_FN vec3 water_hessian(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt) {
+  vec3 h = vec3(0.0);
+  for (int i = 0; i < f.wave_count; ++i)
+    h += wave_hessian_of(wave_at(waves, f, i), x, z, dt);
+  return h;
+}
+
 #ifdef SG_CPU_WAVE_SUMS
 real water_height(IN(WaveBuffer) waves, IN(Frame) f, real x, real z, real dt);
 real water_height_first(IN(WaveBuffer) waves, IN(Frame) f, int n, real x, real z, real dt);

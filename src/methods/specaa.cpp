@@ -33,8 +33,9 @@ SpecaaSample specaa_sample(const WaterGeometry& water, double px, double py, dou
   return s;
 }
 
-void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, double t, vec2& ddx,
-                                 vec2& ddy, const HostCascades* cascades) {
+void specaa_analytic_derivatives(const WaterGeometry& water, const SpecaaSample& s, double t,
+                                 vec2& ddx, vec2& ddy, const HostCascades* cascades) {
+  const SceneModel& m = water.model();
   const vec3& P = s.footprint.point;
   Hessian H;
   if (cascades != nullptr && cascades->active()) {
@@ -42,7 +43,7 @@ void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, dou
     const Hessian c = cascades->hessian(P);
     H = Hessian{H.xx + c.xx, H.xz + c.xz, H.zz + c.zz};
   } else {
-    H = m.waves.hessian(P.x, P.z, t);
+    H = water.hessian(P.x, P.z, t);
   }
   ddx = projected_half_vector_derivative(m.camera.position(), P, s.g, H, s.footprint.dp_dpx,
                                          m.light.L);
@@ -86,7 +87,7 @@ RadianceWeights SpecaaMethod::shade_pixel(const FrameContext& ctx, int i, int j,
     ddx = (i & 1) ? own.h_perp - nx.h_perp : nx.h_perp - own.h_perp;
     ddy = (j & 1) ? own.h_perp - ny.h_perp : ny.h_perp - own.h_perp;
   } else {
-    specaa_analytic_derivatives(m, own, ctx.time.end, ddx, ddy, &cascades_);
+    specaa_analytic_derivatives(water(ctx), own, ctx.time.end, ddx, ddy, &cascades_);
   }
   return finite_or_fallback(specaa_weights(m, own, ddx, ddy, options_), ctx, i, j);
 }

@@ -59,8 +59,8 @@ SpecaaSample specaa_sample(const WaterGeometry& water, double px, double py, dou
                            const HostCascades* cascades = nullptr);
 
 // The analytic derivatives (dh_perp/dpx, dh_perp/dpy) at a sample.
-void specaa_analytic_derivatives(const SceneModel& m, const SpecaaSample& s, double t, vec2& ddx,
-                                 vec2& ddy, const HostCascades* cascades = nullptr);
+void specaa_analytic_derivatives(const WaterGeometry& water, const SpecaaSample& s, double t,
+                                 vec2& ddx, vec2& ddy, const HostCascades* cascades = nullptr);
 
 // The pixel value for a centre sample and its derivatives.
 RadianceWeights specaa_weights(const SceneModel& m, const SpecaaSample& s, const vec2& ddx,

@@ -43,8 +43,8 @@ double quad_vs_analytic(const SceneModel& m, double t, int i0, int j0, int w, in
       const SpecaaSample my = specaa_sample(water, i + 0.5, j + 1.0, t);
       EXPECT_TRUE(a.hit && bx.hit && by.hit);
       vec2 ddx, ddy, unused;
-      specaa_analytic_derivatives(m, mx, t, ddx, unused);
-      specaa_analytic_derivatives(m, my, t, unused, ddy);
+      specaa_analytic_derivatives(water, mx, t, ddx, unused);
+      specaa_analytic_derivatives(water, my, t, unused, ddy);
       if (!smooth(a, mx, bx, true) || !smooth(a, my, by, false)) {
         ++jumps;
         continue;
@@ -92,7 +92,7 @@ TEST(Specaa, AnalyticDerivativesMatchSmallStepDifferences) {
     for (int i = 10; i < 640; i += 61) {
       const SpecaaSample c = specaa_sample(water, i + 0.5, j + 0.5, t);
       vec2 ddx, ddy;
-      specaa_analytic_derivatives(m, c, t, ddx, ddy);
+      specaa_analytic_derivatives(water, c, t, ddx, ddy);
       const vec2 fx = (specaa_sample(water, i + 0.5 + e, j + 0.5, t).h_perp -
                        specaa_sample(water, i + 0.5 - e, j + 0.5, t).h_perp) /
                       (2 * e);
@@ -188,7 +188,7 @@ TEST(Specaa, ValueIsTheLobesMassInTheLightDisk) {
   s.light.direction = normalize(rc + 0.5 * m0.light.radius * normalize(cross(rc, vec3(0, 1, 0))));
   const SceneModel m(s);
   vec2 ddx, ddy;
-  specaa_analytic_derivatives(m0, best, t, ddx, ddy);
+  specaa_analytic_derivatives(water, best, t, ddx, ddy);
   for (KernelShape shape : {KernelShape::rect, KernelShape::full}) {
     SpecaaOptions o;
     o.kernel = shape;

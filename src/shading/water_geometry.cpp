@@ -129,6 +129,13 @@ vec2 WaterGeometry::gradient(double x, double z, double t) const {
   return kd::water_gradient(wave_buffer(in_->in), in_->in.frame, p.x, p.z, t - time_.end);
 }
 
+Hessian WaterGeometry::hessian(double x, double z, double t) const {
+  const vec3 p = vec3(x, 0, z) - in_->in.origin;
+  const kd::vec3 h =
+      kd::water_hessian(wave_buffer(in_->in), in_->in.frame, p.x, p.z, t - time_.end);
+  return Hessian{h.x, h.y, h.z};
+}
+
 PixelFootprint WaterGeometry::footprint(double px, double py, double t) const {
   return to_world(in_->in.origin, kd::pixel_footprint(wave_buffer(in_->in), in_->in.frame, px, py,
                                                       t - time_.end, model_->displaced()));

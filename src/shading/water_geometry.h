@@ -57,6 +57,8 @@ class WaterGeometry {
   double height(double x, double z, double t) const;
   // (dh/dx, dh/dz)
   vec2 gradient(double x, double z, double t) const;
+  // (h_xx, h_xz, h_zz)
+  Hessian hessian(double x, double z, double t) const;
 
   // The footprint of image-plane point (px, py) at time t (scene/footprint.h).
   PixelFootprint footprint(double px, double py, double t) const;

@@ -177,7 +177,7 @@ TEST(WaterGeometry, FilteredSurfaceIsTheWeightedWaves) {
                Error);
 }
 
-TEST(WaterGeometry, HeightAndGradientAreTheWaves) {
+TEST(WaterGeometry, HeightGradientAndHessianAreTheWaves) {
   auto waves = testing::project_scene("medium").surface.waves;
   const Water water(waves);
   Pcg32 rng(7, 1);
@@ -188,6 +188,10 @@ TEST(WaterGeometry, HeightAndGradientAreTheWaves) {
     const vec2 a = water.g.gradient(x, z, t), b = water.m.waves.gradient(x, z, t);
     EXPECT_NEAR(a.x, b.x, 1e-12);
     EXPECT_NEAR(a.y, b.y, 1e-12);
+    const Hessian ha = water.g.hessian(x, z, t), hb = water.m.waves.hessian(x, z, t);
+    EXPECT_NEAR(ha.xx, hb.xx, 1e-12);
+    EXPECT_NEAR(ha.xz, hb.xz, 1e-12);
+    EXPECT_NEAR(ha.zz, hb.zz, 1e-12);
   }
 }
 
