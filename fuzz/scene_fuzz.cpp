@@ -3,8 +3,9 @@
 // loader's promises hold:
 //  - the canonical JSON of the scene loads again, to the same canonical JSON;
 //  - its models (camera frame, light frame, wave bounds) are finite;
-//  - a few camera rays meet the flat and the displaced water in bounded time (the march's
-//    step budget, scene/intersect.h) at finite points with finite normals.
+//  - a few camera rays meet the flat and the displaced water in bounded time (the kernel's
+//    march and its step budget, kernel/intersect.glsl, through shading/water_geometry.h)
+//    at finite points with finite normals.
 // Anything else (another exception, a crash, a sanitizer report, a NaN, a slow unit) is a
 // finding: libFuzzer writes the input to the artifact folder.
 #include <cmath>
@@ -14,9 +15,9 @@
 #include <string>
 
 #include "base/error.h"
-#include "scene/intersect.h"
 #include "scene/model.h"
 #include "scene/scene.h"
+#include "shading/water_geometry.h"
 
 namespace {
 
@@ -60,18 +61,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
           "light frame not finite");
   require(std::isfinite(m.waves.amplitude_bound()) && std::isfinite(m.waves.slope_bound()),
           "wave bounds not finite");
-  const double t = s.frame_time(s.animation.frames - 1);
+  const sg::FrameTime ft = sg::frame_time(s, s.animation.frames - 1);
+  const double t = ft.end;
   require(std::isfinite(t) && std::isfinite(s.shutter_start(0)), "frame times not finite");
+  const sg::WaterGeometry water(m, ft);
   const double W = s.width, H = s.height;
   for (const sg::vec2 p : {sg::vec2(W / 2, H / 2), sg::vec2(0, H), sg::vec2(W, 0)}) {
     const sg::vec3 d = m.camera.direction(p.x, p.y);
     require(finite(d), "camera ray not finite");
     const sg::vec3 o = m.camera.position();
-    for (const sg::RayHit& h :
-         {sg::intersect_flat(o, d), sg::intersect_displaced(m.waves, o, sg::normalize(d), t)}) {
+    for (const sg::RayHit& h : {sg::intersect_flat(o, d), water.intersect_displaced(o, d, t)}) {
       if (!h.hit) continue;
       require(finite(h.point), "hit point not finite");
-      const sg::vec2 g = m.waves.gradient(h.point.x, h.point.z, t);
+      const sg::vec2 g = water.gradient(h.point.x, h.point.z, t);
       require(finite(sg::normal_from_gradient(g)), "normal not finite");
     }
   }
