@@ -17,35 +17,27 @@ CameraModel::CameraModel(const CameraDesc& desc, int width, int height)
   half_w_ = half_h_ * width / height;
 }
 
-namespace {
-
-// The kernel's camera (kernel/interface.glsl) with this basis, half-extents and size; its
-// position is not read by the functions below.
-kd::Camera kernel_rays(const vec3& forward, const vec3& right, const vec3& up, double half_w,
-                       double half_h, int width, int height) {
+kd::Camera CameraModel::kernel_camera() const {
   kd::Camera k;
-  k.position = vec3(0);
-  k.forward = forward;
-  k.right = right;
-  k.up = up;
-  k.half_w = half_w;
-  k.half_h = half_h;
-  k.width = width;
-  k.height = height;
+  k.position = vec3(0, position().y, 0);
+  k.forward = forward_;
+  k.right = right_;
+  k.up = up_;
+  k.half_w = half_w_;
+  k.half_h = half_h_;
+  k.width = width_;
+  k.height = height_;
   return k;
 }
 
-}  // namespace
-
 vec3 CameraModel::direction(double px, double py) const {
-  return kd::camera_direction(kernel_rays(forward_, right_, up_, half_w_, half_h_, width_, height_),
-                              px, py);
+  return kd::camera_direction(kernel_camera(), px, py);
 }
 vec3 CameraModel::ddir_dpx() const {
-  return kd::camera_ddir_dpx(kernel_rays(forward_, right_, up_, half_w_, half_h_, width_, height_));
+  return kd::camera_ddir_dpx(kernel_camera());
 }
 vec3 CameraModel::ddir_dpy() const {
-  return kd::camera_ddir_dpy(kernel_rays(forward_, right_, up_, half_w_, half_h_, width_, height_));
+  return kd::camera_ddir_dpy(kernel_camera());
 }
 
 vec3 transfer_differential(const vec3& d, double s, const vec3& dd, const vec3& m) {

@@ -14,6 +14,10 @@
 
 namespace sg {
 
+namespace kd {
+struct Camera;  // kernel/interface.glsl, in double (kernel/kernel_double.h)
+}
+
 class CameraModel {
  public:
   CameraModel() = default;
@@ -26,6 +30,9 @@ class CameraModel {
   // The (unnormalised) direction through image-plane point (px, py), pixel units, and
   // d direction / d px and d direction / d py: the kernel's (kernel/camera.glsl).
   vec3 direction(double px, double py) const;
+  // The kernel's camera with this basis, half-extents and size, camera-relative (its
+  // position (0, y, 0), as in the kernel's frames).
+  kd::Camera kernel_camera() const;
   vec3 ddir_dpx() const;
   vec3 ddir_dpy() const;
 

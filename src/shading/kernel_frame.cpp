@@ -238,16 +238,7 @@ kd::Light kernel_light(const LightModel& l) {
 }
 
 kd::Camera kernel_camera(const CameraModel& c) {
-  kd::Camera k;
-  k.position = kd::vec3(0.0, c.position().y, 0.0);
-  k.forward = c.forward();
-  k.right = c.right();
-  k.up = c.up();
-  k.half_w = c.half_w();
-  k.half_h = c.half_h();
-  k.width = c.width();
-  k.height = c.height();
-  return k;
+  return c.kernel_camera();
 }
 
 kd::Footprint kernel_footprint(const SceneModel& m, const PixelFootprint& fp) {

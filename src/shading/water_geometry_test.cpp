@@ -55,8 +55,12 @@ struct Water {
   WaterGeometry g;
   explicit Water(const std::vector<Wave>& waves, int w = 64, int h = 36)
       : m(displaced(testing::small_scene(waves, w, h))), g(m, FrameTime{0, 0.0, 0.0}) {}
+  // Displaced, the camera moved off the origin so that the conversions between world and
+  // camera-relative coordinates are exercised.
   static Scene displaced(Scene s) {
     s.surface.geometry = Geometry::displaced;
+    s.camera.position += vec3(37, 0, -11);
+    s.camera.look_at += vec3(37, 0, -11);
     return s;
   }
 };
@@ -98,6 +102,7 @@ TEST(WaterGeometry, DisplacedMatchesBruteForceMarch) {
       EXPECT_NEAR(h.s, ref, 1e-6) << i << "," << j;
       // Stated error: the point lies on the surface within kRootTolerance.
       vec3 p = cam.position() + h.s * d;
+      EXPECT_LT(length(h.point - p), 1e-9 * (1 + h.s)) << i << "," << j;
       EXPECT_LT(std::fabs(p.y - w.height(p.x, p.z, t)), 10 * kRootTolerance);
       EXPECT_NEAR(h.point.y, w.height(h.point.x, h.point.z, t), 1e-12);
     }
