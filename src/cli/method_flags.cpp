@@ -135,7 +135,8 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->capture_default_str()
       ->check(integer_in(1, 32));
   choice(app, "--ndf", s.ndf, {{"uniform", NdfMode::uniform}, {"per-pixel", NdfMode::per_pixel}},
-         "staa: NDF of the aliasing waves: uniform (Eq. 3) or per-pixel (Eqs. 4-7)");
+         "staa: NDF of the aliasing waves: uniform (Eq. 3) or per-pixel (Eqs. 4-7); default: "
+         "per-pixel with --footprint none (the paper's method), else uniform");
   choice(app, "--ndf-mean", s.ndf_mean_shift, {{"shift", true}, {"none", false}},
          "staa, per-pixel NDF: the aliasing waves' mean slope shifts the NDF centre (shift) or "
          "not (none)");
@@ -192,6 +193,10 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
                  "Gaussian of normals")
       ->capture_default_str()
       ->check(integer_in(1, 3));
+  choice(app, "--rdf-at", s.rdf_at, {{"light", RdfAnchor::light}, {"centre", RdfAnchor::centre}},
+         "staa: the map from normals to the light plane linearised at the light (exact to "
+         "first order in the disk's radius) or at the NDF's centre (the paper, Eqs. 11-16); "
+         "default: centre with --footprint none (the paper's method), else light");
 
   // lean (methods/lean.h)
   app.add_option("--lean-size", o.lean.size,
@@ -273,7 +278,8 @@ static void scope_method_flags(const std::vector<const CLI::Option*>& options, M
                                          "--curvature-limit",
                                          "--wave-remainder",
                                          "--smooth-terms",
-                                         "--smooth-cells"};
+                                         "--smooth-cells",
+                                         "--rdf-at"};
   // The baselines' flags name their method first: --lean-size (lean), --taa-alpha (taa), ...
   const std::vector<std::string> prefixed = {"lean", "taa", "microspec", "specaa", "bruneton"};
   for (const CLI::Option* opt : options) {

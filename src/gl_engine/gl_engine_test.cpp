@@ -126,10 +126,10 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineOnTheSharedScenes) {
     const std::vector<Image> ref = render(m, *reference, 0, 2);
     MethodOptions none;
     none.staa.footprint = FootprintMode::none;
-    MethodOptions uniform;
-    uniform.staa.ndf = NdfMode::uniform;
+    MethodOptions per_pixel;
+    per_pixel.staa.ndf = NdfMode::per_pixel;
     for (const auto& [name, o] : std::vector<std::pair<std::string, MethodOptions>>{
-             {"staa", {}}, {"staa", none}, {"staa", uniform}, {"staa-temporal", {}}}) {
+             {"staa", {}}, {"staa", none}, {"staa", per_pixel}, {"staa-temporal", {}}}) {
       const Comparison c = compare_engines(scene, name, o, ref);
       EXPECT_LE(c.gl_cpu, 0.1 * c.cpu_ref) << scene << " " << name;
     }

@@ -131,6 +131,7 @@ struct StaaParams {
   real curvature_limit;  // 0: off
   bool wave_remainder;   // the fully aliasing waves' sum in O(1) (else one by one; staa.glsl)
   int smooth_cells;      // Fresnel, sky and sea over the normals of n x n cells (0: at the mean)
+  bool rdf_at_light;     // --rdf-at light: Phi linearised at the light (else at the NDF's centre)
 };
 
 // `reference` and `supersample`: samples per pixel (sampling.glsl).

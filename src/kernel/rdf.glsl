@@ -52,3 +52,48 @@ SG_FN mat2 ndf_to_light_plane_jacobian(vec2 n, vec3 v, IN(Light) l) {
 SG_FN mat2 rdf_covariance(mat2 J, mat2 ndf_cov) {
   return J * ndf_cov * transpose(J);
 }
+
+// Phi linearised at the light instead of at the NDF's centre (sunglint; docs/method.md,
+// "The RDF linearised at the light"). The light's share is the NDF's mass over the
+// normals that reflect v into the disk, Phi^-1(disk). With n_L the point whose normal
+// reflects v onto the light's centre (the half vector h = v + L: n_L = (h.x, h.z) / h.y,
+// Phi(n_L) = 0) and J_L = dPhi/dn there,
+//     Phi(n) = J_L (n - n_L) + O(|n - n_L|^2),
+// so over the disk (|Phi| <= tan_radius) the map is exact to first order in the disk's
+// radius whatever the NDF's width, and a Gaussian NDF N(n_c, Sigma) has there the RDF
+//     N(J_L (n_c - n_L), J_L Sigma J_L^T).
+// Eqs. 11-16 linearise at n_c instead: exact where the NDF is narrow or centred on the
+// light, but where the NDF is wide and the light sits in its tail (the far water, a
+// grazing or a side light) the density they give the disk is that of a Gaussian whose
+// Jacobian was taken far from the disk. `valid` is false where the half vector is within
+// kMinAnchorCos of the horizon (a normal tilted by more than 84 degrees).
+const real kMinAnchorCos = 0.1;
+
+struct LightAnchor {
+  bool valid;
+  vec2 n;  // n_L
+  mat2 J;  // J_L
+};
+
+SG_FN LightAnchor light_anchor(vec3 v, IN(Light) l) {
+  LightAnchor a;
+  vec3 h = v + l.L;
+  a.valid = h.y > kMinAnchorCos * length(h);
+  a.n = a.valid ? vec2(h.x, h.z) / h.y : vec2(0.0);
+  a.J = a.valid ? ndf_to_light_plane_jacobian(a.n, v, l) : mat2(0.0);
+  return a;
+}
+
+// No anchor: Eqs. 11-16's linearisation at the NDF's centre.
+SG_FN LightAnchor light_anchor_none() {
+  LightAnchor a;
+  a.valid = false;
+  a.n = vec2(0.0);
+  a.J = mat2(0.0);
+  return a;
+}
+
+// The light-plane point of NDF-plane point n under the linearisation at the light.
+SG_FN vec2 anchored_light_plane(IN(LightAnchor) a, vec2 n) {
+  return a.J * (n - a.n);
+}

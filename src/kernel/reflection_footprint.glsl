@@ -27,6 +27,16 @@ SG_FN vec2 reflection_footprint_column(mat3x2 dPdr, mat3 drdm, mat3 drdv, vec3 h
   return dPdr * (drdm * dm + drdv * dv);
 }
 
+// D with the chain rule's derivatives taken at normal nm (the reflection r of v about it).
+SG_FN mat2 reflection_footprint_through(IN(Light) l, IN(Footprint) fp, vec3 hess, vec3 nm) {
+  vec3 v = fp.view;
+  mat3x2 dPdr = light_plane_jacobian(reflect_view(nm, v), l);
+  mat3 drdm = reflection_jacobian_normal(nm, v);
+  mat3 drdv = reflection_jacobian_view(nm);
+  return mat2(reflection_footprint_column(dPdr, drdm, drdv, hess, fp.dp_dpx, v, fp.distance),
+              reflection_footprint_column(dPdr, drdm, drdv, hess, fp.dp_dpy, v, fp.distance));
+}
+
 // g, hess (xx, xz, zz): the resolved waves' gradient and Hessian at the point; shift: the
 // NDF's mean shift.
 SG_FN ReflectionFootprint reflection_footprint(IN(Light) l, IN(Footprint) fp, vec2 g, vec3 hess,
@@ -36,17 +46,31 @@ SG_FN ReflectionFootprint reflection_footprint(IN(Light) l, IN(Footprint) fp, ve
   res.P = vec2(0.0);
   res.D = mat2(0.0);
   vec3 nm = vec3(-g.x + shift.x, 1.0, -g.y + shift.y);
-  vec3 v = fp.view;
-  vec3 r = reflect_view(nm, v);
+  vec3 r = reflect_view(nm, fp.view);
   if (dot(r, l.L) <= 0.0) return res;
   res.valid = true;
   res.P = light_to_plane(l, r);
-  mat3x2 dPdr = light_plane_jacobian(r, l);
-  mat3 drdm = reflection_jacobian_normal(nm, v);
-  mat3 drdv = reflection_jacobian_view(nm);
-  res.D = mat2(reflection_footprint_column(dPdr, drdm, drdv, hess, fp.dp_dpx, v, fp.distance),
-               reflection_footprint_column(dPdr, drdm, drdv, hess, fp.dp_dpy, v, fp.distance));
+  res.D = reflection_footprint_through(l, fp, hess, nm);
   return res;
+}
+
+// The same under Phi linearised at the light (rdf.glsl, light_anchor; a valid anchor of
+// the view fp.view): P = J_L (n - n_L), and D's derivatives taken at n_L, where the
+// reflection is the light's centre. Defined whatever the centre normal reflects to.
+SG_FN ReflectionFootprint reflection_footprint_anchored(IN(Light) l, IN(Footprint) fp, vec2 g,
+                                                        vec3 hess, vec2 shift, IN(LightAnchor) a) {
+  ReflectionFootprint res;
+  res.valid = true;
+  res.P = anchored_light_plane(a, -g + shift);
+  res.D = reflection_footprint_through(l, fp, hess, vec3(a.n.x, 1.0, a.n.y));
+  return res;
+}
+
+// The anchored footprint where the anchor is valid, else the centre's.
+SG_FN ReflectionFootprint reflection_footprint_at(IN(Light) l, IN(Footprint) fp, vec2 g, vec3 hess,
+                                                  vec2 shift, IN(LightAnchor) a) {
+  if (a.valid) return reflection_footprint_anchored(l, fp, g, hess, shift, a);
+  return reflection_footprint(l, fp, g, hess, shift);
 }
 
 // The share of N(p, cov) (light-plane coordinates) whose direction lies below the

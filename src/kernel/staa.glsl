@@ -12,7 +12,8 @@
 //     per-pixel NDF, span many cycles of it) add their summed covariance in O(1).
 //  3. No aliasing share and no footprint term: the temporal method exactly (Sec. 3.3).
 //  4. Otherwise (staa_finish) the NDF, centred on the resolved normal, maps to a Gaussian
-//     RDF of covariance J Sigma J^T on the light plane (Eqs. 8-16, rdf.glsl), plus the
+//     RDF of covariance J Sigma J^T on the light plane (Eqs. 8-16, rdf.glsl; J taken at
+//     the light with `--rdf-at light`, at the NDF's centre as the paper), plus the
 //     footprint term D D^T / 12 (reflection_footprint.glsl) averaged over the instants
 //     (staa_footprint_covariance; docs/method.md, "The footprint along the path"); its
 //     centre moves along the resolved reflection path (K straight sub-segments on the light plane).
@@ -312,14 +313,15 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
 // Under a moving camera (whose instants' footprints are not formed) and with a zero
 // shutter, the display time's alone.
 SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews) v,
-                                     IN(StaaSums) sums, vec2 mean, mat2 display) {
+                                     IN(StaaSums) sums, vec2 mean, mat2 display,
+                                     IN(LightAnchor) a) {
   int K = f.segments;
   mat2 cov = display;
   if (!v.moving && f.duration > 0.0) {
     mat2 sum = 0.5 * display;
     for (int k = 0; k < K; ++k) {
       ReflectionFootprint rk =
-          reflection_footprint(f.light, fp, sums.path.g[k], sums.hess[k], mean);
+          reflection_footprint_at(f.light, fp, sums.path.g[k], sums.hess[k], mean, a);
       mat2 ck = rk.valid ? rk.D * transpose(rk.D) / 12.0 : display;
       sum += (k == 0 ? 0.5 : 1.0) * ck;
     }
@@ -332,7 +334,9 @@ SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews
 // stages run in this order, and a pixel leaves the chain where a stage has decided it:
 //  a. the temporal method, exactly, when nothing aliases and there is no footprint term
 //     (staa_temporal_result);
-//  b. the NDF's centre along the path on the light plane (staa_ndf_along_path);
+//  b. the NDF's centre along the path on the light plane (staa_ndf_along_path), and b'. the
+//     path that the light's share integrates (staa_light_path: the same, or linearised at
+//     the light);
 //  c. the terms at the centre normal: Fresnel, the sky's split, the smooth terms
 //     (staa_centre_terms); a reflection turned away from the light ends here;
 //  d. the RDF's covariance on the light plane with the footprint term (staa_rdf), or the
@@ -378,6 +382,29 @@ SG_FN StaaNdf staa_ndf_along_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v
   return ndf;
 }
 
+// Stage b': the centres on the light plane that the light's share integrates. With
+// `--rdf-at light` (rdf.glsl, light_anchor) the NDF's centre at each instant maps through
+// Phi linearised at the light for that instant's view, J_L (n_k - n_L): defined at every
+// instant, also where the centre reflects away from the light, since a wide NDF may
+// still reach it from there. The returned anchor is the display time's; where it is not
+// valid, or with `--rdf-at centre` (Eqs. 11-16), the light's path is stage b's, exactly
+// mapped. The pixel-footprint term's `exact` integration (no aliasing share) keeps stage
+// b's path: it integrates the exact parallelogram around the exact centre.
+SG_FN LightAnchor staa_light_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v, IN(StaaSums) sums,
+                                  IN(StaaNdf) ndf, INOUT(StaaPath) path) {
+  int K = f.segments;
+  LightAnchor a = light_anchor(v.view[K], f.light);
+  a.valid = a.valid && p.rdf_at_light && !(p.footprint == 2 && !sums.any_alias);
+  if (!a.valid) return a;
+  for (int k = 0; k <= K; ++k) {
+    LightAnchor ak = a;
+    if (v.moving) ak = light_anchor(v.view[k], f.light);
+    path.valid[k] = ak.valid;
+    path.centre[k] = ak.valid ? anchored_light_plane(ak, -sums.path.g[k] + ndf.mean) : vec2(0.0);
+  }
+  return a;
+}
+
 // Stage c: the Fresnel factor and the sky's split at the centre normal; the smooth terms
 // over the normals (smooth_terms.glsl) when they are on, which also give the share below
 // the horizon; without them, a reflection turned away from the light is below the
@@ -398,9 +425,10 @@ SG_FN void staa_centre_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) sums, v
 
 // Stage d: the RDF's covariance on the light plane, J Sigma J^T (Eqs. 8-16), plus the
 // pixel-footprint term, the pixel square mapped to the light plane by the resolved
-// reflection's derivatives D, averaged along the path (staa_footprint_covariance). With
-// `--footprint exact` and no aliasing share the host integrates the swept parallelogram
-// instead: `exact` is set and D returned.
+// reflection's derivatives D, averaged along the path (staa_footprint_covariance). J and
+// D are taken at the NDF's centre, or at the light where the anchor `a` is valid (stage
+// b'). With `--footprint exact` and no aliasing share the host integrates the swept
+// parallelogram instead: `exact` is set and D returned.
 struct StaaRdf {
   mat2 cov;
   bool exact;  // handed to the host with D
@@ -408,20 +436,22 @@ struct StaaRdf {
 };
 
 SG_FN StaaRdf staa_rdf(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp, IN(PathViews) v,
-                       IN(StaaSums) sums, IN(StaaNdf) ndf) {
+                       IN(StaaSums) sums, IN(StaaNdf) ndf, IN(LightAnchor) a) {
   int K = f.segments;
   StaaRdf rdf;
-  rdf.cov = rdf_covariance(ndf_to_light_plane_jacobian(ndf.now, fp.view, f.light), ndf.cov);
+  mat2 J = a.valid ? a.J : ndf_to_light_plane_jacobian(ndf.now, fp.view, f.light);
+  rdf.cov = rdf_covariance(J, ndf.cov);
   rdf.exact = false;
   rdf.D = mat2(0.0);
   if (p.footprint != 0) {
     ReflectionFootprint rf =
-        reflection_footprint(f.light, fp, sums.path.g[K], sums.hess[K], ndf.mean);
+        reflection_footprint_at(f.light, fp, sums.path.g[K], sums.hess[K], ndf.mean, a);
     if (rf.valid && p.footprint == 2 && !sums.any_alias) {
       rdf.exact = true;
       rdf.D = rf.D;
     } else if (rf.valid) {
-      rdf.cov += staa_footprint_covariance(f, fp, v, sums, ndf.mean, rf.D * transpose(rf.D) / 12.0);
+      rdf.cov +=
+          staa_footprint_covariance(f, fp, v, sums, ndf.mean, rf.D * transpose(rf.D) / 12.0, a);
     }
   }
   return rdf;
@@ -622,25 +652,40 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     res.aliasing = sums.any_alias;
     StaaNdf ndf = staa_ndf_along_path(f, p, v, sums, path);
     staa_centre_terms(f, p, sums, fp.view, ndf, path.valid[K], res);
+    StaaPath light_path = path;
+    LightAnchor a = staa_light_path(f, p, v, sums, ndf, light_path);
     StaaRdf rdf;
     rdf.cov = mat2(0.0);
     rdf.exact = false;
     rdf.D = mat2(0.0);
-    if (path.valid[K]) rdf = staa_rdf(f, p, fp, v, sums, ndf);
+    if (light_path.valid[K]) rdf = staa_rdf(f, p, fp, v, sums, ndf, a);
     if (rdf.exact) {
       // The host integrates the light's share and ends with staa_exact_result.
       res.exact_pending = true;
       res.exact_D = rdf.D;
     } else {
-      if (path.valid[K]) {
-        if (!res.terms_valid) res.below = staa_below_share(f, path, rdf.cov);
+      if (path.valid[K] && !res.terms_valid) {
+        // The horizon is a line of the exactly mapped light plane: stage b's path, and the
+        // covariance linearised at the NDF's centre. From the light's, through
+        // M = J_c J_L^-1: exact for the NDF and the resolved normals' spread, which both
+        // map through dPhi/dn; the footprint's share from the view's change across the
+        // pixel (~1e-3 rad, far below the normals' spread) is carried by the same M.
+        mat2 cov_h = rdf.cov;
+        if (a.valid) {
+          mat2 M = ndf_to_light_plane_jacobian(ndf.now, fp.view, f.light) * inverse(a.J);
+          cov_h = M * rdf.cov * transpose(M);
+        }
+        res.below = staa_below_share(f, path, cov_h);
+      }
+      if (light_path.valid[K]) {
         StaaLightShare s =
-            staa_light_share(table_f, table_s, tinfo, fits, finfo, f, p, path, rdf.cov);
+            staa_light_share(table_f, table_s, tinfo, fits, finfo, f, p, light_path, rdf.cov);
         res.fallback = s.fallback;
         res.in_light = s.culled ? 0.0 : clamp(s.in_light, 0.0, 1.0 - res.below);
       }
       res.weights = staa_weights(f, res);
     }
+    path = light_path;
   }
   return res;
 }

@@ -24,19 +24,26 @@ std::string to_string(const SampleCounts& s);
 // (kernel/: double by default; float is what a GPU computes).
 enum class Precision { float32, float64 };
 
-enum class NdfMode { uniform, per_pixel };
+// The aliasing waves' NDF: uniform (Eq. 3), per-pixel (Eqs. 4-7, Appendix A), or by the
+// footprint mode (per_pixel_ndf below).
+enum class NdfMode { automatic, uniform, per_pixel };
 enum class FallbackMode { quadrature, riemann };
 // The pixel-footprint term (docs/method.md): none (the paper's method), the footprint as
 // a Gaussian added to the RDF, or the exact swept parallelogram for pixels without
 // aliasing waves.
 enum class FootprintMode { none, gaussian, exact };
+// Where the map from normals to the light plane is linearised (kernel/rdf.glsl): at the
+// light (exact to first order in the disk's radius), at the NDF's centre (the paper, Eqs.
+// 11-16), or by the footprint mode (rdf_at_light below).
+enum class RdfAnchor { automatic, light, centre };
 
 // The choices of the paper's method (Podee et al. 2021) that `staa` and `staa-temporal`
 // expose; defaults chosen by measurement (docs/results.md).
 struct StaaOptions {
   int segments = 1;  // --segments K: sub-arcs of the shutter interval (Sec. 3.5)
-  // --ndf uniform|per-pixel: Eq. 3 or Eqs. 4-7 with Appendix A.
-  NdfMode ndf = NdfMode::per_pixel;
+  // --ndf uniform|per-pixel: Eq. 3 or Eqs. 4-7 with Appendix A; by default the paper's
+  // per-pixel NDF with `--footprint none`, else the uniform (docs/aliasing-study.md).
+  NdfMode ndf = NdfMode::automatic;
   // --ndf-mean shift|none: whether the per-pixel mean slope of the aliasing waves (B)
   // shifts the NDF's centre.
   bool ndf_mean_shift = true;
@@ -70,6 +77,10 @@ struct StaaOptions {
   // --smooth-cells N: the pixel cut into N x N cells (1 to 3), each with its own Gaussian of
   // normals, for the smooth terms (kernel/ndf.glsl, box_cells_add).
   int smooth_cells = 3;
+  // --rdf-at light|centre: the map from normals to the light plane linearised at the light
+  // (kernel/rdf.glsl, light_anchor) or at the NDF's centre (the paper, Eqs. 11-16); by
+  // default the paper's with `--footprint none`, which is the paper's method, else the light.
+  RdfAnchor rdf_at = RdfAnchor::automatic;
 };
 
 // The transition region of Eq. 20 that a `staa` variant uses. Defaults by measurement
@@ -84,6 +95,19 @@ inline constexpr AliasRange kFootprintAliasRange{0.3, 0.8};
 inline AliasRange alias_range(const StaaOptions& o) {
   const AliasRange d = o.footprint == FootprintMode::none ? kPaperAliasRange : kFootprintAliasRange;
   return {o.alias_start >= 0 ? o.alias_start : d.start, o.alias_end >= 0 ? o.alias_end : d.end};
+}
+
+// Whether a `staa` variant takes the per-pixel NDF (docs/method.md, "Defaults").
+inline bool per_pixel_ndf(const StaaOptions& o) {
+  if (o.ndf != NdfMode::automatic) return o.ndf == NdfMode::per_pixel;
+  return o.footprint == FootprintMode::none;
+}
+
+// Whether a `staa` variant linearises the RDF at the light (docs/method.md, "The RDF
+// linearised at the light"; measured in docs/aliasing-study.md).
+inline bool rdf_at_light(const StaaOptions& o) {
+  if (o.rdf_at != RdfAnchor::automatic) return o.rdf_at == RdfAnchor::light;
+  return o.footprint != FootprintMode::none;
 }
 
 // `lean` (methods/lean.h): LEAN mapping of the waves' slopes.

@@ -15,7 +15,7 @@ P staa_kernel_params(const StaaOptions& o) {
   using R = decltype(P{}.alias_start);
   const AliasRange range = alias_range(o);
   P p{};
-  p.per_pixel_ndf = o.ndf == NdfMode::per_pixel;
+  p.per_pixel_ndf = per_pixel_ndf(o);
   p.ndf_mean_shift = o.ndf_mean_shift;
   p.kernels = o.kernels;
   p.elongation_threshold = R(o.elongation_threshold);
@@ -31,6 +31,7 @@ P staa_kernel_params(const StaaOptions& o) {
   p.curvature_limit = R(o.curvature_limit);
   p.wave_remainder = o.wave_remainder;
   p.smooth_cells = o.smooth_over_normals ? o.smooth_cells : 0;
+  p.rdf_at_light = rdf_at_light(o);
   return p;
 }
 template kd::StaaParams staa_kernel_params<kd::StaaParams>(const StaaOptions&);

@@ -105,6 +105,38 @@ TEST(Staa, AliasRangeDefaultsFollowTheFootprintMode) {
   }
 }
 
+TEST(Staa, RdfAnchorDefaultFollowsTheFootprintMode) {
+  // The paper's linearisation at the NDF's centre without a footprint term, at the light
+  // with one; a choice given explicitly wins; the two render differently on a scene whose
+  // far water aliases.
+  StaaOptions o;
+  o.footprint = FootprintMode::none;
+  EXPECT_FALSE(rdf_at_light(o));
+  for (FootprintMode f : {FootprintMode::gaussian, FootprintMode::exact}) {
+    o.footprint = f;
+    EXPECT_TRUE(rdf_at_light(o));
+  }
+  o.rdf_at = RdfAnchor::centre;
+  EXPECT_FALSE(rdf_at_light(o));
+  o.footprint = FootprintMode::none;
+  o.rdf_at = RdfAnchor::light;
+  EXPECT_TRUE(rdf_at_light(o));
+
+  Scene s = testing::project_scene("high");
+  s.width = 48;
+  s.height = 27;
+  SceneModel m(s);
+  StaaOptions def, light, centre;
+  light.rdf_at = RdfAnchor::light;
+  centre.rdf_at = RdfAnchor::centre;
+  StaaMethod a(def, testing::path_tables()), b(light, testing::path_tables()),
+      c(centre, testing::path_tables());
+  const Image ia = render_frame(m, a, 3, {}), ib = render_frame(m, b, 3, {}),
+              ic = render_frame(m, c, 3, {});
+  EXPECT_EQ(ia.data, ib.data);
+  EXPECT_NE(ia.data, ic.data);
+}
+
 TEST(Staa, ContinuousWhereAWaveStartsToAlias) {
   // One pixel of the high scene; move the start of the transition region across the
   // projected frequency of its highest resolved wave: the value must not jump when that

@@ -17,9 +17,9 @@ namespace fs = std::filesystem;
 namespace {
 // The revision of the methods computed outside the shading kernel (lean, taa, microspec,
 // specaa, bruneton, the exact footprint's host finish, the cascades' fields of
-// shading/cascade_fields.h): raise it when a change alters their pictures, so that the
-// frame cache renders them again.
-constexpr int kHostMethodsRevision = 4;
+// shading/cascade_fields.h) and the methods' default options (methods/options.h): raise it
+// when a change alters their pictures, so that the frame cache renders them again.
+constexpr int kHostMethodsRevision = 5;
 }  // namespace
 
 std::string canonical_label(const std::string& label) {

@@ -192,6 +192,26 @@ TEST(SceneLoad, EveryBadFixtureHasAnExpectedMessage) {
   EXPECT_EQ(files, static_cast<int>(std::size(kBad)));
 }
 
+TEST(SceneLoad, AliasingStudyScenesLoadWithTheirViews) {
+  // tests/scenes/aliasing/ (docs/aliasing-study.md): each loads, and holds the light and
+  // the camera its generator describes, so a regenerated file with another view fails.
+  struct View {
+    const char* name;
+    double light_elevation_deg, camera_height;
+    size_t waves;
+  };
+  for (const View v : {View{"cross-swell-side", 25, 3, 40}, View{"grazing-moon", 3, 4, 48},
+                       View{"high-sun-above", 62, 40, 48}}) {
+    const Scene s =
+        load_scene(sg::testing::source_dir() + "/tests/scenes/aliasing/" + v.name + ".json");
+    EXPECT_EQ(s.name, v.name);
+    const vec3 L = normalize(s.light.direction);
+    EXPECT_NEAR(std::asin(L.y) * 180 / kPi, v.light_elevation_deg, 1e-3) << v.name;
+    EXPECT_EQ(s.camera.position.y, v.camera_height) << v.name;
+    EXPECT_EQ(s.surface.waves.size(), v.waves) << v.name;
+  }
+}
+
 TEST(SceneLoad, ProjectScenesLoadWithTheirValues) {
   for (const char* name : {"simple", "smooth", "medium", "high"}) {
     Scene s = testing::project_scene(name);

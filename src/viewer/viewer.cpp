@@ -489,7 +489,7 @@ class Viewer {
       changed |= ImGui::SliderInt("segments", &s.options.staa.segments, 1, 8);
     }
     if (s.method == "staa") {
-      bool per_pixel = s.options.staa.ndf == NdfMode::per_pixel;
+      bool per_pixel = per_pixel_ndf(s.options.staa);
       if (ImGui::Checkbox("per-pixel NDF", &per_pixel)) {
         s.options.staa.ndf = per_pixel ? NdfMode::per_pixel : NdfMode::uniform;
         changed = true;
@@ -497,6 +497,12 @@ class Viewer {
       bool none = s.options.staa.footprint == FootprintMode::none;
       if (ImGui::Checkbox("no footprint term", &none)) {
         s.options.staa.footprint = none ? FootprintMode::none : FootprintMode::gaussian;
+        changed = true;
+      }
+      // docs/method.md, "The RDF linearised at the light".
+      bool centre = !rdf_at_light(s.options.staa);
+      if (ImGui::Checkbox("RDF linearised at the NDF's centre", &centre)) {
+        s.options.staa.rdf_at = centre ? RdfAnchor::centre : RdfAnchor::light;
         changed = true;
       }
     }

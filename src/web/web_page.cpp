@@ -103,7 +103,8 @@ json staa_params(const kf::StaaParams& p) {
           {"footprint", p.footprint},
           {"curvature_limit", p.curvature_limit},
           {"wave_remainder", p.wave_remainder},
-          {"smooth_cells", p.smooth_cells}};
+          {"smooth_cells", p.smooth_cells},
+          {"rdf_at_light", p.rdf_at_light}};
 }
 json table_info(const kf::PathTableInfo& t) {
   return {{"n_distance", t.n_distance},
