@@ -4,10 +4,12 @@
 # counterpart in turn, on the four shared scenes and the aliasing scenes of
 # tests/scenes/aliasing/ (make_aliasing_scenes.py). Writes out/aliasing-study{,-640}/ and
 # regenerates docs/aliasing-study-160x90.md, docs/aliasing-study-640x360.md and
-# docs/aliasing-study-tables.md (scripts/aliasing-study-table.py).
+# docs/aliasing-study-tables.md (scripts/aliasing-study-table.py), and
+# docs/aliasing-subpixel.md (scripts/aliasing-subpixel.py; needs ffmpeg).
 #   bash scripts/aliasing-study.sh [build/sunglint]
-# About 9 min on 2 cores with an empty cache (160x90: 7 scenes, frames 0-9, 32x32x1
-# reference; 640x360: 5 scenes, frames 0-4, 12x12x1 reference); the frames are cached.
+# About 15 min on 2 cores with an empty cache (160x90: 7 scenes, frames 0-9, 32x32x1
+# reference; 640x360: 5 scenes, frames 0-4, 12x12x1 reference; then 6 min of sub-pixels);
+# the frames are cached.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bin=${1:-$root/build/sunglint}
@@ -34,3 +36,9 @@ scenes=(scenes/simple.json scenes/smooth.json scenes/medium.json scenes/high.jso
 python3 scripts/aliasing-study-table.py out/aliasing-study/results.json \
   out/aliasing-study-640/results.json > docs/aliasing-study-tables.md.tmp
 mv docs/aliasing-study-tables.md.tmp docs/aliasing-study-tables.md
+# The pixel's distribution of normals resolved by sub-pixels (docs/aliasing-study.md): each
+# method at 2, 4 and 8 times the size, box-filtered down to 160x90, against the same
+# reference frames (about 6 more minutes).
+python3 scripts/aliasing-subpixel.py --bin "$bin" --cache out/cache --out out/aliasing-subpixel \
+  > docs/aliasing-subpixel.md.tmp
+mv docs/aliasing-subpixel.md.tmp docs/aliasing-subpixel.md
