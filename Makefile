@@ -63,8 +63,10 @@ sanitize-build: deps
 # test (docs/ci.md).
 # `Staa.BeatsPointSamplingOnTheSharedScenes` (staa against point over ten frames of the
 # four shared scenes: 75 s under the sanitizers) likewise: its code runs under them in
-# `StaaFootprint.*` and the GL engine's shared-scenes test.
-SANITIZE_EXCLUDE ?= ^(MovingCameraTargets\.|Staa\.BeatsPointSamplingOnTheSharedScenes$$)
+# `StaaFootprint.*` and the GL engine's shared-scenes test. `AliasingTargets` (staa and
+# lean over thirty frames against a stored reference) too: its code runs under them in
+# `Staa.*` and `Lean.*`.
+SANITIZE_EXCLUDE ?= ^(MovingCameraTargets\.|AliasingTargets\.|Staa\.BeatsPointSamplingOnTheSharedScenes$$)
 sanitize-test:
 	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L '^(unit|gl|slow)$$' \
 	  -LE '^cli$$' -E '$(SANITIZE_EXCLUDE)'

@@ -1,18 +1,21 @@
 #!/usr/bin/env python3
-"""The aliasing study's resolved-pixel counterpart (docs/aliasing-study.md, "The pixel's
-distribution of normals, resolved"): each method rendered on a grid S times finer per axis
+"""The aliasing study's resolved-pixel counterpart (docs/aliasing-study.md, "What the
+Gaussian costs: the pixel's normals resolved by sub-pixels"): each method rendered on a grid S times finer per axis
 and box-filtered down to the study's 160x90, so that each 160x90 pixel's distribution of
 normals is carried by S x S sub-pixels instead of the method's pixel-scale model (for
 `staa`: one Gaussian for the aliasing waves and the footprint term; for `lean`: one
 Gaussian for all the slopes). Measured against the study's own reference frames, read from
 the compare cache (both batches: their mean is the reference, their spread its noise), with
-the reference's noise taken out as scripts/aliasing-study-table.py does.
+the reference's noise taken out as scripts/aliasing-study-table.py does. (The study's
+scenes are grey; a colour frame would be compared in its channels' mean.)
 
     python3 scripts/aliasing-subpixel.py [--bin build/sunglint] [--cache out/cache]
-        [--out out/aliasing-subpixel] [--variants 'staa|1,2;lean|1'] > FILE
+        [--out out/aliasing-subpixel] [--variants 'staa|1,2;lean|1']
+        [--scenes A.json,B.json] [--section TITLE] > FILE
 
 Needs the study's 160x90 reference in the cache (bash scripts/aliasing-study.sh) and ffmpeg
-(it reads the cache's OpenEXR frames). About 6 minutes on 2 cores (the frames of each variant kept in --out).
+(it reads the cache's OpenEXR frames). About 6 minutes on 2 cores (the frames of each
+variant kept in --out).
 """
 import argparse
 import glob
@@ -75,14 +78,22 @@ def grey(img):
 
 
 def reference_frames(cache, name, out):
-    """{frame: [batch images]} of the study's reference for scene `name` at 160x90."""
-    found = {}
+    """{frame: [batch images]} of the study's reference for scene `name` at 160x90: the
+    frames of the renderer version written last (a cache may hold older versions' too)."""
+    by_renderer = {}
     for j in glob.glob(os.path.join(cache, "reference-samples-32x32x1-*.exr.json")):
         key = json.load(open(j))["key"]
         if f"\nsize={WIDTH}x{HEIGHT}\n" not in key or f'"name": "{name}"' not in key:
             continue
         if f"\nmethod={REFERENCE}\n" not in key:
             continue
+        renderer = re.search(r"\nrenderer=(\S+)", key).group(1)
+        by_renderer.setdefault(renderer, []).append((j, key))
+    if not by_renderer:
+        return {}
+    newest = max(by_renderer.values(), key=lambda v: max(os.path.getmtime(j) for j, _ in v))
+    found = {}
+    for j, key in newest:
         frame = int(re.search(r"\nframe=(\d+)", key).group(1))
         pfm = os.path.join(out, "ref-" + os.path.basename(j)[:-len(".exr.json")] + ".pfm")
         if not os.path.exists(pfm):
@@ -112,6 +123,10 @@ def main():
     ap.add_argument("--bin", default="build/sunglint")
     ap.add_argument("--cache", default="out/cache")
     ap.add_argument("--out", default="out/aliasing-subpixel")
+    ap.add_argument("--section", help="print a '## SECTION' heading instead of the page's "
+                    "title (a second table appended to the same page)")
+    ap.add_argument("--scenes", default=",".join(SCENES),
+                    help="comma-separated scene files (their 160x90 reference in --cache)")
     ap.add_argument("--variants", default=DEFAULT_VARIANTS,
                     help="';'-separated METHOD|S,S,...: a method and its flags, or staa@A-B "
                     "(see below), and the scales S to render it at")
@@ -122,7 +137,7 @@ def main():
         variants += [(method, int(s)) for s in scales.split(",")]
     os.makedirs(a.out, exist_ok=True)
     rows = []
-    for scene in SCENES:
+    for scene in a.scenes.split(","):
         name = json.load(open(scene))["name"]
         ref_batches = reference_frames(a.cache, name, a.out)
         if sorted(ref_batches) != list(FRAMES) or any(len(b) < 2 for b in ref_batches.values()):
@@ -158,9 +173,12 @@ def main():
             rows.append((name, method, s, r, t, se))
             print(f"aliasing-subpixel: {name} {method} x{s}: RMSE {r:.3e} temporal {t:.3e}",
                   file=sys.stderr)
-    print("# The aliasing study: the pixel's normals resolved by sub-pixels (generated)\n")
-    print("`python3 scripts/aliasing-subpixel.py` (docs/aliasing-study.md says what it "
-          "measures).\n")
+    if a.section:
+        print(f"## {a.section}\n")
+    else:
+        print("# The aliasing study: the pixel's normals resolved by sub-pixels (generated)\n")
+        print("`bash scripts/aliasing-study.sh` runs `scripts/aliasing-subpixel.py` "
+              "(docs/aliasing-study.md says what it measures).\n")
     print(f"At {WIDTH}x{HEIGHT}, frames {FRAMES[0]}-{FRAMES[-1]}, against the `{REFERENCE}` "
           "reference (the reference's noise taken out); each variant rendered at S times the "
           "size per axis and box-filtered down (S = 1: as the study renders it). "

@@ -30,26 +30,14 @@
 #include "methods/method.h"
 #include "methods/reference.h"
 #include "metrics/metrics.h"
-#include "testing/path_tables.h"
-#include "testing/testing.h"
+#include "testing/stored_reference.h"
 
 namespace sg {
 namespace {
 
 constexpr int kFrames = 10;
 
-std::vector<Image> render_sequence(const SceneModel& m, const std::string& method,
-                                   const MethodOptions& o) {
-  std::vector<Image> out;
-  std::unique_ptr<Method> p = make_method(method, testing::with_tables(o));
-  for (int f = 0; f < kFrames; ++f)
-    out.push_back(render_frame(m, *p, f, {}));
-  return out;
-}
-
-double corrected(double e, double noise2) {
-  return std::sqrt(std::max(0.0, e * e - noise2));
-}
+using testing::noise_corrected;
 
 struct Target {
   const char* scene;
@@ -64,34 +52,28 @@ TEST(DisplacedTargets, StaaAgainstSupersamplingAndPointOnDisplacedSeas) {
     Scene s = load_scene(testing::source_dir() + "/tests/scenes/displaced-" + name + ".json");
     set_image_size(s, 160, 90);
     const SceneModel m(s);
-    std::vector<Image> ref, var;
-    const std::string dir = testing::source_dir() + "/tests/data/displaced-targets/";
-    char file[64];
-    for (int f = 0; f < kFrames; ++f) {
-      std::snprintf(file, sizeof file, "%s_%02d.exr", t.scene, f);
-      ref.push_back(read_image(dir + file));
-      std::snprintf(file, sizeof file, "%s_variance_%02d.exr", t.scene, f);
-      var.push_back(read_image(dir + file));
-      ASSERT_EQ(ref.back().width, 160);
-      ASSERT_EQ(ref.back().height, 90);
-    }
-    const double se = sequence_standard_error(var);
-    const std::vector<Image> staa = render_sequence(m, "staa", {});
-    const std::vector<Image> point = render_sequence(m, "point", {});
+    const testing::StoredReference stored =
+        testing::read_stored_reference("displaced-targets", t.scene, kFrames, 160, 90);
+    if (HasFailure()) return;
+    const std::vector<Image>& ref = stored.frames;
+    const double se = sequence_standard_error(stored.variances);
+    const std::vector<Image> staa = testing::render_sequence(m, "staa", {}, kFrames);
+    const std::vector<Image> point = testing::render_sequence(m, "point", {}, kFrames);
     const SequenceMetrics ms = compare_sequences(staa, ref), mp = compare_sequences(point, ref);
     double super = t.supersample_rmse;
     if (measure) {
       MethodOptions ss;
       ss.samples = SampleCounts{6, 6, 1};
       ss.samples_given = true;
-      const SequenceMetrics mss = compare_sequences(render_sequence(m, "supersample", ss), ref);
-      super = corrected(mss.rmse, se * se);
+      const SequenceMetrics mss =
+          compare_sequences(testing::render_sequence(m, "supersample", ss, kFrames), ref);
+      super = noise_corrected(mss.rmse, se * se);
       std::printf("%-6s supersample 6x6x1: RMSE %.4g (%.4g corrected), temporal %.4g\n", t.scene,
                   mss.rmse, super, mss.temporal_error);
     }
-    const double rs = corrected(ms.rmse, se * se);
-    const double ts = corrected(ms.temporal_error, 2 * se * se),
-                 tp = corrected(mp.temporal_error, 2 * se * se);
+    const double rs = noise_corrected(ms.rmse, se * se);
+    const double ts = noise_corrected(ms.temporal_error, 2 * se * se),
+                 tp = noise_corrected(mp.temporal_error, 2 * se * se);
     std::printf(
         "%-6s reference se %.3g; staa RMSE %.4g (%.4g corrected) / supersample %.4g: %.3f; "
         "temporal error staa %.4g (%.4g corrected), point %.4g (%.4g): %.3f (as measured "

@@ -201,7 +201,9 @@ TEST(SceneLoad, AliasingStudyScenesLoadWithTheirViews) {
     size_t waves;
   };
   for (const View v : {View{"cross-swell-side", 25, 3, 40}, View{"grazing-moon", 3, 4, 48},
-                       View{"high-sun-above", 62, 40, 48}}) {
+                       View{"high-sun-above", 62, 40, 48}, View{"elevation-02", 2, 4, 48},
+                       View{"elevation-05", 5, 4, 48}, View{"elevation-10", 10, 4, 48},
+                       View{"elevation-15", 15, 4, 48}, View{"elevation-20", 20, 4, 48}}) {
     const Scene s =
         load_scene(sg::testing::source_dir() + "/tests/scenes/aliasing/" + v.name + ".json");
     EXPECT_EQ(s.name, v.name);

@@ -7,7 +7,10 @@ of normals, as lean does. Deterministic (fixed seed); run from this folder to re
   sun 25 degrees up and 40 degrees to the right of the view;
 - grazing-moon.json: the moon 3 degrees up straight ahead over medium's sea, camera 4 m up;
 - high-sun-above.json: the sun 62 degrees up, 10 degrees to the right, camera 40 m up
-  looking 35 degrees down on a wind sea.
+  looking 35 degrees down on a wind sea;
+- elevation-NN.json: the light's elevation swept over one view, grazing-moon's sea and
+  camera under the sun (0.27 degrees) NN = 2, 5, 10, 15 and 20 degrees up straight ahead
+  (the view's lower edge is 20 degrees down: higher suns reflect out of the frame).
 """
 import json
 import math
@@ -68,6 +71,8 @@ def main():
         scene("grazing-moon", [0, 4.0, 0], [0, 0, -60.0], moon_sea, light(3, 0), 0.26),
         scene("high-sun-above", [0, 40.0, 0], [0, 0, -57.1], wind, light(62, 10), 0.27),
     ]
+    scenes += [scene(f"elevation-{e:02d}", [0, 4.0, 0], [0, 0, -60.0], moon_sea, light(e, 0), 0.27)
+               for e in (2, 5, 10, 15, 20)]
     for s in scenes:
         with open(s["name"] + ".json", "w") as f:
             json.dump(s, f, indent=1)
