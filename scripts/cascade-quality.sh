@@ -6,8 +6,10 @@
 # their FFT fields) and `staa --cascades waves` (their sines) against a reference on the
 # sines, with `sunglint compare`.
 #
-#   scripts/cascade-quality.sh [OUT] [WIDTH] [FRAMES] [REFERENCE]
-#   (defaults: out/cascade-quality 160 0-9 12x12x1; 640 0-4 12x12x1 for the larger study)
+#   scripts/cascade-quality.sh [OUT] [WIDTH] [FRAMES] [REFERENCE] [GEOMETRY] [SEAS]
+#   (defaults: out/cascade-quality 160 0-9 12x12x1 flat "wind5 wind10 wind15"; 640 0-4
+#   12x12x1 for the larger study; the displaced measurement of docs/ocean.md:
+#   `scripts/cascade-quality.sh out/cq-displaced 160 0-9 8x8x1 displaced wind10`)
 #
 # Each sea: `ocean --cascades 2 --lattice 32 --patch-sizes A,B --wind-speed W --seed 3`
 # on a copy of scripts/templates/plain.json with the light E degrees high ahead and the
@@ -22,6 +24,8 @@ out="${1:-$root/out/cascade-quality}"
 width="${2:-160}"
 frames="${3:-0-9}"
 reference="${4:-12x12x1}"
+geometry="${5:-flat}"
+seas="${6:-wind5 wind10 wind15}"
 [ -x "$bin" ] || { echo "cascade-quality: build first (make build)" >&2; exit 1; }
 mkdir -p "$out/scenes"
 
@@ -33,13 +37,15 @@ sea() {  # name wind patches sun_deg down_deg
     /"look_at":/ { printf "  \"look_at\": [0, 0, %.6f],\n", -2.5 / (sin(d*pi/180)/cos(d*pi/180)); next }
     { print }' "$root/scripts/templates/plain.json" >"$t"
   "$bin" ocean -o "$out/scenes/$name.json" --cascades 2 --lattice 32 --patch-sizes "$patches" \
-    --wind-speed "$wind" --seed 3 --template "$t" >/dev/null
+    --wind-speed "$wind" --seed 3 --template "$t" --geometry "$geometry" >/dev/null
 }
 sea wind5 5 8,4 3 2.385944
 sea wind10 10 16,8 15 10
 sea wind15 15 24,12 40 37
 
-"$bin" compare "$out/scenes/wind5.json" "$out/scenes/wind10.json" "$out/scenes/wind15.json" \
+files=()
+for name in $seas; do files+=("$out/scenes/$name.json"); done
+"$bin" compare "${files[@]}" \
   -m point -m 'supersample --samples 6x6x1' -m staa -m 'staa --cascades waves' \
   --width "$width" --frames "$frames" --reference "$reference" --budgets none --no-video \
   -o "$out/study-$width" --cache "$out/cache"
