@@ -73,17 +73,9 @@ TEST(AliasingTargets, StaaAgainstLeanAndSupersamplingWhereMostWavesAlias) {
                                                  ref),
                           ml = compare_sequences(testing::render_sequence(m, "lean", {}, kFrames),
                                                  ref);
-    double super = t.supersample_rmse;
-    if (measure) {
-      MethodOptions ss;
-      ss.samples = SampleCounts{16, 16, 1};
-      ss.samples_given = true;
-      const SequenceMetrics mss =
-          compare_sequences(testing::render_sequence(m, "supersample", ss, kFrames), ref);
-      super = noise_corrected(mss.rmse, se * se);
-      std::printf("%-14s supersample 16x16x1: RMSE %.4g (%.4g corrected)\n", t.scene, mss.rmse,
-                  super);
-    }
+    const double super = measure ? testing::measure_supersample_rmse(
+                                       m, ref, se, SampleCounts{16, 16, 1}, kFrames, t.scene)
+                                 : t.supersample_rmse;
     const double rs = noise_corrected(ms.rmse, se * se), rl = noise_corrected(ml.rmse, se * se);
     const double ts = noise_corrected(ms.temporal_error, 2 * se * se),
                  tl = noise_corrected(ml.temporal_error, 2 * se * se);

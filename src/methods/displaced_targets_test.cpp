@@ -60,17 +60,9 @@ TEST(DisplacedTargets, StaaAgainstSupersamplingAndPointOnDisplacedSeas) {
     const std::vector<Image> staa = testing::render_sequence(m, "staa", {}, kFrames);
     const std::vector<Image> point = testing::render_sequence(m, "point", {}, kFrames);
     const SequenceMetrics ms = compare_sequences(staa, ref), mp = compare_sequences(point, ref);
-    double super = t.supersample_rmse;
-    if (measure) {
-      MethodOptions ss;
-      ss.samples = SampleCounts{6, 6, 1};
-      ss.samples_given = true;
-      const SequenceMetrics mss =
-          compare_sequences(testing::render_sequence(m, "supersample", ss, kFrames), ref);
-      super = noise_corrected(mss.rmse, se * se);
-      std::printf("%-6s supersample 6x6x1: RMSE %.4g (%.4g corrected), temporal %.4g\n", t.scene,
-                  mss.rmse, super, mss.temporal_error);
-    }
+    const double super = measure ? testing::measure_supersample_rmse(
+                                       m, ref, se, SampleCounts{6, 6, 1}, kFrames, t.scene)
+                                 : t.supersample_rmse;
     const double rs = noise_corrected(ms.rmse, se * se);
     const double ts = noise_corrected(ms.temporal_error, 2 * se * se),
                  tp = noise_corrected(mp.temporal_error, 2 * se * se);

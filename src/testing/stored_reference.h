@@ -3,7 +3,7 @@
 // frames and their per-pixel variances (tests/data/<folder>/<stem>_NN.exr and
 // <stem>_variance_NN.exr, each folder's README has the command that wrote them), a
 // method's frames 0..N-1 rendered in order, and an error with the reference's noise taken
-// out.
+// out, and supersampling measured against the stored frames.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -18,6 +18,7 @@
 #include "engine/render.h"
 #include "image/image_io.h"
 #include "methods/method.h"
+#include "metrics/metrics.h"
 #include "testing/path_tables.h"
 #include "testing/testing.h"
 
@@ -60,6 +61,22 @@ inline std::vector<Image> render_sequence(const SceneModel& m, const std::string
 // 2 se^2 for a temporal error (two frames' independent noise).
 inline double noise_corrected(double e, double noise2) {
   return std::sqrt(std::max(0.0, e * e - noise2));
+}
+
+// `supersample --samples S` over frames 0..count-1 of m against the stored frames `ref`
+// (standard error se), its RMSE with the noise taken out, printed with its scene's name:
+// what the target tests state as a constant and render again on request.
+inline double measure_supersample_rmse(const SceneModel& m, const std::vector<Image>& ref,
+                                       double se, SampleCounts samples, int count,
+                                       const std::string& scene) {
+  MethodOptions ss;
+  ss.samples = samples;
+  ss.samples_given = true;
+  const SequenceMetrics mss = compare_sequences(render_sequence(m, "supersample", ss, count), ref);
+  const double rmse = noise_corrected(mss.rmse, se * se);
+  std::printf("%-14s supersample %s: RMSE %.4g (%.4g corrected), temporal %.4g\n", scene.c_str(),
+              to_string(samples).c_str(), mss.rmse, rmse, mss.temporal_error);
+  return rmse;
 }
 
 }  // namespace sg::testing
