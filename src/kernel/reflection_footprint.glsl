@@ -20,21 +20,46 @@ struct ReflectionFootprint {
   mat2 D;      // columns dP/dpx, dP/dpy
 };
 
-SG_FN vec2 reflection_footprint_column(mat3x2 dPdr, mat3 drdm, mat3 drdv, vec3 hess, vec3 dX,
-                                       vec3 v, real dist) {
-  vec3 dm = vec3(-(hess.x * dX.x + hess.y * dX.z), 0.0, -(hess.y * dX.x + hess.z * dX.z));
-  vec3 dv = -(dX - dot(v, dX) * v) / dist;
-  return dPdr * (drdm * dm + drdv * dv);
+// The chain rule's factors at normal nm, which do not depend on the waves' Hessian:
+// dP/dr dr/dm (what a change of the normal moves P by) and the view's part of D,
+// dP/dr dr/dv dv/dp (the pixel's rays turning). D(H) is then linear in H
+// (reflection_chain_d); along a fixed camera's shutter, with the derivatives taken at the
+// light's anchor, only H changes between the path's instants.
+struct ReflectionChain {
+  mat3x2 dPdm;  // dP/dr dr/dm
+  mat2 view;    // columns dP/dr dr/dv dv/dpx, dv/dpy
+};
+
+SG_FN vec3 reflection_footprint_dv(IN(Footprint) fp, vec3 dX) {
+  vec3 v = fp.view;
+  return -(dX - dot(v, dX) * v) / fp.distance;
+}
+
+SG_FN ReflectionChain reflection_chain(IN(Light) l, IN(Footprint) fp, vec3 nm) {
+  vec3 v = fp.view;
+  mat3x2 dPdr = light_plane_jacobian(reflect_view(nm, v), l);
+  ReflectionChain c;
+  c.dPdm = dPdr * reflection_jacobian_normal(nm, v);
+  mat3x2 dPdv = dPdr * reflection_jacobian_view(nm);
+  c.view = mat2(dPdv * reflection_footprint_dv(fp, fp.dp_dpx),
+                dPdv * reflection_footprint_dv(fp, fp.dp_dpy));
+  return c;
+}
+
+// The normal's change across the pixel, dm/dp = -(H (dX/dp)_xz) in the x and z slots.
+SG_FN vec3 reflection_footprint_dm(vec3 hess, vec3 dX) {
+  return vec3(-(hess.x * dX.x + hess.y * dX.z), 0.0, -(hess.y * dX.x + hess.z * dX.z));
+}
+
+// D = [dP/dpx dP/dpy] for the Hessian hess (xx, xz, zz) from the chain's factors.
+SG_FN mat2 reflection_chain_d(IN(ReflectionChain) c, IN(Footprint) fp, vec3 hess) {
+  return c.view + mat2(c.dPdm * reflection_footprint_dm(hess, fp.dp_dpx),
+                       c.dPdm * reflection_footprint_dm(hess, fp.dp_dpy));
 }
 
 // D with the chain rule's derivatives taken at normal nm (the reflection r of v about it).
 SG_FN mat2 reflection_footprint_through(IN(Light) l, IN(Footprint) fp, vec3 hess, vec3 nm) {
-  vec3 v = fp.view;
-  mat3x2 dPdr = light_plane_jacobian(reflect_view(nm, v), l);
-  mat3 drdm = reflection_jacobian_normal(nm, v);
-  mat3 drdv = reflection_jacobian_view(nm);
-  return mat2(reflection_footprint_column(dPdr, drdm, drdv, hess, fp.dp_dpx, v, fp.distance),
-              reflection_footprint_column(dPdr, drdm, drdv, hess, fp.dp_dpy, v, fp.distance));
+  return reflection_chain_d(reflection_chain(l, fp, nm), fp, hess);
 }
 
 // g, hess (xx, xz, zz): the resolved waves' gradient and Hessian at the point; shift: the

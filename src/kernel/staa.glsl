@@ -319,10 +319,20 @@ SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews
   mat2 cov = display;
   if (!v.moving && f.duration > 0.0) {
     mat2 sum = 0.5 * display;
+    // At the light's anchor the chain rule's factors are the display time's at every
+    // instant (the view and n_L do not move): only the Hessian changes.
+    ReflectionChain chain;
+    if (a.valid) chain = reflection_chain(f.light, fp, vec3(a.n.x, 1.0, a.n.y));
     for (int k = 0; k < K; ++k) {
-      ReflectionFootprint rk =
-          reflection_footprint_at(f.light, fp, sums.path.g[k], sums.hess[k], mean, a);
-      mat2 ck = rk.valid ? rk.D * transpose(rk.D) / 12.0 : display;
+      mat2 ck = display;
+      if (a.valid) {
+        mat2 Dk = reflection_chain_d(chain, fp, sums.hess[k]);
+        ck = Dk * transpose(Dk) / 12.0;
+      } else {
+        ReflectionFootprint rk =
+            reflection_footprint(f.light, fp, sums.path.g[k], sums.hess[k], mean);
+        if (rk.valid) ck = rk.D * transpose(rk.D) / 12.0;
+      }
       sum += (k == 0 ? 0.5 : 1.0) * ck;
     }
     cov = sum / real(K);
