@@ -53,12 +53,6 @@ SG_FN vec3 smooth_integrand(IN(Frame) f, vec2 s, vec3 v) {
   return vec3(F, F * zh.x, F * zh.y);
 }
 
-// 8-point Gauss-Legendre on [0, 1]: nodes (1 +- x) / 2, weights w / 2.
-const real kGl8X[4] = SG_ARRAY(
-    real, 4, (0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363));
-const real kGl8W[4] = SG_ARRAY(
-    real, 4, (0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763));
-
 // The one-dimensional form of a Gaussian of normals (above): the NDF-plane point at
 // standard coordinate u along the view's direction, a e + sqrt(E[b^2 | u]) e'. The sign
 // of b does not matter (F and r.y see b^2 only).

@@ -89,10 +89,10 @@ TEST(KernelCounts, StaaCountsItsQuadratureAndTables) {
 
 TEST(KernelCounts, StaaFallbackCostDoesNotGrowWithThePath) {
   // The fallback's average along each sub-segment is in closed form in time
-  // (gaussian_disk_mass_along): at most 5 pieces of 30 nodes a sub-segment, however long
-  // the path. (A midpoint rule over the path took up to 32 instants of up to 3 pieces: 720
-  // to 1,260 nodes in one pixel of these scenes.) The scenes have no Fresnel and no sky
-  // gradient, so no other node is counted.
+  // (gaussian_disk_mass_along): at most 5 pieces of at most 6 8-point rules (48 nodes) a
+  // sub-segment, however long the path. (A midpoint rule over the path took up to 32 instants of up
+  // to 3 pieces: 720 to 1,260 nodes in one pixel of these scenes.) The scenes have no Fresnel and
+  // no sky gradient, so no other node is counted.
   for (const char* name : {"simple", "medium", "high"}) {
     Scene s = testing::project_scene(name);
     set_image_size(s, 160, 90);
@@ -102,7 +102,7 @@ TEST(KernelCounts, StaaFallbackCostDoesNotGrowWithThePath) {
       o.staa.segments = segments;
       const KernelWork k = count_kernel_work(m, "staa", testing::with_tables(o), 2);
       EXPECT_GT(k.nodes.max, 0u) << name << ": some pixel takes the fallback";
-      EXPECT_LE(k.nodes.max, uint64_t(150 * segments)) << name << " K " << segments;
+      EXPECT_LE(k.nodes.max, uint64_t(240 * segments)) << name << " K " << segments;
     }
   }
 }

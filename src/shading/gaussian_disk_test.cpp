@@ -161,6 +161,9 @@ TEST(GaussianDisk, MassAlongASegmentEqualsTheMeanOverItsInstants) {
         << q << " s1/R " << s1 / R << " s2/s1 " << s2 / s1 << " len/R " << len / R;
   }
   std::printf("mass along a segment: worst |error| %.3g\n", worst);
+  // The largest error over the 60 segments: 1.0e-5 with the pieces' sub-intervals (and
+  // with the former fixed 30 nodes a piece); 6.4e-5 without the ends' sub-intervals.
+  EXPECT_LT(worst, 2e-5);
   // A line along the segment (rank 1, no spread across it): its one chord.
   {
     const vec2 a(-0.02, 0.001), b(0.015, 0.001);
