@@ -97,6 +97,14 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   return v;
 }
 
+ProgramOptions program_options(const GlVariant& v) {
+  ProgramOptions o;
+  o.segments = v.segments;
+  o.fallback_riemann = v.params.fallback_riemann;
+  o.fallback_along_path = v.params.fallback_along_path;
+  return o;
+}
+
 namespace {
 
 std::unique_ptr<ProgramWatch> started_watch(const std::string& method) {
@@ -110,7 +118,7 @@ std::unique_ptr<ProgramWatch> started_watch(const std::string& method) {
 GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
     : watch_(started_watch(method)),
       v_(gl_variant(method, o)),
-      program_(kernel_program(v_.entry, v_.segments)) {
+      program_(kernel_program(v_.entry, program_options(v_))) {
   watch_->pause();
   if (v_.entry == KernelEntry::staa) {
     const PathTables& t = required_path_tables(o, method);

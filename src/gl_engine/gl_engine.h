@@ -47,6 +47,9 @@ struct GlVariant {
 };
 GlVariant gl_variant(const std::string& method, const MethodOptions& options);
 
+// What the variant's program fixes in its text (gl_engine/kernel_program.h).
+ProgramOptions program_options(const GlVariant& v);
+
 // The methods the GL engine runs, for messages and help.
 const char* gl_methods();
 

@@ -345,6 +345,43 @@ TEST_F(GlEngineTest, SmoothTermsAndTheHorizonMatchTheCpuEngine) {
   }
 }
 
+TEST_F(GlEngineTest, EachFallbackIntegratorMatchesTheCpuEngine) {
+  // staa's program holds one fallback integrator, fixed in its text
+  // (gl_engine/kernel_program.h, ProgramOptions): two programs that set each of its two
+  // switches the other way from the default (the default's program is every other GL
+  // test's) against the CPU in float on high (the shared scene with the most fallback
+  // pixels), frames 0-1 at 160x90. The yardstick is how far the integrator's image lies
+  // from the default's on the CPU: a program that ran another integrator than the one its
+  // options name would differ from the CPU by about that much.
+  Scene s = testing::project_scene("high");
+  set_image_size(s, 160, 90);
+  const SceneModel m(s);
+  MethodOptions base;
+  base.precision = Precision::float32;
+  const std::vector<Image> cpu_default =
+      render(m, *make_method_on(Engine::cpu, "staa", testing::with_tables(base)), 0, 1);
+  for (const auto& [riemann, along_path] :
+       std::vector<std::pair<bool, bool>>{{true, true}, {false, false}}) {
+    MethodOptions o;
+    o.staa.fallback = riemann ? FallbackMode::riemann : FallbackMode::quadrature;
+    o.staa.fallback_along_path = along_path;
+    MethodOptions of = o;
+    of.precision = Precision::float32;
+    const std::vector<Image> cpu =
+        render(m, *make_method_on(Engine::cpu, "staa", testing::with_tables(of)), 0, 1);
+    const std::vector<Image> gl =
+        render(m, *make_method_on(Engine::gl, "staa", testing::with_tables(o)), 0, 1);
+    const double gl_cpu = compare_sequences(gl, cpu).rmse;
+    const double yardstick = compare_sequences(cpu, cpu_default).rmse;
+    std::printf(
+        "high staa --fallback %s --fallback-time %s: RMSE(GL - CPU float) %.3g, CPU - "
+        "CPU default %.3g\n",
+        riemann ? "riemann" : "quadrature", along_path ? "path" : "current", gl_cpu, yardstick);
+    EXPECT_GT(yardstick, 0) << riemann << along_path;
+    EXPECT_LE(gl_cpu, 0.1 * yardstick) << riemann << along_path;
+  }
+}
+
 TEST_F(GlEngineTest, GlReferenceIsWithinTheNoiseOfTwoCpuSeeds) {
   // The GL reference against the CPU reference with another seed (both at their default
   // samples): within 1.5 times the RMSE between two CPU seeds.

@@ -21,16 +21,6 @@ std::vector<gl::ShaderSource> sources() {
   return s;
 }
 
-std::string header(KernelEntry entry, int segments) {
-  const char* method = entry == KernelEntry::point           ? "SG_METHOD_POINT"
-                       : entry == KernelEntry::stratified    ? "SG_METHOD_STRATIFIED"
-                       : entry == KernelEntry::reference     ? "SG_METHOD_REFERENCE"
-                       : entry == KernelEntry::staa_temporal ? "SG_METHOD_STAA_TEMPORAL"
-                                                             : "SG_METHOD_STAA";
-  return std::string("#define ") + method + "\n#define SG_MAX_SEGMENTS " +
-         std::to_string(segments) + "\n";
-}
-
 }  // namespace
 
 const char* entry_name(KernelEntry e) {
@@ -49,14 +39,40 @@ const char* entry_name(KernelEntry e) {
   return "?";
 }
 
-gl::Program kernel_program(KernelEntry entry, int segments) {
-  const std::vector<gl::ShaderSource> s = sources();
-  return gl::Program::compute(s, header(entry, segments));
+const char* entry_define(KernelEntry e) {
+  switch (e) {
+    case KernelEntry::point:
+      return "SG_METHOD_POINT";
+    case KernelEntry::stratified:
+      return "SG_METHOD_STRATIFIED";
+    case KernelEntry::reference:
+      return "SG_METHOD_REFERENCE";
+    case KernelEntry::staa_temporal:
+      return "SG_METHOD_STAA_TEMPORAL";
+    case KernelEntry::staa:
+      return "SG_METHOD_STAA";
+  }
+  return "";
 }
 
-std::string kernel_program_text(KernelEntry entry, int segments) {
+std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o) {
+  std::string h = std::string("#define ") + entry_define(entry) + "\n#define SG_MAX_SEGMENTS " +
+                  std::to_string(o.segments) + "\n";
+  if (entry == KernelEntry::staa) {
+    h += std::string("#define SG_STAA_FALLBACK_RIEMANN ") + (o.fallback_riemann ? "1" : "0") +
+         "\n#define SG_STAA_FALLBACK_ALONG_PATH " + (o.fallback_along_path ? "1" : "0") + "\n";
+  }
+  return h;
+}
+
+gl::Program kernel_program(KernelEntry entry, const ProgramOptions& o) {
   const std::vector<gl::ShaderSource> s = sources();
-  return gl::assemble_shader(s, header(entry, segments)).text;
+  return gl::Program::compute(s, kernel_program_header(entry, o));
+}
+
+std::string kernel_program_text(KernelEntry entry, const ProgramOptions& o) {
+  const std::vector<gl::ShaderSource> s = sources();
+  return gl::assemble_shader(s, kernel_program_header(entry, o)).text;
 }
 
 std::string kernel_fingerprint() {

@@ -1,8 +1,8 @@
 // The GL engine's compute programs: the shading kernel's GLSL (kernel/kernel.glsl, after
 // the GLSL prelude and the interface) and the engine's main (gl_engine/shaders/main.glsl),
-// embedded in the binary, assembled for one method and compiled. The method and the cap on
-// the path's sub-arcs are the header's #defines, so each variant's shader holds only its
-// method's code and arrays of the size it needs.
+// embedded in the binary, assembled for one method and compiled. The method, the cap on
+// the path's sub-arcs and staa's fallback integrator are the header's #defines, so each
+// variant's shader holds only its method's code and arrays of the size it needs.
 #pragma once
 
 #include <string>
@@ -15,11 +15,27 @@ enum class KernelEntry { point, stratified, reference, staa_temporal, staa };
 
 const char* entry_name(KernelEntry e);
 
-// The program of `entry` with at most `segments` sub-arcs (SG_MAX_SEGMENTS).
-gl::Program kernel_program(KernelEntry entry, int segments);
+// The #define of `entry`'s method (SG_METHOD_POINT, ...).
+const char* entry_define(KernelEntry e);
+
+// What a program fixes in its text; every other option is a uniform. `staa`'s fallback
+// integrator selects code (kernel/staa.glsl, staa_fallback_share): a program holds the
+// one it runs, since code that never runs still costs a shader (docs/benchmarks.md).
+struct ProgramOptions {
+  int segments = 1;                 // the cap on the path's sub-arcs (SG_MAX_SEGMENTS)
+  bool fallback_riemann = false;    // staa: SG_STAA_FALLBACK_RIEMANN
+  bool fallback_along_path = true;  // staa: SG_STAA_FALLBACK_ALONG_PATH
+};
+
+// The header of `entry`'s program: its #defines, before the kernel's sources (the web
+// page's programs take the same, web/web_page.cpp).
+std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o);
+
+// The program of `entry` with the options `o`.
+gl::Program kernel_program(KernelEntry entry, const ProgramOptions& o);
 
 // The assembled text of that program, as handed to the driver (for tests and `--dump`).
-std::string kernel_program_text(KernelEntry entry, int segments);
+std::string kernel_program_text(KernelEntry entry, const ProgramOptions& o);
 // A fingerprint of the shading kernel's sources as built into this binary (both engines
 // compute with them): FNV-1a over every embedded file's name and bytes. The study's frame
 // cache keys on it, so that frames rendered by another kernel are not reused.

@@ -533,13 +533,25 @@ SG_FN real staa_vanishing_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table
 // the same work. The paper's Riemann sum has no such form: it is averaged by the midpoint
 // rule with samples closer than a third of the width of the mass-versus-position bump
 // (disk radius + RDF spread along the path), at most 32 per sub-segment.
+//
+// A GLSL program may fix the two options at compile time (SG_STAA_FALLBACK_RIEMANN and
+// SG_STAA_FALLBACK_ALONG_PATH, 0 or 1, in the header that gl_engine/kernel_program.cpp
+// writes): the other integrators' code then leaves the program. Code that never runs
+// still costs a shader: on llvmpipe the program with all four took 56 s to compile and
+// twice the time a frame of the one with its own integrator alone (docs/benchmarks.md).
 SG_FN real staa_fallback_share(IN(StaaParams) p, IN(StaaPath) path, int K, mat2 cov_r, real R) {
+#ifndef SG_STAA_FALLBACK_RIEMANN
+  bool riemann = p.fallback_riemann;
+  bool along_path = p.fallback_along_path;
+#else
+  bool riemann = SG_STAA_FALLBACK_RIEMANN != 0;
+  bool along_path = SG_STAA_FALLBACK_ALONG_PATH != 0;
+#endif
   real in_light = 0.0;
-  if (!p.fallback_along_path) {
-    in_light = p.fallback_riemann
-                   ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
-                   : gaussian_disk_mass(path.centre[K], cov_r, R);
-  } else if (!p.fallback_riemann) {
+  if (!along_path) {
+    in_light = riemann ? gaussian_disk_mass_riemann(path.centre[K], cov_r, R, p.riemann_cells)
+                       : gaussian_disk_mass(path.centre[K], cov_r, R);
+  } else if (!riemann) {
     for (int k = 0; k < K; ++k) {
       if (!(path.valid[k] && path.valid[k + 1])) continue;
       in_light += gaussian_disk_mass_along(path.centre[k], path.centre[k + 1], cov_r, R);
@@ -556,8 +568,7 @@ SG_FN real staa_fallback_share(IN(StaaParams) p, IN(StaaPath) path, int K, mat2 
       real seg = 0.0;
       for (int q = 0; q < n; ++q) {
         vec2 c = path.centre[k] + ((real(q) + 0.5) / real(n)) * d;
-        seg += p.fallback_riemann ? gaussian_disk_mass_riemann(c, cov_r, R, p.riemann_cells)
-                                  : gaussian_disk_mass(c, cov_r, R);
+        seg += gaussian_disk_mass_riemann(c, cov_r, R, p.riemann_cells);
       }
       in_light += seg / real(n);
     }

@@ -72,22 +72,6 @@ std::vector<PageMethod> page_methods() {
   };
 }
 
-const char* entry_define(gl_engine::KernelEntry e) {
-  switch (e) {
-    case gl_engine::KernelEntry::point:
-      return "SG_METHOD_POINT";
-    case gl_engine::KernelEntry::stratified:
-      return "SG_METHOD_STRATIFIED";
-    case gl_engine::KernelEntry::reference:
-      return "SG_METHOD_REFERENCE";
-    case gl_engine::KernelEntry::staa_temporal:
-      return "SG_METHOD_STAA_TEMPORAL";
-    case gl_engine::KernelEntry::staa:
-      return "SG_METHOD_STAA";
-  }
-  return "";
-}
-
 // The uniforms of the kernel's structs as gl_engine/uniforms.cpp writes them, by field.
 json staa_params(const kf::StaaParams& p) {
   return {{"per_pixel_ndf", p.per_pixel_ndf},
@@ -141,13 +125,15 @@ json methods_json(const kf::PathTableInfo& tinfo, const kf::KernelFitInfo& finfo
       uniforms["finfo"] = fit_info(finfo);
     }
     const uint64_t seed = m.options.seed;
-    out.push_back({{"id", m.id},
-                   {"label", m.label},
-                   {"define", entry_define(v.entry)},
-                   {"segments", v.segments},
-                   {"intersect_tolerance", v.intersect_tolerance},
-                   {"seed", {uint32_t(seed), uint32_t(seed >> 32)}},
-                   {"uniforms", uniforms}});
+    out.push_back(
+        {{"id", m.id},
+         {"label", m.label},
+         {"define", gl_engine::entry_define(v.entry)},
+         {"header", gl_engine::kernel_program_header(v.entry, gl_engine::program_options(v))},
+         {"segments", v.segments},
+         {"intersect_tolerance", v.intersect_tolerance},
+         {"seed", {uint32_t(seed), uint32_t(seed >> 32)}},
+         {"uniforms", uniforms}});
   }
   return out;
 }

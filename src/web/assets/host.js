@@ -373,7 +373,7 @@ const SunglintHost = (() => {
       padded.set(texels);
       if (this.wavesTexture) gl.deleteTexture(this.wavesTexture);
       this.wavesTexture = this.texture(gl.RGBA32F, width, rows, padded);
-      const p = this.program(variant.id, '#define ' + variant.define + '\n#define SG_MAX_SEGMENTS ' + variant.segments + '\n',
+      const p = this.program(variant.id, variant.header,
         ['kernel/glsl_es_prelude.glsl', 'kernel/interface.glsl', 'kernel/kernel.glsl', 'web/shaders/kernel.glsl']);
       this.use(p, uniforms, { waves: this.wavesTexture, table_f: this.tableF, table_s: this.tableS || this.tableF, fits: this.fits });
       const query = this.timer ? gl.createQuery() : null;
