@@ -169,7 +169,8 @@ SG_FN real gaussian_disk_mass(vec2 mean, mat2 cov, real R) {
 // the T terms, each below phi(z), correct it near the ends. What is left is a 1D integral
 // over y of the marginal times that, taken as gaussian_disk_mass takes its own
 // (y = R sin(u), the range clipped to +-9 deviations about c_y, pieces between the
-// integrand's kinks). A segment of length 0 is the instant's mass; a Gaussian that is a
+// integrand's kinks). A segment of length 0 is the instant's mass (the chord average's
+// limit, segment_chord_average); a Gaussian that is a
 // line along the segment (v_y = 0) has the one chord y = c_y.
 //
 // Each piece takes as many nodes as its integrand's features ask, from 8-point
@@ -185,25 +186,49 @@ SG_FN real gaussian_disk_mass(vec2 mean, mat2 cov, real R) {
 //    at each end takes the step and the rest is smooth; otherwise the piece is cut in
 //    sub-intervals of 2 delta. The steps weigh s / L against the overlap's L: where
 //    s < 0.02 L they are left to the ends' nodes;
-//  - at most 4 sub-intervals between the ends'.
+//  - at most 4 sub-intervals for the steps, 9 for the marginal (its 18 deviations).
 // Measured on the arguments the fallback met on the four shared scenes and fresnel-sky
 // (38,253 calls at 640x360) against 8 x 64 nodes a piece: 10.1 nodes a call instead of 29.2,
-// largest error 9.8e-7 instead of 8.0e-6 (docs/benchmarks.md).
-SG_FN real gaussian_tail_integral(real z) {
+// largest error 9.8e-7 instead of 8.0e-6 (with at most 4 sub-intervals for the marginal
+// too; 9 since, for the narrowest lines at L = 0: docs/benchmarks.md).
+// Phi(-|z|), the normal's upper tail beyond |z| (0 past 9 deviations, below 1.2e-19), and
+// with it T(|z|) = phi(z) - |z| Phi(-|z|).
+SG_FN real normal_upper_tail(real z) {
   real t = abs(z);
-  if (t >= 9.0) return 0.0;
-  return exp(-0.5 * t * t) * kInvSqrtTwoPi - t * 0.5 * erfc(t * kInvSqrtTwo);
+  return t >= 9.0 ? 0.0 : 0.5 * erfc(t * kInvSqrtTwo);
 }
 
+SG_FN real gaussian_tail_integral(real z, real upper) {
+  real t = abs(z);
+  if (t >= 9.0) return 0.0;
+  return exp(-0.5 * t * t) * kInvSqrtTwoPi - t * upper;
+}
+
+// The chord's time average along the segment (above). Where L is below a small fraction
+// d of s, the tails' differences would cancel (the precision's rounding times s / L), so
+// the average is taken as its value at the segment's middle, the instant's probability
+// Phi(z1) - Phi(z2) of the chord there (off by d^2 / 24 at most: d = 1e-5 in double,
+// 1e-2 in float, where rounding and that error balance); L = 0 is that instant. A segment
+// of length 0 thus takes this code, not the instant's own quadrature (gaussian_disk_mass):
+// code that a GL program holds costs it even where no pixel runs it (docs/benchmarks.md).
 SG_FN real segment_chord_average(real h, real m, real L, real s) {
-  real overlap = max(0.0, min(h, m + L) - max(-h, m));
-  if (!(s > 0.0)) return overlap / L;
-  real z1 = (h - m) / s;
-  real z2 = (-h - m) / s;
+  if (!(s > 0.0)) {
+    if (!(L > 0.0)) return abs(m) < h ? 1.0 : 0.0;
+    return max(0.0, min(h, m + L) - max(-h, m)) / L;
+  }
+  bool instant = !(L > (kDoublePrecision ? 1e-5 : 1e-2) * s);
+  real mc = instant ? m + 0.5 * L : m;
+  real z1 = (h - mc) / s;
+  real z2 = (-h - mc) / s;
+  real q1 = normal_upper_tail(z1);
+  real q2 = normal_upper_tail(z2);
+  if (instant) return z2 >= 0.0 ? q2 - q1 : (z1 <= 0.0 ? q1 - q2 : 1.0 - q1 - q2);
   real z3 = z1 - L / s;
   real z4 = z2 - L / s;
-  real tails = gaussian_tail_integral(z1) - gaussian_tail_integral(z2) -
-               gaussian_tail_integral(z3) + gaussian_tail_integral(z4);
+  real overlap = max(0.0, min(h, m + L) - max(-h, m));
+  real tails = gaussian_tail_integral(z1, q1) - gaussian_tail_integral(z2, q2) -
+               gaussian_tail_integral(z3, normal_upper_tail(z3)) +
+               gaussian_tail_integral(z4, normal_upper_tail(z4));
   return (overlap + s * tails) / L;
 }
 
@@ -229,10 +254,13 @@ SG_FN real disk_along_interval(real v0, real v1, real R, real cy, real sy, real 
 SG_FN real gaussian_disk_mass_along(vec2 a, vec2 b, mat2 cov, real R) {
   vec2 d = b - a;
   real L = length(d);
-  vec2 e = L > 0.0 ? d / L : vec2(1.0, 0.0);
+  // A segment of length 0 (the instant) is taken along the Gaussian's minor axis: the
+  // conditional's steps then lie across the marginal's major spread, as
+  // gaussian_disk_mass takes them.
+  PrincipalAxes pa = principal_axes(cov);
+  vec2 e = L > 0.0 ? d / L : vec2(-pa.u.y, pa.u.x);
   vec2 n = vec2(-e.y, e.x);
   real vy = dot(n, cov * n);
-  if (!(L > 0.0)) return gaussian_disk_mass(a, cov, R);
   real cy = dot(n, a);
   real ax = dot(e, a);
   if (!(vy > 0.0)) {
@@ -288,9 +316,9 @@ SG_FN real gaussian_disk_mass_along(vec2 a, vec2 b, mat2 cov, real R) {
     if (!(u1 > u0)) continue;
     real extent = R * (sin(u1) - sin(u0));
     real edge = steps && 6.0 * delta < 0.25 * (u1 - u0) ? 6.0 * delta : 0.0;
-    real parts = extent / (2.0 * sy);
-    if (steps && !(edge > 0.0)) parts = max(parts, (u1 - u0) / (2.0 * delta));
-    int m = int(clamp(ceil(parts), 1.0, 4.0));
+    real parts = min(extent / (2.0 * sy), 9.0);
+    if (steps && !(edge > 0.0)) parts = max(parts, min((u1 - u0) / (2.0 * delta), 4.0));
+    int m = int(clamp(ceil(parts), 1.0, 9.0));
     if (edge > 0.0) {
       mass += disk_along_interval(u0, u0 + edge, R, cy, sy, ax, r, L, s);
       mass += disk_along_interval(u1 - edge, u1, R, cy, sy, ax, r, L, s);

@@ -28,6 +28,7 @@ real float_normal_quantile(real p);
 real float_exp_minus_one(real u);
 vec2 float_sky_shares(const Frame& f, real y);
 SmoothTerms float_smooth_terms(const Frame& f, vec2 mu, mat2 cov, vec3 v);
+real float_gaussian_disk_mass_along(vec2 a, vec2 b, mat2 cov, real R);
 real float_light_pixel_coverage(const Camera& c, const Light& l, int i, int j);
 real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
 vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);

@@ -303,6 +303,10 @@ TEST(Staa, KernelsConvergeToTheExactRdfMass) {
 }
 
 TEST(Staa, FallbackAlongThePathEqualsTheCurrentTimeWithoutMotion) {
+  // With the shutter closed each sub-segment of the path has length 0: the average along
+  // it (the closed form's limit, gaussian.glsl) and the display time's mass (the instant's
+  // quadrature) are two quadratures of one integral, each within 4e-6 of it
+  // (gaussian_disk_test); on these pixels they agree to 7.4e-12 (values about 2e-3).
   Scene s = testing::project_scene("high");
   s.width = 160;
   s.height = 90;
@@ -314,7 +318,7 @@ TEST(Staa, FallbackAlongThePathEqualsTheCurrentTimeWithoutMotion) {
   for (int j = 50; j < 90; j += 5) {
     FrameContext c{m, frame_time(s, 2), 0};
     EXPECT_NEAR(testing::begun(StaaMethod(a, testing::path_tables()), c).shade(c, 80, j),
-                testing::begun(StaaMethod(b, testing::path_tables()), c).shade(c, 80, j), 1e-12);
+                testing::begun(StaaMethod(b, testing::path_tables()), c).shade(c, 80, j), 1e-10);
   }
 }
 

@@ -53,6 +53,9 @@ real float_normal_quantile(real p) {
 SmoothTerms float_smooth_terms(const Frame& f, vec2 mu, mat2 cov, vec3 v) {
   return smooth_terms(f, mu, cov, v);
 }
+real float_gaussian_disk_mass_along(vec2 a, vec2 b, mat2 cov, real R) {
+  return gaussian_disk_mass_along(a, b, cov, R);
+}
 real float_light_pixel_coverage(const Camera& c, const Light& l, int i, int j) {
   return light_pixel_coverage(c, l, i, j);
 }
