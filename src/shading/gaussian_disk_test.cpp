@@ -64,6 +64,22 @@ double chord_mass(const vec2& mean, const mat2& cov, double R) {
   return sum;
 }
 
+// A covariance of the tests along segments: major deviation R 10^(decades U - 1.5), minor
+// 0 (a line) or s1 10^(-decades U), the major axis at a uniform angle.
+struct RandomCovariance {
+  kd::mat2 cov;
+  double s1, s2;
+};
+RandomCovariance random_covariance(Pcg32& rng, double R, bool line, double decades) {
+  RandomCovariance c;
+  c.s1 = R * std::pow(10.0, decades * rng.uniform() - 1.5);
+  c.s2 = line ? 0.0 : c.s1 * std::pow(10.0, -decades * rng.uniform());
+  const double ang = kTwoPi * rng.uniform();
+  const vec2 u(std::cos(ang), std::sin(ang)), w(-u.y, u.x);
+  c.cov = c.s1 * c.s1 * glm::outerProduct(u, u) + c.s2 * c.s2 * glm::outerProduct(w, w);
+  return c;
+}
+
 TEST(GaussianDisk, PrincipalAxes) {
   mat2 c(vec2(4, 1.5), vec2(1.5, 1));
   PrincipalAxes p = principal_axes(c);
@@ -177,11 +193,9 @@ TEST(GaussianDisk, MassAlongASegmentEqualsTheMeanOverItsInstants) {
   const double R = 0.0047;
   double worst = 0;
   for (int q = 0; q < 60; ++q) {
-    const double s1 = R * std::pow(10.0, 2 * rng.uniform() - 1.5);
-    const double s2 = q % 10 == 0 ? 0.0 : s1 * std::pow(10.0, -2 * rng.uniform());
-    const double ang = kTwoPi * rng.uniform();
-    const vec2 u(std::cos(ang), std::sin(ang)), w(-u.y, u.x);
-    const kd::mat2 cov = s1 * s1 * glm::outerProduct(u, u) + s2 * s2 * glm::outerProduct(w, w);
+    const RandomCovariance rc = random_covariance(rng, R, q % 10 == 0, 2);
+    const double s1 = rc.s1, s2 = rc.s2;
+    const kd::mat2 cov = rc.cov;
     const double len = R * 40 * rng.uniform() * rng.uniform();
     const double dir = kTwoPi * rng.uniform();
     const vec2 mid = R * vec2(3 * rng.uniform() - 1.5, 3 * rng.uniform() - 1.5);
@@ -221,11 +235,9 @@ TEST(GaussianDisk, MassAlongASegmentOfLengthZeroIsTheInstantsMass) {
   const double R = 0.0047;
   double worst = 0, worst_instant = 0, worst_short = 0, worst_float = 0;
   for (int q = 0; q < 120; ++q) {
-    const double s1 = R * std::pow(10.0, 2.5 * rng.uniform() - 1.5);
-    const double s2 = q % 10 == 0 ? 0.0 : s1 * std::pow(10.0, -2.5 * rng.uniform());
-    const double ang = kTwoPi * rng.uniform();
-    const vec2 u(std::cos(ang), std::sin(ang)), w(-u.y, u.x);
-    const kd::mat2 cov = s1 * s1 * glm::outerProduct(u, u) + s2 * s2 * glm::outerProduct(w, w);
+    const RandomCovariance rc = random_covariance(rng, R, q % 10 == 0, 2.5);
+    const double s1 = rc.s1, s2 = rc.s2;
+    const kd::mat2 cov = rc.cov;
     const vec2 a = (R + 2 * s1) * vec2(3 * rng.uniform() - 1.5, 3 * rng.uniform() - 1.5);
     const double want = chord_mass(a, cov, R);
     const double got = kd::gaussian_disk_mass_along(a, a, cov, R);
