@@ -127,6 +127,10 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
          "specaa, bruneton (flat water): shade lattice cascades from their FFT fields (a cost "
          "fixed per cascade) or as their lattice's sines among the waves (exact, a cost that "
          "follows the waves)");
+  choice(app, "--cascade-fft", o.cascade_fft_gpu, {{"gpu", true}, {"host", false}},
+         "point, supersample, staa-temporal, staa on the GL engine with --cascades fields: "
+         "transform the cascades each frame on the GPU, into the wave buffer, or on the host "
+         "(uploaded); the CPU engine transforms on the host");
 
   // staa, staa-temporal (methods/staa.h)
   StaaOptions& s = o.staa;
@@ -262,6 +266,7 @@ static void scope_method_flags(const std::vector<const CLI::Option*>& options, M
       {"--segments", staa_both},
       {"--cascades",
        {"point", "supersample", "staa-temporal", "staa", "lean", "specaa", "bruneton"}},
+      {"--cascade-fft", {"point", "supersample", "staa-temporal", "staa"}},
   };
   // staa's own (methods/staa.h).
   const std::vector<std::string> staa = {"--ndf",

@@ -10,9 +10,8 @@
 #include "math/vec.h"
 
 namespace sg::gl_engine {
-namespace {
 
-gl::Program compile(const char* main_file, const std::string& header, bool with_spectra) {
+gl::Program cascade_program(const char* main_file, const std::string& header, bool with_spectra) {
   const auto& table = kernel_sources();
   std::vector<gl::ShaderSource> s;
   if (with_spectra) {
@@ -23,33 +22,19 @@ gl::Program compile(const char* main_file, const std::string& header, bool with_
   return gl::Program::compute(s, header);
 }
 
-// Levels n, n/2, ..., 1: the first vec4 of each (two vec4 per texel).
-std::vector<int> level_bases(int n) {
-  std::vector<int> bases;
-  int base = 0;
-  for (int side = n; side >= 1; side /= 2) {
-    bases.push_back(base);
-    base += 2 * side * side;
-  }
-  bases.push_back(base);  // the total
-  return bases;
-}
-
-}  // namespace
-
 CascadeFftGl::CascadeFftGl(int n) : n_(n) {
   if (n < kMinLattice || n > kMaxLattice || (n & (n - 1)) != 0)
     throw Error("CascadeFftGl: the lattice must be a power of two in [4, 1024], got " +
                 std::to_string(n));
-  spectrum_ = compile("cascade_spectrum.glsl", "", true);
-  fft_ = compile("cascade_fft.glsl", "#define SG_FFT_HALF " + std::to_string(n / 2) + "\n", false);
-  chain_ = compile("cascade_moments.glsl", "", false);
+  spectrum_ = cascade_program("cascade_spectrum.glsl", "", true);
+  fft_ = cascade_program("cascade_fft.glsl", "#define SG_FFT_HALF " + std::to_string(n / 2) + "\n",
+                         false);
   const size_t cells = static_cast<size_t>(n) * n;
   lattice_ = gl::Buffer(cells * 16);
   spectra_ = gl::Buffer(cells * 16);
   scratch_ = gl::Buffer(cells * 16);
-  field_ = gl::Buffer(cells * 16);
-  moments_ = gl::Buffer(static_cast<size_t>(level_bases(n).back()) * 16);
+  fields_[0] = gl::Buffer(cells * 16);
+  fields_[1] = gl::Buffer(cells * 16);
   // e^{i pi k / p} at p + k, for p = 1, 2, ..., n/2 and k < p (index 0 unused).
   std::vector<float> tw(2 * static_cast<size_t>(n), 0.0f);
   for (int p = 1; p < n; p <<= 1) {
@@ -81,13 +66,17 @@ void CascadeFftGl::set_lattice(const CascadeDesc& c, const Dispersion& water, do
   t0_ = t0;
 }
 
-void CascadeFftGl::evaluate(double t) {
+void CascadeFftGl::transform(Pair pair, double t, double t1, bool has_t1, int target) {
+  if (target < 0 || target > 1) throw Error("CascadeFftGl: field " + std::to_string(target));
   time_ = t;
   lattice_.bind(GL_SHADER_STORAGE_BUFFER, 0);
   spectra_.bind(GL_SHADER_STORAGE_BUFFER, 1);
   spectrum_.set("n", n_);
   spectrum_.set("dk", static_cast<float>(kTwoPi / patch_size_));
-  spectrum_.set("dt", static_cast<float>(t - t0_));
+  spectrum_.set("dt0", static_cast<float>(t - t0_));
+  spectrum_.set("dt1", static_cast<float>(has_t1 ? t1 - t0_ : 0.0));
+  spectrum_.set("mode", static_cast<int>(pair));
+  spectrum_.set("second", has_t1 ? 1 : 0);
   gl::dispatch_2d(spectrum_, n_, n_);
   gl::barrier(GL_SHADER_STORAGE_BARRIER_BIT);
   twiddles_.bind(GL_SHADER_STORAGE_BUFFER, 2);
@@ -99,29 +88,18 @@ void CascadeFftGl::evaluate(double t) {
   glDispatchCompute(static_cast<GLuint>(n_), 1, 1);
   gl::barrier(GL_SHADER_STORAGE_BARRIER_BIT);
   scratch_.bind(GL_SHADER_STORAGE_BUFFER, 0);
-  field_.bind(GL_SHADER_STORAGE_BUFFER, 1);
+  fields_[target].bind(GL_SHADER_STORAGE_BUFFER, 1);
   glDispatchCompute(static_cast<GLuint>(n_), 1, 1);
   gl::barrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void CascadeFftGl::build_moments() {
-  const std::vector<int> bases = level_bases(n_);
-  field_.bind(GL_SHADER_STORAGE_BUFFER, 0);
-  moments_.bind(GL_SHADER_STORAGE_BUFFER, 1);
-  int level = 0;
-  for (int side = n_; side >= 1; side /= 2, ++level) {
-    chain_.set("size", side);
-    chain_.set("from_field", level == 0 ? 1 : 0);
-    chain_.set("source_base", level == 0 ? 0 : bases[level - 1]);
-    chain_.set("target_base", bases[level]);
-    gl::dispatch_2d(chain_, side, side);
-    gl::barrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  }
+void CascadeFftGl::evaluate(double t) {
+  transform(Pair::full, t, 0.0, false, 0);
 }
 
 CascadeGrid CascadeFftGl::read_field() const {
   gl::barrier();
-  const std::vector<float> f = field_.read<float>();
+  const std::vector<float> f = fields_[0].read<float>();
   CascadeGrid g;
   g.n = n_;
   g.patch_size = patch_size_;
@@ -130,37 +108,14 @@ CascadeGrid CascadeFftGl::read_field() const {
   g.height.resize(cells);
   g.slope_x.resize(cells);
   g.slope_z.resize(cells);
+  g.curv_xz.resize(cells);
   for (size_t e = 0; e < cells; ++e) {
     g.slope_x[e] = f[4 * e];
     g.height[e] = f[4 * e + 1];
     g.slope_z[e] = f[4 * e + 2];
+    g.curv_xz[e] = f[4 * e + 3];
   }
   return g;
-}
-
-std::vector<MomentLevel> CascadeFftGl::read_moments() const {
-  gl::barrier();
-  const std::vector<float> m = moments_.read<float>();
-  const std::vector<int> bases = level_bases(n_);
-  std::vector<MomentLevel> levels;
-  int level = 0;
-  for (int side = n_; side >= 1; side /= 2, ++level) {
-    MomentLevel l;
-    l.n = side;
-    const size_t cells = static_cast<size_t>(side) * side;
-    for (auto* v : {&l.mx, &l.mz, &l.mxx, &l.mxz, &l.mzz})
-      v->resize(cells);
-    for (size_t e = 0; e < cells; ++e) {
-      const size_t at = 4 * (static_cast<size_t>(bases[level]) + 2 * e);
-      l.mx[e] = m[at];
-      l.mz[e] = m[at + 1];
-      l.mxx[e] = m[at + 2];
-      l.mxz[e] = m[at + 3];
-      l.mzz[e] = m[at + 4];
-    }
-    levels.push_back(std::move(l));
-  }
-  return levels;
 }
 
 }  // namespace sg::gl_engine

@@ -1,17 +1,19 @@
 // A cascade's per-frame FFT on the GPU (docs/ocean.md, "Cascades"): the GL engine's twin of
-// scene/cascade_fft.h. Per frame, three compute passes turn the lattice (A, phi, omega)
-// into the height and slopes on the patch's N x N grid: the spectra at the frame's time
+// scene/cascade_fft.h. Each transform is two compute passes' worth of work on the lattice
+// (A, phi, omega): the spectra of two complex fields at the wanted times
 // (shaders/cascade_spectrum.glsl, by the same text as the CPU: kernel/cascade_spectrum.glsl),
 // then the rows and the columns of the inverse 2-D FFT (shaders/cascade_fft.glsl: radix-2
-// Stockham in shared memory, one workgroup per row, each pass writing transposed); then, on
-// demand, the LEAN moment chain down to one texel (shaders/cascade_moments.glsl).
+// Stockham in shared memory, one workgroup per row, each pass writing transposed). Which
+// two fields a transform carries is its Pair; gl_engine/cascade_fields_gl.h combines them
+// into the kernel's LEAN chains.
 //
 // Float throughout. The phases are kept accurate over long animations by a time origin t0:
 // the host folds omega t0 into each phase in double (set_lattice), and the GPU adds
-// omega (t - t0) in float. The field is a storage buffer of vec4 (dh/dx, h, dh/dz, 0) per
-// grid point, entry q * N + p at x = (p, q) L / N, for the methods to read.
+// omega (t - t0) in float. A field is a storage buffer of vec4 (two complex numbers) per
+// grid point, entry q * N + p at x = (p, q) L / N.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "gl/buffer.h"
@@ -22,9 +24,21 @@
 
 namespace sg::gl_engine {
 
+// A compute program of the cascades' passes: gl_engine/shaders/`main_file` after `header`,
+// with the kernel's cascade spectra (kernel/cascade_spectrum.glsl) where `with_spectra`.
+gl::Program cascade_program(const char* main_file, const std::string& header = {},
+                            bool with_spectra = false);
+
 class CascadeFftGl {
  public:
-  // Compiles the three programs for lattices of n (a power of two in [4, 1024]); a GL
+  // What one transform carries (shaders/cascade_spectrum.glsl's modes):
+  //   full: (dh/dx, h, dh/dz, d2h/dxdz) at t;
+  //   curvature_and_slopes: (d2h/dx2, d2h/dz2) at t and (dh/dx, dh/dz) at t1;
+  //   two_slopes: (dh/dx, dh/dz) at t and at t1.
+  // The second pair is zero where the transform is told it has no t1.
+  enum class Pair { full = 0, curvature_and_slopes = 1, two_slopes = 2 };
+
+  // Compiles the two programs for lattices of n (a power of two in [4, 1024]); a GL
   // context must be current.
   explicit CascadeFftGl(int n);
   int n() const { return n_; }
@@ -32,22 +46,23 @@ class CascadeFftGl {
   // Uploads a cascade's lattice (its `lattice` must be n) with its frequencies at `water`'s
   // depth and its phases advanced to t0 (in double).
   void set_lattice(const CascadeDesc& c, const Dispersion& water, double t0);
-  // The field at time t (three dispatches); read it after gl::barrier().
+  double time_origin() const { return t0_; }
+  // One transform into field `target` (0 or 1): `pair` at t (and t1 where has_t1); read
+  // the field after gl::barrier().
+  void transform(Pair pair, double t, double t1, bool has_t1, int target);
+  // The height and slopes at time t: transform(Pair::full, t) into field 0.
   void evaluate(double t);
-  // The moment chain of the last field (log2 n + 1 levels; dispatches, one per level).
-  void build_moments();
 
-  const gl::Buffer& field() const { return field_; }
-  const gl::Buffer& moments() const { return moments_; }
-  // Read back (waits for the GPU): the field as a CascadeGrid, the chain as levels.
+  const gl::Buffer& field(int i) const { return fields_[i]; }
+  // Read back (waits for the GPU): field 0 as a CascadeGrid, after evaluate (the height,
+  // the slopes and d2h/dxdz in curv_xz; the other curvatures empty).
   CascadeGrid read_field() const;
-  std::vector<MomentLevel> read_moments() const;
 
  private:
   int n_;
   double patch_size_ = 0, t0_ = 0, time_ = 0;
-  gl::Program spectrum_, fft_, chain_;
-  gl::Buffer lattice_, spectra_, scratch_, field_, twiddles_, moments_;
+  gl::Program spectrum_, fft_;
+  gl::Buffer lattice_, spectra_, scratch_, fields_[2], twiddles_;
 };
 
 }  // namespace sg::gl_engine

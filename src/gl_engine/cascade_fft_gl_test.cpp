@@ -1,16 +1,21 @@
 // The GL engine's cascade FFT (gl_engine/cascade_fft_gl.h) against the CPU's in double
 // (scene/cascade_fft.h): the height and slopes of random full lattices (the Nyquist rows
 // included) at a time far from the origin, a single lattice point against its sine, and the
-// moment chain level by level. The bounds are float's: a few 1e-7 of the sums of the
-// amplitudes (height) and of the steepnesses (slopes) per FFT stage (1e-7: llvmpipe measured
-// 1.5e-8 to 3e-8 of the sums, and a GPU's sine and cosine are less exact than its).
+// fields' texels in the wave buffer (gl_engine/cascade_fields_gl.h) against the host's. The bounds
+// are float's: a few 1e-7 of the sums of the amplitudes (height) and of the steepnesses (slopes)
+// per FFT stage (1e-7: llvmpipe measured 1.5e-8 to 3e-8 of the sums, and a GPU's sine and cosine
+// are less exact than its).
 #include "gl_engine/cascade_fft_gl.h"
 
 #include <gtest/gtest.h>
 
-#include "testing/lattice.h"
-
+#include <array>
 #include <cmath>
+
+#include "gl_engine/cascade_fields_gl.h"
+#include "shading/kernel_frame.h"
+#include "testing/lattice.h"
+#include "testing/testing.h"
 
 #include "gl/dispatch.h"
 #include "math/rng.h"
@@ -94,28 +99,63 @@ TEST_F(CascadeFftGlTest, OneLatticePointIsItsSine) {
   }
 }
 
-TEST_F(CascadeFftGlTest, MomentChainIsTheCpusOfTheSameField) {
-  const int n = 64;
-  const CascadeDesc c = full_cascade(n, 50.0, 3);
-  CascadeFftGl gl(n);
-  gl.set_lattice(c, Dispersion{}, 0.0);
-  gl.evaluate(2.0);
-  gl.build_moments();
-  const std::vector<MomentLevel> got = gl.read_moments();
-  const std::vector<MomentLevel> want = moment_chain(gl.read_field());
-  ASSERT_EQ(got.size(), want.size());
-  ASSERT_EQ(got.size(), 7u);
-  for (size_t l = 0; l < got.size(); ++l) {
-    ASSERT_EQ(got[l].n, want[l].n);
-    double scale = 0;
-    for (double v : want[0].mxx)
-      scale = std::max(scale, v);
-    for (auto [a, b] : {std::pair{&got[l].mx, &want[l].mx},
-                        {&got[l].mz, &want[l].mz},
-                        {&got[l].mxx, &want[l].mxx},
-                        {&got[l].mxz, &want[l].mxz},
-                        {&got[l].mzz, &want[l].mzz}}) {
-      EXPECT_LT(max_abs_diff(*a, *b), 1e-6 * scale) << "level " << l;
+TEST_F(CascadeFftGlTest, FieldsAreTheHostsTexels) {
+  // Two random full cascades (lattices 16 and 8, on grids of 128 and 64) under the smooth
+  // scene's camera, at a time 10^4 s + 3.3 s (the GPU's time origin 10^4 + 0), with K = 1,
+  // 2, 3 and 4 path instants (the display time's two transforms, the slopes paired or
+  // alone) and a zero shutter (the display time's chain copied to every instant): every
+  // texel the GL engine's transforms write into the wave buffer against the host's
+  // (shading/cascade_fields.h, double rounded to float), component by component, within
+  // float's error relative to the largest value of that component; the headers, the
+  // bounds' texels and the frame's bounds against the host's.
+  Scene s = testing::project_scene("smooth");
+  s.surface.waves.clear();
+  s.surface.cascades = {full_cascade(16, 30.0, 1), full_cascade(8, 7.0, 2)};
+  s.surface.geometry = Geometry::displaced;
+  const SceneModel m(s);
+  CascadeFieldsGl gl;
+  for (const int segments : {1, 2, 3, 4}) {
+    for (const double shutter : {0.0, 0.04}) {
+      const FrameTime ft{0, 1.0e4 + 3.3 - shutter, 1.0e4 + 3.3};
+      KernelInputsF host, gpu;
+      build_kernel_inputs(m, ft, segments, 0, host, 0.25, 1, true, CascadeData::host);
+      build_kernel_inputs(m, ft, segments, 0, gpu, 0.25, 1, true, CascadeData::layout);
+      const CascadeLayout& layout = gpu.cascades->layout();
+      ASSERT_EQ(layout.end, host.texels.size());
+      ASSERT_EQ(gpu.frame.cascade_base, host.frame.cascade_base);
+      gl::Buffer waves(layout.end * 16);
+      waves.fill(0x7fc00000u);  // NaN: a texel left unwritten fails
+      const std::vector<glm::dvec3> bounds = gl.fill(m, ft, segments, layout, waves);
+      set_cascade_bounds(m, bounds, gpu);
+      std::vector<float> got = waves.read<float>();
+      for (size_t i = 0; i < gpu.texels.size(); ++i)
+        for (int c = 0; c < 4; ++c)
+          got[4 * i + c] = gpu.texels[i][c];
+      // The largest value of each of the eight components of a data texel pair.
+      std::array<double, 8> scale{};
+      for (size_t i = layout.data[0]; i < layout.end; ++i)
+        for (int c = 0; c < 4; ++c)
+          scale[4 * ((i - layout.data[0]) % 2) + c] = std::max(
+              scale[4 * ((i - layout.data[0]) % 2) + c], double(std::fabs(host.texels[i][c])));
+      double worst = 0;
+      for (size_t i = size_t(host.frame.cascade_base); i < layout.end; ++i) {
+        for (int c = 0; c < 4; ++c) {
+          const double want = host.texels[i][c], have = got[4 * i + c];
+          ASSERT_TRUE(std::isfinite(have)) << "texel " << i << "." << c;
+          if (i < layout.data[0]) {
+            EXPECT_NEAR(have, want, 1e-5 * std::fabs(want) + 1e-12) << "header " << i << "." << c;
+            continue;
+          }
+          const double sc = scale[4 * ((i - layout.data[0]) % 2) + c];
+          worst = std::max(worst, sc > 0 ? std::fabs(have - want) / sc : std::fabs(have - want));
+        }
+      }
+      std::printf("K = %d, shutter %.2f: largest |GL - host| over the component's largest %.3g\n",
+                  segments, shutter, worst);
+      EXPECT_LT(worst, 2e-5) << segments << " " << shutter;
+      EXPECT_NEAR(gpu.frame.amplitude_bound, host.frame.amplitude_bound,
+                  1e-5 * host.frame.amplitude_bound);
+      EXPECT_NEAR(gpu.frame.slope_bound, host.frame.slope_bound, 1e-5 * host.frame.slope_bound);
     }
   }
 }

@@ -55,6 +55,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   v.cascade_fields =
       o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa" ||
                            (method == "supersample" && o.samples.st == 1));
+  v.cascade_fft_gpu = o.cascade_fft_gpu;
   if (method == "point") {
     v.entry = KernelEntry::point;
   } else if (method == "reference") {
@@ -144,8 +145,11 @@ void GlEngine::upload(const FrameContext& ctx) {
                                        ? reference_time_split(ctx.model, ctx.time.duration())
                                        : ReferenceTimeSplit{v_.segments, 1};
   const int segments = split.segments;
+  const bool gpu_fields =
+      v_.cascade_fields && v_.cascade_fft_gpu && cascade_fields_apply(ctx.model);
   build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance,
-                      split.windows, v_.cascade_fields);
+                      split.windows, v_.cascade_fields,
+                      gpu_fields ? CascadeData::layout : CascadeData::host);
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);
@@ -154,18 +158,24 @@ void GlEngine::upload(const FrameContext& ctx) {
     width_ = w;
     height_ = h;
   }
-  // The wave buffer: at least one texel (a scene may have no waves), zeros past the waves.
-  std::vector<float> texels(
-      4 * size_t(not_power_of_two(int(std::max<size_t>(1, inputs_->texels.size())))), 0.0f);
+  // The wave buffer: at least one texel (a scene may have no waves); the host's texels,
+  // then, with the GPU's fields, the cascades' data written there.
+  const size_t used = gpu_fields ? inputs_->cascades->layout().end : inputs_->texels.size();
+  const size_t texels = size_t(not_power_of_two(int(std::max<size_t>(1, used))));
+  if (waves_.texels() != texels)
+    waves_ = gl::TextureBuffer(std::vector<float>(4 * texels, 0.0f), GL_RGBA32F);
+  if (gpu_fields) {
+    if (!fields_) fields_ = std::make_unique<CascadeFieldsGl>();
+    const std::vector<glm::dvec3> bounds =
+        fields_->fill(ctx.model, ctx.time, segments, inputs_->cascades->layout(), waves_.buffer());
+    set_cascade_bounds(ctx.model, bounds, *inputs_);
+  }
+  upload_.resize(4 * inputs_->texels.size());
   for (size_t i = 0; i < inputs_->texels.size(); ++i) {
     for (int c = 0; c < 4; ++c)
-      texels[4 * i + c] = inputs_->texels[i][c];
+      upload_[4 * i + c] = inputs_->texels[i][c];
   }
-  if (waves_.texels() * 4 != texels.size()) {
-    waves_ = gl::TextureBuffer(texels, GL_RGBA32F);
-  } else {
-    waves_.update(texels);
-  }
+  if (!upload_.empty()) waves_.update(upload_);
   UniformWriter u(program_);
   u.set("image_size", kf::ivec2(w, h));
   set_uniforms(u, "frame", inputs_->frame);

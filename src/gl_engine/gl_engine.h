@@ -8,7 +8,9 @@
 //
 // Per frame, on the host: the kernel's inputs in float (shading/kernel_frame.h: the phases
 // reduced in double at the frame's time, camera-relative, the waves sorted), uploaded as
-// the wave buffer texture and the kernel's structs as uniforms (gl_engine/uniforms.h); one
+// the wave buffer texture and the kernel's structs as uniforms (gl_engine/uniforms.h); a
+// scene's cascades transformed on the GPU into the same buffer (gl_engine/cascade_fields_gl.h;
+// `--cascade-fft host`: on the host, uploaded); one
 // dispatch (the sampling methods: passes of a few samples each, see pass_samples; the
 // reference's first pass runs its pilot); the weights stay in an RGBA32F image on the GPU until
 // read back. The tables (path tables, kernel fits) are uploaded once, as textures. Needs a current
@@ -24,6 +26,7 @@
 #include "gl/texture.h"
 #include "gl/texture_buffer.h"
 #include "gl/timer.h"
+#include "gl_engine/cascade_fields_gl.h"
 #include "gl_engine/kernel_program.h"
 #include "gl_engine/program_notice.h"
 #include "methods/method.h"
@@ -44,6 +47,8 @@ struct GlVariant {
   // --cascades fields: point, staa-temporal and staa read a scene's cascades from their
   // FFT fields in the wave buffer (shading/cascade_fields.h, built on the host).
   bool cascade_fields = false;
+  // --cascade-fft gpu: those fields transformed on the GPU (gl_engine/cascade_fields_gl.h).
+  bool cascade_fft_gpu = true;
 };
 GlVariant gl_variant(const std::string& method, const MethodOptions& options);
 
@@ -110,6 +115,8 @@ class GlEngine {
   int width_ = 0, height_ = 0;
   double last_ms_ = 0;
   std::unique_ptr<KernelInputsF> inputs_;
+  std::unique_ptr<CascadeFieldsGl> fields_;  // the cascades' transforms, on the first need
+  std::vector<float> upload_;                // the host's texels, as floats
 };
 
 }  // namespace sg::gl_engine

@@ -198,6 +198,11 @@ struct MethodOptions {
   // a cost that follows the waves). The other methods (reference, supersample with T > 1,
   // taa, microspec) take the sines.
   bool cascade_fields = true;
+  // --cascade-fft gpu|host: where the GL engine transforms the cascades' fields each frame:
+  // on the GPU, into the wave buffer (gl_engine/cascade_fields_gl.h), or on the host,
+  // uploaded with the waves (shading/cascade_fields.h). The CPU engine transforms them on
+  // the host.
+  bool cascade_fft_gpu = true;
   StaaOptions staa;
   LeanOptions lean;
   TaaOptions taa;

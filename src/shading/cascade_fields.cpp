@@ -23,30 +23,6 @@ size_t instant_texels(int n) {
   return 2 * ((4 * static_cast<size_t>(n) * n - 1) / 3);
 }
 
-// The same lattice on a grid cascade_oversampling times finer: each lattice point at its
-// own wave vector in the larger lattice (index m modulo the new size), the rest zero, so
-// that the inverse FFT samples the same surface more densely (a lattice's top octave,
-// sampled 2 to 4 times per period on its own grid, is 4 to 8 times on this one).
-CascadeDesc oversampled(const CascadeDesc& c) {
-  const int n = c.lattice, m = n * cascade_oversampling(n);
-  CascadeDesc o = c;
-  o.lattice = m;
-  auto d = std::make_shared<LatticeData>();
-  d->n = m;
-  d->amplitude.assign(static_cast<size_t>(m) * m, 0.0);
-  d->phase.assign(static_cast<size_t>(m) * m, 0.0);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const int ii = (lattice_frequency(i, n) + m) % m, jj = (lattice_frequency(j, n) + m) % m;
-      const size_t e = static_cast<size_t>(j) * n + i, f = static_cast<size_t>(jj) * m + ii;
-      d->amplitude[f] = c.data->amplitude[e];
-      d->phase[f] = c.data->phase[e];
-    }
-  }
-  o.data = d;
-  return o;
-}
-
 // Bounds on the bicubic interpolant of g's heights (kernel/cascade_grid.glsl,
 // cascade_interpolant_bounds) from the grid's maxima, the differences wrapping around
 // the periodic patch.
@@ -67,12 +43,36 @@ glm::dvec3 grid_interpolant_bounds(const CascadeGrid& g) {
       mxz = std::max(mxz, std::abs(h(i + 1, j + 1) - h(i + 1, j) - h(i, j + 1) + c));
     }
   }
-  const kd::vec3 b =
-      kd::cascade_interpolant_bounds(m0, kd::vec2(mx, mz), m2, mxz, g.patch_size / n);
-  return glm::dvec3(b.x, b.y, b.z);
+  return cascade_bounds_from_maxima({m0, mx, mz, m2, mxz}, g.patch_size / n);
 }
 
 }  // namespace
+
+CascadeDesc oversampled_cascade(const CascadeDesc& c) {
+  const int n = c.lattice, m = n * cascade_oversampling(n);
+  CascadeDesc o = c;
+  o.lattice = m;
+  auto d = std::make_shared<LatticeData>();
+  d->n = m;
+  d->amplitude.assign(static_cast<size_t>(m) * m, 0.0);
+  d->phase.assign(static_cast<size_t>(m) * m, 0.0);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const int ii = (lattice_frequency(i, n) + m) % m, jj = (lattice_frequency(j, n) + m) % m;
+      const size_t e = static_cast<size_t>(j) * n + i, f = static_cast<size_t>(jj) * m + ii;
+      d->amplitude[f] = c.data->amplitude[e];
+      d->phase[f] = c.data->phase[e];
+    }
+  }
+  o.data = d;
+  return o;
+}
+
+glm::dvec3 cascade_bounds_from_maxima(const std::array<double, 5>& maxima, double spacing) {
+  const kd::vec3 b = kd::cascade_interpolant_bounds(maxima[0], kd::vec2(maxima[1], maxima[2]),
+                                                    maxima[3], maxima[4], spacing);
+  return glm::dvec3(b.x, b.y, b.z);
+}
 
 void CascadeFields::prepare(const SceneModel& m) {
   if (model_ == m.id && !ffts_.empty()) return;
@@ -83,7 +83,7 @@ void CascadeFields::prepare(const SceneModel& m) {
   explicit_ = WaveField(m.scene.surface.waves);
   amplitude_sum_ = slope_sum_ = 0;
   for (const CascadeDesc& c : m.scene.surface.cascades) {
-    const CascadeDesc padded = oversampled(c);
+    const CascadeDesc padded = oversampled_cascade(c);
     auto fft = std::make_unique<CascadeFft>(padded.lattice);
     fft->set_lattice(padded, water);
     lattices_.push_back(padded.lattice);
@@ -109,7 +109,7 @@ void CascadeFields::prepare(const SceneModel& m) {
 
 template <class V4>
 int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
-                               double cam_z, std::vector<V4>& texels) {
+                               double cam_z, std::vector<V4>& texels, bool data) {
   using R = typename V4::value_type;
   prepare(m);
   const std::vector<CascadeDesc>& cs = m.scene.surface.cascades;
@@ -122,24 +122,29 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
   }
   // The interpolants' bounds (the display time's), one texel per cascade after the
   // headers: the sum over the cascades up to it (kernel/cascade_grid.glsl,
-  // cascade_bounds_first), filled in below.
-  const size_t bounds_at = texels.size();
+  // cascade_bounds_first), written by set_bounds.
+  layout_.base = base;
+  layout_.bounds_at = texels.size();
   texels.resize(texels.size() + cs.size(), V4(0));
-  std::vector<glm::dvec3> bounds(cs.size(), glm::dvec3(0.0));
-  // Each cascade's data at its own offset, the cascades on oneTBB's threads (each
-  // cascade's transforms share its rows among them too).
-  std::vector<size_t> offset(cs.size());
+  // Each cascade's data at its own offset.
+  layout_.data.assign(cs.size(), 0);
+  layout_.grid = lattices_;
   size_t at = texels.size();
   for (size_t c = 0; c < cs.size(); ++c) {
-    offset[c] = at;
+    layout_.data[c] = at;
     at += (segments + 1) * instant_texels(lattices_[c]);
   }
+  layout_.end = at;
+  if (!data) return base;
   texels.resize(at);
+  std::vector<glm::dvec3> bounds(cs.size(), glm::dvec3(0.0));
+  // The cascades on oneTBB's threads (each cascade's transforms share its rows among them
+  // too).
   tbb::parallel_for(size_t(0), cs.size(), [&](size_t c) {
     // The cascade's grid and chain, kept from frame to frame (no allocation per frame).
     CascadeGrid& grid = scratch_[c].grid;
     std::vector<MomentLevel>& chain = scratch_[c].chain;
-    V4* out = texels.data() + offset[c];
+    V4* out = texels.data() + layout_.data[c];
     // A zero shutter: every instant is the display time's.
     const bool still = !(ft.duration() > 0);
     if (still) {
@@ -148,7 +153,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
       bounds[c] = grid_interpolant_bounds(grid);
     }
     for (int k = 0; k <= segments; ++k) {
-      const double t = ft.end - ft.duration() * (segments - k) / segments;
+      const double t = cascade_instant(ft, segments, k);
       // The display time's curvatures and second moments; the other instants' slopes alone
       // (what the kernel reads there: cascade_fields.glsl), the rest of their texels 0.
       if (!still) {
@@ -177,13 +182,19 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
       }
     }
   });
+  set_bounds_impl(bounds, texels);
+  return base;
+}
+
+template <class V4>
+void CascadeFields::set_bounds_impl(const std::vector<glm::dvec3>& each, std::vector<V4>& texels) {
+  using R = typename V4::value_type;
   glm::dvec3 sum(0.0);
-  for (size_t c = 0; c < cs.size(); ++c) {
-    sum += bounds[c];
-    texels[bounds_at + c] = V4(R(sum.x), R(sum.y), R(sum.z), R(0));
+  for (size_t c = 0; c < each.size(); ++c) {
+    sum += each[c];
+    texels[layout_.bounds_at + c] = V4(R(sum.x), R(sum.y), R(sum.z), R(0));
   }
   bounds_ = sum;
-  return base;
 }
 
 const WaveField& CascadeFields::explicit_waves(const SceneModel& m) {
@@ -201,11 +212,27 @@ double CascadeFields::slope_sum(const SceneModel& m) {
 
 int CascadeFields::append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
                           double cam_z, std::vector<glm::dvec4>& texels) {
-  return append_impl(m, ft, segments, cam_x, cam_z, texels);
+  return append_impl(m, ft, segments, cam_x, cam_z, texels, true);
 }
 int CascadeFields::append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
                           double cam_z, std::vector<glm::vec4>& texels) {
-  return append_impl(m, ft, segments, cam_x, cam_z, texels);
+  return append_impl(m, ft, segments, cam_x, cam_z, texels, true);
+}
+int CascadeFields::append_layout(const SceneModel& m, const FrameTime& ft, int segments,
+                                 double cam_x, double cam_z, std::vector<glm::dvec4>& texels) {
+  return append_impl(m, ft, segments, cam_x, cam_z, texels, false);
+}
+int CascadeFields::append_layout(const SceneModel& m, const FrameTime& ft, int segments,
+                                 double cam_x, double cam_z, std::vector<glm::vec4>& texels) {
+  return append_impl(m, ft, segments, cam_x, cam_z, texels, false);
+}
+void CascadeFields::set_bounds(const std::vector<glm::dvec3>& each,
+                               std::vector<glm::dvec4>& texels) {
+  set_bounds_impl(each, texels);
+}
+void CascadeFields::set_bounds(const std::vector<glm::dvec3>& each,
+                               std::vector<glm::vec4>& texels) {
+  set_bounds_impl(each, texels);
 }
 
 }  // namespace sg

@@ -14,6 +14,7 @@
 // that follows the waves.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -37,6 +38,37 @@ inline int cascade_oversampling(int lattice) {
   return o;
 }
 
+// The same lattice on a grid cascade_oversampling times finer: each lattice point at its
+// own wave vector in the larger lattice (index m modulo the new size), the rest zero, so
+// that the inverse FFT samples the same surface more densely. What every engine transforms.
+CascadeDesc oversampled_cascade(const CascadeDesc& c);
+
+// Bounds on the bicubic interpolant of a height grid of spacing `spacing` (the height,
+// its slope along a horizontal direction, its second derivative along one:
+// kernel/cascade_grid.glsl, cascade_interpolant_bounds) from the grid's maxima over its
+// points (the differences wrapping around the periodic patch): max |h|, max |h(i+1,j) -
+// h(i,j)|, max |h(i,j+1) - h(i,j)|, the larger of max |h(i-1,j) - 2 h(i,j) + h(i+1,j)| and
+// max |h(i,j-1) - 2 h(i,j) + h(i,j+1)|, and max |h(i+1,j+1) - h(i+1,j) - h(i,j+1) +
+// h(i,j)|, in that order.
+glm::dvec3 cascade_bounds_from_maxima(const std::array<double, 5>& maxima, double spacing);
+
+// Where a frame's cascade data sit in the wave buffer: Frame.cascade_base (the headers),
+// the bounds' first texel, each cascade's first data texel (instant 0, level 0) and grid
+// side, and the end of the data.
+struct CascadeLayout {
+  int base = 0;
+  size_t bounds_at = 0;
+  std::vector<size_t> data;
+  std::vector<int> grid;
+  size_t end = 0;
+};
+
+// The time of the path's instant k of K = segments for frame ft (t_k = end - duration
+// (K - k) / K): where every engine transforms the cascades.
+inline double cascade_instant(const FrameTime& ft, int segments, int k) {
+  return ft.end - ft.duration() * (segments - k) / segments;
+}
+
 class CascadeFields {
  public:
   // Appends frame ft's fields (K = segments path sub-arcs, the instants
@@ -47,6 +79,19 @@ class CascadeFields {
              std::vector<glm::dvec4>& texels);
   int append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x, double cam_z,
              std::vector<glm::vec4>& texels);
+  // The layout alone, for an engine that transforms the cascades itself (the GL engine's
+  // CascadeFieldsGl): the headers are appended to `texels`, the bounds' texels appended as
+  // zeros (set_bounds writes them), the data not appended; layout() says where it goes.
+  int append_layout(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
+                    double cam_z, std::vector<glm::dvec4>& texels);
+  int append_layout(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
+                    double cam_z, std::vector<glm::vec4>& texels);
+  const CascadeLayout& layout() const { return layout_; }
+  // Writes the bounds' texels of the last append (each cascade's interpolant bounds, the
+  // texel of cascade c holding the sum over cascades 0..c) and keeps their sum
+  // (interpolant_bounds).
+  void set_bounds(const std::vector<glm::dvec3>& each, std::vector<glm::dvec4>& texels);
+  void set_bounds(const std::vector<glm::dvec3>& each, std::vector<glm::vec4>& texels);
   // The scene's explicit waves alone (the wave buffer's, when the cascades are fields).
   const WaveField& explicit_waves(const SceneModel& m);
   // The cascades' sum A and sum A |k| (bounds of their sines).
@@ -61,7 +106,9 @@ class CascadeFields {
  private:
   template <class V4>
   int append_impl(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
-                  double cam_z, std::vector<V4>& texels);
+                  double cam_z, std::vector<V4>& texels, bool data);
+  template <class V4>
+  void set_bounds_impl(const std::vector<glm::dvec3>& each, std::vector<V4>& texels);
   void prepare(const SceneModel& m);
 
   uint64_t model_ = 0;
@@ -77,6 +124,7 @@ class CascadeFields {
   WaveField explicit_;
   double amplitude_sum_ = 0, slope_sum_ = 0;
   glm::dvec3 bounds_{0.0};
+  CascadeLayout layout_;
 };
 
 // Whether a frame of `m` shades its cascades from fields: it has cascades (flat or

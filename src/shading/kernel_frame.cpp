@@ -105,9 +105,21 @@ void fill_camera_keys(const CameraDesc& c, const FrameTime& ft, const vec3& orig
   }
 }
 
+// The frame's bounds with the cascades' fields: the explicit waves' and the fields'
+// interpolants' (the surface the kernel sees).
+template <class In>
+void frame_cascade_bounds(const SceneModel& m, In& out) {
+  using R = decltype(out.frame.duration);
+  const WaveField& w = out.cascades->explicit_waves(m);
+  const glm::dvec3 cb = out.cascades->interpolant_bounds();
+  out.frame.amplitude_bound = R(w.amplitude_bound() + cb.x);
+  out.frame.slope_bound = R(w.slope_bound() + cb.y);
+}
+
 template <class In>
 void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
-           double intersect_tolerance, int windows, bool cascade_fields, In& out) {
+           double intersect_tolerance, int windows, bool cascade_fields, CascadeData data,
+           In& out) {
   using Frame = decltype(out.frame);
   using R = decltype(out.frame.duration);
   using V3 = decltype(out.frame.light.L);
@@ -216,11 +228,13 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
   // The cascades' fields after the sums (kernel/cascade_fields.glsl).
   if (fields) {
     f.cascade_count = static_cast<int>(m.scene.surface.cascades.size());
-    f.cascade_base = out.cascades->append(m, ft, segments, xc, zc, out.texels);
-    // The surface the kernel sees: the explicit waves and the fields' interpolants.
-    const glm::dvec3 cb = out.cascades->interpolant_bounds();
-    f.amplitude_bound = R(w.amplitude_bound() + cb.x);
-    f.slope_bound = R(w.slope_bound() + cb.y);
+    if (data == CascadeData::layout) {
+      // The engine transforms them and sets the bounds (set_cascade_bounds).
+      f.cascade_base = out.cascades->append_layout(m, ft, segments, xc, zc, out.texels);
+    } else {
+      f.cascade_base = out.cascades->append(m, ft, segments, xc, zc, out.texels);
+      frame_cascade_bounds(m, out);
+    }
   }
 }
 
@@ -300,13 +314,20 @@ kd::Frame widen(const kf::Frame& f) {
 
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsD& out, double intersect_tolerance, int windows,
-                         bool cascade_fields) {
-  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, out);
+                         bool cascade_fields, CascadeData data) {
+  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, data, out);
 }
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsF& out, double intersect_tolerance, int windows,
-                         bool cascade_fields) {
-  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, out);
+                         bool cascade_fields, CascadeData data) {
+  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, data, out);
+}
+
+void set_cascade_bounds(const SceneModel& m, const std::vector<glm::dvec3>& each,
+                        KernelInputsF& out) {
+  if (!out.cascades) throw Error("set_cascade_bounds: the frame has no cascade fields");
+  out.cascades->set_bounds(each, out.texels);
+  frame_cascade_bounds(m, out);
 }
 
 }  // namespace sg

@@ -96,15 +96,24 @@ inline constexpr double kDefaultIntersectTolerance = 0.25;
 // the reference's windows of the shutter (kernel/interface.glsl, Frame::windows; the
 // rotations are the last window's). `cascade_fields`: a scene's cascades go to the wave
 // buffer as FFT fields where cascade_fields_apply (shading/cascade_fields.h), else as
-// their lattice's sines among the waves.
+// their lattice's sines among the waves. `data`: the fields transformed here
+// (CascadeData::host), or only their layout laid out, the engine filling their data and
+// calling set_cascade_bounds (CascadeData::layout: the GL engine's transforms on the GPU,
+// gl_engine/cascade_fields_gl.h).
+enum class CascadeData { host, layout };
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsD& out,
                          double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1,
-                         bool cascade_fields = false);
+                         bool cascade_fields = false, CascadeData data = CascadeData::host);
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsF& out,
                          double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1,
-                         bool cascade_fields = false);
+                         bool cascade_fields = false, CascadeData data = CascadeData::host);
+// After a build with CascadeData::layout: the cascades' bounds texels and the frame's
+// amplitude and slope bounds from each cascade's interpolant bounds (the display time's,
+// cascade_bounds_from_maxima), as the host's build sets them.
+void set_cascade_bounds(const SceneModel& m, const std::vector<glm::dvec3>& each,
+                        KernelInputsF& out);
 
 // The wave buffer of `in` for the kernel; `vectorised`: with the arrays, so that the CPU
 // engine's vectorised sums run (else the kernel's own loops, the definitions).
