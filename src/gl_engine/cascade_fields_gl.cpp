@@ -47,16 +47,16 @@ void CascadeFieldsGl::prepare(const SceneModel& m, double t0) {
   t0_ = t0;
 }
 
-void CascadeFieldsGl::chain(const CascadeFftGl& fft, bool full, int field, int slot, size_t at,
-                            const gl::Buffer& waves) {
+void CascadeFieldsGl::chain(const CascadeFftGl& fft, Chain kind, int field, int slot, size_t at,
+                            const gl::Buffer& waves, bool levels) {
   const int n = fft.n();
   fft.field(field).bind(GL_SHADER_STORAGE_BUFFER, 0);
-  fft.field(full ? 1 : field).bind(GL_SHADER_STORAGE_BUFFER, 1);
+  fft.field(kind == Chain::full ? 1 : field).bind(GL_SHADER_STORAGE_BUFFER, 1);
   waves.bind(GL_SHADER_STORAGE_BUFFER, 2);
-  chain_.set("full", full ? 1 : 0);
+  chain_.set("full", static_cast<int>(kind));
   chain_.set("slot", slot);
   int level = 0;
-  for (int side = n; side >= 1; side /= 2, ++level) {
+  for (int side = n; side >= 1 && (levels || level == 0); side /= 2, ++level) {
     chain_.set("size", side);
     chain_.set("level", level);
     chain_.set("source", level == 0 ? 0 : int(at) + kd::cascade_level_offset(n, level - 1));
@@ -68,7 +68,7 @@ void CascadeFieldsGl::chain(const CascadeFftGl& fft, bool full, int field, int s
 
 std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTime& ft,
                                               int segments, const CascadeLayout& layout,
-                                              const gl::Buffer& waves) {
+                                              const gl::Buffer& waves, CascadeReads reads) {
   const std::vector<CascadeDesc>& cs = m.scene.surface.cascades;
   if (layout.data.size() != cs.size() || layout.grid.size() != cs.size())
     throw Error("CascadeFieldsGl: the layout is not the scene's cascades'");
@@ -88,16 +88,35 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
     const size_t per = static_cast<size_t>(kd::cascade_instant_texels(n));
     auto at = [&](int k) { return layout.data[c] + static_cast<size_t>(k) * per; };
     auto time = [&](int k) { return cascade_instant(ft, segments, k); };
+    auto bound = [&] {
+      fft.field(0).bind(GL_SHADER_STORAGE_BUFFER, 0);
+      maxima_.bind(GL_SHADER_STORAGE_BUFFER, 1);
+      bounds_.set("n", n);
+      bounds_.set("base", static_cast<int>(5 * c));
+      gl::dispatch_2d(bounds_, n, n);
+    };
+    if (reads != CascadeReads::all) {
+      // Level 0 alone: the display time's slopes and height, the other instants' slopes
+      // two to a transform.
+      fft.transform(Pair::full, time(segments), 0.0, false, 0);
+      chain(fft, Chain::display_level0, 0, 0, at(segments), waves, false);
+      bound();
+      if (reads == CascadeReads::display_level0) continue;
+      for (int k = 0; k < segments; k += 2) {
+        const bool pair = k + 1 < segments;
+        gl::barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        fft.transform(Pair::two_slopes, time(k), pair ? time(k + 1) : 0.0, pair, 0);
+        chain(fft, Chain::slopes, 0, 0, at(k), waves, false);
+        if (pair) chain(fft, Chain::slopes, 0, 1, at(k + 1), waves, false);
+      }
+      continue;
+    }
     // The display time: (dh/dx, h, dh/dz, d2h/dxdz), then (d2h/dx2, d2h/dz2) with the
     // slopes at t_0.
     fft.transform(Pair::full, time(segments), 0.0, false, 0);
     fft.transform(Pair::curvature_and_slopes, time(segments), time(0), !still, 1);
-    chain(fft, true, 0, 0, at(segments), waves);
-    fft.field(0).bind(GL_SHADER_STORAGE_BUFFER, 0);
-    maxima_.bind(GL_SHADER_STORAGE_BUFFER, 1);
-    bounds_.set("n", n);
-    bounds_.set("base", static_cast<int>(5 * c));
-    gl::dispatch_2d(bounds_, n, n);
+    chain(fft, Chain::full, 0, 0, at(segments), waves, true);
+    bound();
     if (still) {
       // Every instant is the display time's.
       gl::barrier();
@@ -106,12 +125,12 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
                                  GLintptr(at(k) * 16), GLsizeiptr(per * 16));
       continue;
     }
-    chain(fft, false, 1, 1, at(0), waves);
+    chain(fft, Chain::slopes, 1, 1, at(0), waves, true);
     for (int k = 1; k < segments; k += 2) {
       const bool pair = k + 1 < segments;
       fft.transform(Pair::two_slopes, time(k), pair ? time(k + 1) : 0.0, pair, 0);
-      chain(fft, false, 0, 0, at(k), waves);
-      if (pair) chain(fft, false, 0, 1, at(k + 1), waves);
+      chain(fft, Chain::slopes, 0, 0, at(k), waves, true);
+      if (pair) chain(fft, Chain::slopes, 0, 1, at(k + 1), waves, true);
     }
   }
   // The kernel's fetches and the host's read of the maxima after every write above.

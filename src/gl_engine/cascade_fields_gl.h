@@ -43,15 +43,20 @@ class CascadeFieldsGl {
   // at `layout`'s places and returns each cascade's bounds on its interpolants
   // (set_cascade_bounds in shading/kernel_frame.h takes them). Issues the barrier the
   // kernel's texel fetches need.
+  // `reads`: what the method reads (shading/cascade_fields.h), the rest not built.
   std::vector<glm::dvec3> fill(const SceneModel& m, const FrameTime& ft, int segments,
-                               const CascadeLayout& layout, const gl::Buffer& waves);
+                               const CascadeLayout& layout, const gl::Buffer& waves,
+                               CascadeReads reads = CascadeReads::all);
 
  private:
   void prepare(const SceneModel& m, double t0);
-  // An instant's chain into `waves` from texel `at`: `full`, the display time's from the
-  // transform's fields 0 and 1; else the slopes in field `field`'s pair `slot` (0: xy, 1: zw).
-  void chain(const CascadeFftGl& fft, bool full, int field, int slot, size_t at,
-             const gl::Buffer& waves);
+  // An instant's chain into `waves` from texel `at` (shaders/cascade_chain.glsl):
+  // Chain::full, the display time's from the transform's fields 0 and 1; Chain::slopes, the
+  // slopes in field `field`'s pair `slot` (0: xy, 1: zw); Chain::display_level0, level 0
+  // alone of field 0's slopes and height.
+  enum class Chain { slopes = 0, full = 1, display_level0 = 2 };
+  void chain(const CascadeFftGl& fft, Chain kind, int field, int slot, size_t at,
+             const gl::Buffer& waves, bool levels);
 
   uint64_t model_ = 0;
   double t0_ = 0;

@@ -56,6 +56,9 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
       o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa" ||
                            (method == "supersample" && o.samples.st == 1));
   v.cascade_fft_gpu = o.cascade_fft_gpu;
+  v.cascade_reads = method == "staa"            ? CascadeReads::all
+                    : method == "staa-temporal" ? CascadeReads::instants_level0
+                                                : CascadeReads::display_level0;
   if (method == "point") {
     v.entry = KernelEntry::point;
   } else if (method == "reference") {
@@ -149,7 +152,7 @@ void GlEngine::upload(const FrameContext& ctx) {
       v_.cascade_fields && v_.cascade_fft_gpu && cascade_fields_apply(ctx.model);
   build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance,
                       split.windows, v_.cascade_fields,
-                      gpu_fields ? CascadeData::layout : CascadeData::host);
+                      gpu_fields ? CascadeData::layout : CascadeData::host, v_.cascade_reads);
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);
@@ -167,7 +170,8 @@ void GlEngine::upload(const FrameContext& ctx) {
   if (gpu_fields) {
     if (!fields_) fields_ = std::make_unique<CascadeFieldsGl>();
     const std::vector<glm::dvec3> bounds =
-        fields_->fill(ctx.model, ctx.time, segments, inputs_->cascades->layout(), waves_.buffer());
+        fields_->fill(ctx.model, ctx.time, segments, inputs_->cascades->layout(), waves_.buffer(),
+                      v_.cascade_reads);
     set_cascade_bounds(ctx.model, bounds, *inputs_);
   }
   upload_.resize(4 * inputs_->texels.size());

@@ -49,6 +49,8 @@ struct GlVariant {
   bool cascade_fields = false;
   // --cascade-fft gpu: those fields transformed on the GPU (gl_engine/cascade_fields_gl.h).
   bool cascade_fft_gpu = true;
+  // What the entry reads of them (shading/cascade_fields.h), as the CPU's method does.
+  CascadeReads cascade_reads = CascadeReads::all;
 };
 GlVariant gl_variant(const std::string& method, const MethodOptions& options);
 

@@ -13,7 +13,9 @@
 //    over the footprint's parallelogram, measured and bounded;
 //  - displaced water: the height at grid points is the direct sum, the interpolant's
 //    gradient its finite differences, the interpolant within its bounds at random points,
-//    and the march's hits on the interpolated surface, the ray above it before them.
+//    and the march's hits on the interpolated surface, the ray above it before them;
+//  - the fields a method builds for what it reads (CascadeReads): `point`, `supersample`
+//    with T = 1 and `staa-temporal` shade the same, to rounding, as from the whole fields.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -500,6 +502,84 @@ TEST(CascadeFields, MarchWithinItsToleranceOfTheWholeSurface) {
   EXPECT_GT(moved, 0) << "the march leaves it out";
   EXPECT_LE(worst_surface, 1.0);
   EXPECT_LE(worst_dip, 1.0);
+}
+
+TEST(CascadeFields, ReducedReadsShadeTheSameAsTheWholeFields) {
+  // Flat and displaced, double and float, K = 1 to 3 (the slopes two to a transform on the
+  // GL engine, one left over at K = 2): every pixel of `point`, `supersample 2x2x1` and
+  // `staa-temporal` from the fields its method builds against the same pixel from the
+  // whole fields. Were a method to read a texel its reads leave out (a later level, the
+  // curvatures, an instant), the pixels would differ: the reduced texels are 0 there.
+  Sea sea = cascade_sea(0.5);
+  // Schlick's Fresnel and a sky gradient: every pixel's weights follow its normal.
+  sea.scene.surface.fresnel = FresnelMode::schlick;
+  sea.scene.sky = SkyDesc{Rgb(0.02), Rgb(0.1), 0.5, true};
+  int lit = 0;  // pixels that a read texel changes
+  for (const Geometry geometry : {Geometry::flat, Geometry::displaced}) {
+    sea.scene.surface.geometry = geometry;
+    const SceneModel m(sea.scene);
+    const FrameTime ft = frame_time(sea.scene, 3);
+    for (int K = 1; K <= 3; ++K) {
+      KernelInputsD all, display, instants;
+      KernelInputsF all_f, display_f, instants_f;
+      build_kernel_inputs(m, ft, K, 0, all, 0.25, 1, true);
+      build_kernel_inputs(m, ft, K, 0, display, 0.25, 1, true, CascadeData::host,
+                          CascadeReads::display_level0);
+      build_kernel_inputs(m, ft, K, 0, instants, 0.25, 1, true, CascadeData::host,
+                          CascadeReads::instants_level0);
+      build_kernel_inputs(m, ft, K, 0, all_f, 0.25, 1, true);
+      build_kernel_inputs(m, ft, K, 0, display_f, 0.25, 1, true, CascadeData::host,
+                          CascadeReads::display_level0);
+      build_kernel_inputs(m, ft, K, 0, instants_f, 0.25, 1, true, CascadeData::host,
+                          CascadeReads::instants_level0);
+      // Not vacuous: the reduced fields leave texels 0 that the whole fields fill, and the
+      // comparison sees a texel that is read: the display time's slopes of cascade 0 made
+      // 0 change the pixels.
+      size_t differ = 0;
+      for (size_t e = 0; e < all.texels.size(); ++e)
+        differ += all.texels[e] != display.texels[e];
+      ASSERT_GT(differ, all.texels.size() / 2);
+      KernelInputsD broken = display;
+      const CascadeLayout& lay = display.cascades->layout();
+      const size_t at =
+          lay.data[0] + static_cast<size_t>(K) * kd::cascade_instant_texels(lay.grid[0]);
+      for (size_t e = 0; e < static_cast<size_t>(lay.grid[0]) * lay.grid[0]; ++e)
+        broken.texels[at + 2 * e] = kd::vec4(0.0);
+      kd::SampleCounts n{2, 2, 1, true};
+      // The same to rounding: the whole fields' display-time slopes come from transforms
+      // that carry the curvatures too (scene/cascade_fft.h), a few 1e-16 apart.
+      auto same = [](auto a, auto b, double tol) {
+        for (int c = 0; c < 4; ++c)
+          if (!(std::fabs(double(a[c]) - double(b[c])) <= tol * (1.0 + std::fabs(double(a[c])))))
+            return false;
+        return true;
+      };
+      for (int j = 0; j < m.height(); ++j) {
+        for (int i = 0; i < m.width(); ++i) {
+          const kd::vec4 p = kd::point_pixel(wave_buffer(all), all.frame, i, j);
+          ASSERT_TRUE(same(p, kd::point_pixel(wave_buffer(display), display.frame, i, j), 1e-12))
+              << i << "," << j;
+          ASSERT_TRUE(same(kd::stratified_pixel(wave_buffer(all), all.frame, n, i, j),
+                           kd::stratified_pixel(wave_buffer(display), display.frame, n, i, j),
+                           1e-12));
+          ASSERT_TRUE(same(kd::staa_temporal_pixel(wave_buffer(all), all.frame, i, j),
+                           kd::staa_temporal_pixel(wave_buffer(instants), instants.frame, i, j),
+                           1e-12));
+          ASSERT_TRUE(same(kf::float_point_pixel(wave_buffer(all_f), all_f.frame, i, j),
+                           kf::float_point_pixel(wave_buffer(display_f), display_f.frame, i, j),
+                           1e-5));
+          ASSERT_TRUE(
+              same(kf::float_staa_temporal_pixel(wave_buffer(all_f), all_f.frame, i, j),
+                   kf::float_staa_temporal_pixel(wave_buffer(instants_f), instants_f.frame, i, j),
+                   1e-5));
+          lit += !same(p, kd::point_pixel(wave_buffer(broken), broken.frame, i, j), 1e-12);
+        }
+      }
+    }
+  }
+  std::printf("pixels that the display time's slopes of one cascade change: %d of %d\n", lit,
+              6 * sea.scene.width * sea.scene.height);
+  EXPECT_GT(lit, sea.scene.width * sea.scene.height);
 }
 
 }  // namespace

@@ -9,10 +9,10 @@ namespace sg {
 void KernelFrameInputs::build(const FrameContext& ctx) {
   if (precision_ == Precision::float64) {
     build_kernel_inputs(ctx.model, ctx.time, segments_, ctx.seed, d_, intersect_tolerance_,
-                        windows_, cascade_fields_);
+                        windows_, cascade_fields_, CascadeData::host, reads_);
   } else {
     build_kernel_inputs(ctx.model, ctx.time, segments_, ctx.seed, f_, intersect_tolerance_,
-                        windows_, cascade_fields_);
+                        windows_, cascade_fields_, CascadeData::host, reads_);
   }
   model_ = ctx.model.id;
   frame_ = ctx.time.frame;

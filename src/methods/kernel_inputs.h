@@ -14,15 +14,17 @@ class KernelFrameInputs {
   // intersection's tolerance in pixels (shading/kernel_frame.h; 0: every wave).
   // `windows`: the reference's windows of the shutter (kernel/interface.glsl).
   // `cascade_fields`: a scene's cascades as FFT fields where they apply
-  // (shading/kernel_frame.h), else as sines among the waves.
+  // (shading/kernel_frame.h), else as sines among the waves; `reads`, what the method
+  // reads of them (shading/cascade_fields.h).
   KernelFrameInputs(int segments, Precision precision,
                     double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1,
-                    bool cascade_fields = false)
+                    bool cascade_fields = false, CascadeReads reads = CascadeReads::all)
       : precision_(precision),
         segments_(segments),
         windows_(windows),
         intersect_tolerance_(intersect_tolerance),
-        cascade_fields_(cascade_fields) {}
+        cascade_fields_(cascade_fields),
+        reads_(reads) {}
   // Builds the inputs of ctx's frame.
   void build(const FrameContext& ctx);
   // Checks that the inputs are ctx's frame's, as the engine's begin_frame built them
@@ -42,6 +44,7 @@ class KernelFrameInputs {
   int windows_;
   double intersect_tolerance_;
   bool cascade_fields_;
+  CascadeReads reads_;
   KernelInputsD d_;
   KernelInputsF f_;
   uint64_t model_ = 0;

@@ -20,7 +20,8 @@ class StaaTemporalMethod final : public Method {
   explicit StaaTemporalMethod(int segments, Precision precision = Precision::float64,
                               double intersect_tolerance = kDefaultIntersectTolerance,
                               bool cascade_fields = true)
-      : inputs_(segments, precision, intersect_tolerance, 1, cascade_fields) {}
+      : inputs_(segments, precision, intersect_tolerance, 1, cascade_fields,
+                CascadeReads::instants_level0) {}
   std::string name() const override { return "staa-temporal"; }
   void begin_frame(const FrameContext& ctx) override { inputs_.build(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;

@@ -109,7 +109,8 @@ void CascadeFields::prepare(const SceneModel& m) {
 
 template <class V4>
 int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
-                               double cam_z, std::vector<V4>& texels, bool data) {
+                               double cam_z, std::vector<V4>& texels, bool data,
+                               CascadeReads reads) {
   using R = typename V4::value_type;
   prepare(m);
   const std::vector<CascadeDesc>& cs = m.scene.surface.cascades;
@@ -144,6 +145,27 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
     // The cascade's grid and chain, kept from frame to frame (no allocation per frame).
     CascadeGrid& grid = scratch_[c].grid;
     std::vector<MomentLevel>& chain = scratch_[c].chain;
+    if (reads != CascadeReads::all) {
+      // Level 0 alone: the display time's slopes and height, the other instants' slopes.
+      const size_t per = instant_texels(lattices_[c]);
+      for (int k = segments; k >= 0; --k) {
+        if (k < segments && reads == CascadeReads::display_level0) break;
+        const double t = cascade_instant(ft, segments, k);
+        if (k == segments) {
+          ffts_[c]->evaluate(t, false, grid);
+          bounds[c] = grid_interpolant_bounds(grid);
+        } else {
+          ffts_[c]->evaluate_slopes(t, grid);
+        }
+        V4* out = texels.data() + layout_.data[c] + static_cast<size_t>(k) * per;
+        const size_t count = static_cast<size_t>(grid.n) * grid.n;
+        for (size_t e = 0; e < count; ++e) {
+          *out++ = V4(R(grid.slope_x[e]), R(grid.slope_z[e]), R(0), R(0));
+          *out++ = V4(R(0), R(k == segments ? grid.height[e] : 0.0), R(0), R(0));
+        }
+      }
+      return;
+    }
     V4* out = texels.data() + layout_.data[c];
     // A zero shutter: every instant is the display time's.
     const bool still = !(ft.duration() > 0);
@@ -211,20 +233,20 @@ double CascadeFields::slope_sum(const SceneModel& m) {
 }
 
 int CascadeFields::append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
-                          double cam_z, std::vector<glm::dvec4>& texels) {
-  return append_impl(m, ft, segments, cam_x, cam_z, texels, true);
+                          double cam_z, std::vector<glm::dvec4>& texels, CascadeReads reads) {
+  return append_impl(m, ft, segments, cam_x, cam_z, texels, true, reads);
 }
 int CascadeFields::append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
-                          double cam_z, std::vector<glm::vec4>& texels) {
-  return append_impl(m, ft, segments, cam_x, cam_z, texels, true);
+                          double cam_z, std::vector<glm::vec4>& texels, CascadeReads reads) {
+  return append_impl(m, ft, segments, cam_x, cam_z, texels, true, reads);
 }
 int CascadeFields::append_layout(const SceneModel& m, const FrameTime& ft, int segments,
                                  double cam_x, double cam_z, std::vector<glm::dvec4>& texels) {
-  return append_impl(m, ft, segments, cam_x, cam_z, texels, false);
+  return append_impl(m, ft, segments, cam_x, cam_z, texels, false, CascadeReads::all);
 }
 int CascadeFields::append_layout(const SceneModel& m, const FrameTime& ft, int segments,
                                  double cam_x, double cam_z, std::vector<glm::vec4>& texels) {
-  return append_impl(m, ft, segments, cam_x, cam_z, texels, false);
+  return append_impl(m, ft, segments, cam_x, cam_z, texels, false, CascadeReads::all);
 }
 void CascadeFields::set_bounds(const std::vector<glm::dvec3>& each,
                                std::vector<glm::dvec4>& texels) {

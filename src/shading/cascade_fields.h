@@ -69,6 +69,17 @@ inline double cascade_instant(const FrameTime& ft, int segments, int k) {
   return ft.end - ft.duration() * (segments - k) / segments;
 }
 
+// What a method's kernel reads of the fields, so that a frame builds no more:
+//   all: every instant's chain (`staa`);
+//   instants_level0: level 0 of every instant, the slopes (the display time's height
+//     too; `staa-temporal`: its path's gradients are point reads);
+//   display_level0: level 0 of the display time, its slopes and height (`point`,
+//     `supersample` with T = 1).
+// Level 0 then holds (s_x, s_z, 0, 0), (0, h, 0, 0) at the display time and (s_x, s_z, 0,
+// 0), 0 at the other instants; what is not built stays 0. The images are the same to the
+// rounding (CascadeFields.ReducedReadsShadeTheSameAsTheWholeFields).
+enum class CascadeReads { all, instants_level0, display_level0 };
+
 class CascadeFields {
  public:
   // Appends frame ft's fields (K = segments path sub-arcs, the instants
@@ -76,9 +87,9 @@ class CascadeFields {
   // first appended texel's index is returned (Frame.cascade_base). The FFTs' lattices are
   // set once per scene model.
   int append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x, double cam_z,
-             std::vector<glm::dvec4>& texels);
+             std::vector<glm::dvec4>& texels, CascadeReads reads = CascadeReads::all);
   int append(const SceneModel& m, const FrameTime& ft, int segments, double cam_x, double cam_z,
-             std::vector<glm::vec4>& texels);
+             std::vector<glm::vec4>& texels, CascadeReads reads = CascadeReads::all);
   // The layout alone, for an engine that transforms the cascades itself (the GL engine's
   // CascadeFieldsGl): the headers are appended to `texels`, the bounds' texels appended as
   // zeros (set_bounds writes them), the data not appended; layout() says where it goes.
@@ -106,7 +117,7 @@ class CascadeFields {
  private:
   template <class V4>
   int append_impl(const SceneModel& m, const FrameTime& ft, int segments, double cam_x,
-                  double cam_z, std::vector<V4>& texels, bool data);
+                  double cam_z, std::vector<V4>& texels, bool data, CascadeReads reads);
   template <class V4>
   void set_bounds_impl(const std::vector<glm::dvec3>& each, std::vector<V4>& texels);
   void prepare(const SceneModel& m);

@@ -119,7 +119,7 @@ void frame_cascade_bounds(const SceneModel& m, In& out) {
 template <class In>
 void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
            double intersect_tolerance, int windows, bool cascade_fields, CascadeData data,
-           In& out) {
+           CascadeReads reads, In& out) {
   using Frame = decltype(out.frame);
   using R = decltype(out.frame.duration);
   using V3 = decltype(out.frame.light.L);
@@ -232,7 +232,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
       // The engine transforms them and sets the bounds (set_cascade_bounds).
       f.cascade_base = out.cascades->append_layout(m, ft, segments, xc, zc, out.texels);
     } else {
-      f.cascade_base = out.cascades->append(m, ft, segments, xc, zc, out.texels);
+      f.cascade_base = out.cascades->append(m, ft, segments, xc, zc, out.texels, reads);
       frame_cascade_bounds(m, out);
     }
   }
@@ -314,13 +314,13 @@ kd::Frame widen(const kf::Frame& f) {
 
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsD& out, double intersect_tolerance, int windows,
-                         bool cascade_fields, CascadeData data) {
-  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, data, out);
+                         bool cascade_fields, CascadeData data, CascadeReads reads) {
+  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, data, reads, out);
 }
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsF& out, double intersect_tolerance, int windows,
-                         bool cascade_fields, CascadeData data) {
-  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, data, out);
+                         bool cascade_fields, CascadeData data, CascadeReads reads) {
+  build(m, ft, segments, seed, intersect_tolerance, windows, cascade_fields, data, reads, out);
 }
 
 void set_cascade_bounds(const SceneModel& m, const std::vector<glm::dvec3>& each,

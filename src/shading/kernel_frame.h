@@ -99,16 +99,19 @@ inline constexpr double kDefaultIntersectTolerance = 0.25;
 // their lattice's sines among the waves. `data`: the fields transformed here
 // (CascadeData::host), or only their layout laid out, the engine filling their data and
 // calling set_cascade_bounds (CascadeData::layout: the GL engine's transforms on the GPU,
-// gl_engine/cascade_fields_gl.h).
+// gl_engine/cascade_fields_gl.h). `reads`: what the method's kernel reads of them
+// (shading/cascade_fields.h), the rest not built.
 enum class CascadeData { host, layout };
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsD& out,
                          double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1,
-                         bool cascade_fields = false, CascadeData data = CascadeData::host);
+                         bool cascade_fields = false, CascadeData data = CascadeData::host,
+                         CascadeReads reads = CascadeReads::all);
 void build_kernel_inputs(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed,
                          KernelInputsF& out,
                          double intersect_tolerance = kDefaultIntersectTolerance, int windows = 1,
-                         bool cascade_fields = false, CascadeData data = CascadeData::host);
+                         bool cascade_fields = false, CascadeData data = CascadeData::host,
+                         CascadeReads reads = CascadeReads::all);
 // After a build with CascadeData::layout: the cascades' bounds texels and the frame's
 // amplitude and slope bounds from each cascade's interpolant bounds (the display time's,
 // cascade_bounds_from_maxima), as the host's build sets them.

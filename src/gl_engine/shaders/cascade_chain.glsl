@@ -8,6 +8,8 @@
 // (d2h/dx2, d2h/dz2, ., .), level 0's b.y holding the height h in the place of s_x^2 (a
 // grid point has no spread: level 1 takes its slope's square instead); at the path's other
 // instants the slopes alone, (dh/dx, dh/dz) from field_a's xy or zw (`slot`), the rest 0.
+// A method that reads level 0 alone (shading/cascade_fields.h, CascadeReads) takes the
+// display time's level 0 as (s_x, s_z, 0, 0), (0, h, 0, 0) (`full` 2) and no later level.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 0) readonly buffer FieldA {
@@ -22,7 +24,8 @@ layout(std430, binding = 2) buffer Waves {
 
 uniform int size;    // this level's side
 uniform int level;   // 0: from the fields
-uniform int full;    // 1: the display time's chain; 0: slopes alone
+uniform int full;    // 1: the display time's chain; 0: slopes alone; 2: the display time's
+                     // slopes and height alone
 uniform int slot;    // slopes alone, level 0: 0 field_a.xy, 1 field_a.zw
 uniform int source;  // the previous level's first texel in `waves`
 uniform int target;  // this level's first texel
@@ -34,10 +37,13 @@ void main() {
   vec4 a = vec4(0.0), b = vec4(0.0);
   if (level == 0) {
     vec4 f = field_a[i];
-    if (full != 0) {
+    if (full == 1) {
       vec4 g = field_b[i];
       a = vec4(f.x, f.z, g.x, g.y);
       b = vec4(f.w, f.y, f.x * f.z, f.z * f.z);
+    } else if (full == 2) {
+      a.xy = f.xz;
+      b.y = f.y;
     } else {
       a.xy = slot == 0 ? f.xy : f.zw;
     }
