@@ -191,13 +191,8 @@ SG_FN real gaussian_disk_mass(vec2 mean, mat2 cov, real R) {
 // (38,253 calls at 640x360) against 8 x 64 nodes a piece: 10.1 nodes a call instead of 29.2,
 // largest error 9.8e-7 instead of 8.0e-6 (with at most 4 sub-intervals for the marginal
 // too; 9 since, for the narrowest lines at L = 0: docs/benchmarks.md).
-// Phi(-|z|), the normal's upper tail beyond |z| (0 past 9 deviations, below 1.2e-19), and
-// with it T(|z|) = phi(z) - |z| Phi(-|z|).
-SG_FN real normal_upper_tail(real z) {
-  real t = abs(z);
-  return t >= 9.0 ? 0.0 : 0.5 * erfc(t * kInvSqrtTwo);
-}
-
+// T(|z|) = phi(z) - |z| Phi(-|z|) from upper = Phi(-|z|) (special.glsl,
+// normal_upper_tail); 0 past 9 deviations.
 SG_FN real gaussian_tail_integral(real z, real upper) {
   real t = abs(z);
   if (t >= 9.0) return 0.0;
@@ -222,7 +217,7 @@ SG_FN real segment_chord_average(real h, real m, real L, real s) {
   real z2 = (-h - mc) / s;
   real q1 = normal_upper_tail(z1);
   real q2 = normal_upper_tail(z2);
-  if (instant) return z2 >= 0.0 ? q2 - q1 : (z1 <= 0.0 ? q1 - q2 : 1.0 - q1 - q2);
+  if (instant) return normal_mass_of_tails(z2, z1, q2, q1);
   real z3 = z1 - L / s;
   real z4 = z2 - L / s;
   real overlap = max(0.0, min(h, m + L) - max(-h, m));
@@ -257,8 +252,13 @@ SG_FN real gaussian_disk_mass_along(vec2 a, vec2 b, mat2 cov, real R) {
   // A segment of length 0 (the instant) is taken along the Gaussian's minor axis: the
   // conditional's steps then lie across the marginal's major spread, as
   // gaussian_disk_mass takes them.
-  PrincipalAxes pa = principal_axes(cov);
-  vec2 e = L > 0.0 ? d / L : vec2(-pa.u.y, pa.u.x);
+  vec2 e = vec2(0.0);
+  if (L > 0.0) {
+    e = d / L;
+  } else {
+    PrincipalAxes pa = principal_axes(cov);
+    e = vec2(-pa.u.y, pa.u.x);
+  }
   vec2 n = vec2(-e.y, e.x);
   real vy = dot(n, cov * n);
   real cy = dot(n, a);
