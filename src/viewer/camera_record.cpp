@@ -5,6 +5,7 @@
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "scene/camera_path.h"
+#include "viewer/view_edits.h"
 
 namespace sg::viewer {
 
@@ -52,7 +53,7 @@ Scene CameraRecorder::scene(const Scene& base) const {
 }
 
 void write_recording(const std::string& path, const Scene& scene) {
-  write_file_atomic(path, scene_to_json(scene) + "\n");
+  write_view_scene(path, scene);
 }
 
 }  // namespace sg::viewer

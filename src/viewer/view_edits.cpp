@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <memory>
 
+#include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/fnv1a.h"
+#include "ocean/lattice_ocean.h"
 #include "scene/lattice.h"
 #include "scene/scene_limits.h"
 
@@ -51,11 +54,24 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
   }
   s.light.angular_radius_deg = e.sun_radius_deg;
   s.camera = e.camera;
+  // A cascaded scene's sea from the wind stays cascaded: `sunglint ocean --cascades C
+  // --lattice N` with the sliders' wind, C the scene's cascades, N its first one's lattice.
+  ocean::LatticeOcean lattices;
+  const bool cascaded = e.sea && !base.surface.cascades.empty();
   if (e.sea) {
     // ocean::generate's own checks name the flag of a bad value ("--wind-speed: ...").
-    s.surface.waves = ocean::generate(e.sea_params).waves;
     s.surface.cascades.clear();
-    s.surface.depth = std::numeric_limits<double>::infinity();
+    if (cascaded) {
+      ocean::CascadeParams cp;
+      cp.cascades = static_cast<int>(base.surface.cascades.size());
+      cp.lattice = base.surface.cascades[0].lattice;
+      lattices = ocean::generate_lattice(e.sea_params, cp);
+      s.surface.waves.clear();
+      s.surface.depth = lattices.depth;
+    } else {
+      s.surface.waves = ocean::generate(e.sea_params).waves;
+      s.surface.depth = std::numeric_limits<double>::infinity();
+    }
   }
   if (e.amplitude_scale != 1) {
     for (Wave& w : s.surface.waves)
@@ -63,6 +79,16 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
   }
   // The loader's checks, on the edited values (the cascades read again from their files).
   Scene out = parse_scene(scene_to_json(s), "the view's edits", s.source_dir);
+  if (cascaded) {
+    // The generated lattices (no files: write_view_scene writes them), each fingerprinted
+    // by its bytes as a file would be (frame cache keys).
+    for (CascadeDesc c : lattices.cascades) {
+      auto data = std::make_shared<LatticeData>(*c.data);
+      data->fingerprint = fnv1a64(lattice_npy_bytes(*data));
+      c.data = data;
+      out.surface.cascades.push_back(c);
+    }
+  }
   if (e.amplitude_scale != 1) {
     // The cascades' amplitudes scale too, checked by the loader's steepness rule; their
     // fingerprints change with the scale (frame cache keys).
@@ -88,6 +114,18 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
     }
   }
   return out;
+}
+
+void write_view_scene(const std::string& path, const Scene& scene) {
+  Scene s = scene;
+  const std::filesystem::path out(path);
+  for (size_t c = 0; c < s.surface.cascades.size(); ++c) {
+    CascadeDesc& d = s.surface.cascades[c];
+    if (!d.data) throw Error(path + ": surface.cascades[" + std::to_string(c) + "] has no data");
+    d.file = out.stem().string() + ".cascade" + std::to_string(c) + ".npy";
+    write_lattice((out.parent_path() / d.file).string(), *d.data);
+  }
+  write_file_atomic(path, scene_to_json(s) + "\n");
 }
 
 FrameTime view_time(const Scene& scene, double position) {

@@ -1,6 +1,7 @@
 // The viewer's scene edits: an unedited view is the scene exactly (so a saved view renders
 // as the file does), the light's angles round-trip through a direction, the amplitude
-// scale scales every wave, out-of-range edits are refused with the key's name, and
+// scale scales every wave, the wind's sea keeps a scene's cascades (and saves them beside
+// the file), out-of-range edits are refused with the key's name, and
 // fractional frame positions land between the frames' shutter intervals.
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include <filesystem>
 
 #include "base/error.h"
+#include "ocean/lattice_ocean.h"
 #include "scene/scene.h"
 #include "testing/paths.h"
 #include "viewer/view_edits.h"
@@ -110,6 +112,63 @@ TEST(ViewEdits, SeaFromAWindSpectrum) {
   // Another wind, another sea; a wind out of range refused by its flag's name.
   e.sea_params.wind_speed = 12;
   EXPECT_NE(edited_scene(s, e).surface.waves[10].amplitude, t.surface.waves[10].amplitude);
+  e.sea_params.wind_speed = 45;
+  try {
+    edited_scene(s, e);
+    FAIL() << "a 45 m/s wind was accepted";
+  } catch (const Error& err) {
+    EXPECT_NE(std::string(err.what()).find("--wind-speed"), std::string::npos) << err.what();
+  }
+}
+
+TEST(ViewEdits, SeaFromAWindSpectrumKeepsTheCascades) {
+  // A scene of two 32 x 32 cascades: the wind's sea is two cascades of 32 x 32 again, the
+  // lattices `sunglint ocean --cascades 2 --lattice 32` writes for that wind (no explicit
+  // waves), fingerprinted; another wind, other lattices and a higher sea; saved with its
+  // lattices beside it, the file loads back to the same lattices.
+  Scene s = simple();
+  ocean::CascadeParams cp;
+  cp.cascades = 2;
+  cp.lattice = 32;
+  s.surface.waves.clear();
+  s.surface.cascades = ocean::generate_lattice(ocean::OceanParams{}, cp).cascades;
+  ViewEdits e = edits_of(s);
+  e.sea = true;
+  e.sea_params.wind_speed = 7;
+  const Scene t = edited_scene(s, e);
+  const ocean::LatticeOcean want = ocean::generate_lattice(e.sea_params, cp);
+  ASSERT_EQ(t.surface.cascades.size(), 2u);
+  EXPECT_TRUE(t.surface.waves.empty());
+  auto variance = [](const Scene& sc) {
+    double v = 0;
+    for (const CascadeDesc& c : sc.surface.cascades)
+      for (double a : c.data->amplitude)
+        v += 0.5 * a * a;
+    return v;
+  };
+  for (size_t c = 0; c < 2; ++c) {
+    EXPECT_EQ(t.surface.cascades[c].lattice, 32);
+    EXPECT_EQ(t.surface.cascades[c].patch_size, want.cascades[c].patch_size);
+    EXPECT_EQ(t.surface.cascades[c].data->amplitude, want.cascades[c].data->amplitude);
+    EXPECT_NE(t.surface.cascades[c].data->fingerprint, 0u);
+  }
+  e.sea_params.wind_speed = 12;
+  const Scene u = edited_scene(s, e);
+  EXPECT_NE(u.surface.cascades[1].data->fingerprint, t.surface.cascades[1].data->fingerprint);
+  EXPECT_GT(variance(u), 2 * variance(t));
+  // Saved: the lattices beside the scene file, read back the same.
+  const std::string dir = sg::testing::binary_dir() + "/test_out/view_edits_test";
+  std::filesystem::create_directories(dir);
+  write_view_scene(dir + "/windy.json", u);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/windy.cascade1.npy"));
+  const Scene back = load_scene(dir + "/windy.json");
+  ASSERT_EQ(back.surface.cascades.size(), 2u);
+  for (size_t c = 0; c < 2; ++c) {
+    EXPECT_EQ(back.surface.cascades[c].data->amplitude, u.surface.cascades[c].data->amplitude);
+    EXPECT_EQ(back.surface.cascades[c].data->fingerprint, u.surface.cascades[c].data->fingerprint);
+  }
+  EXPECT_EQ(back.surface.depth, u.surface.depth);
+  // A wind out of range refused by its flag's name.
   e.sea_params.wind_speed = 45;
   try {
     edited_scene(s, e);

@@ -161,7 +161,7 @@ class Viewer {
           rgb[3 * k + c] = shot[4 * k + c];
       write_png_rgb8(o_.screenshot, scene_.width, scene_.height, rgb);
     }
-    if (!o_.save_scene.empty()) write_file_atomic(o_.save_scene, scene_to_json(scene_) + "\n");
+    if (!o_.save_scene.empty()) write_view_scene(o_.save_scene, scene_);
     std::string gpu = sides_[0].method + " " + fmt_ms(sides_[0].sum_gpu_ms / o_.frames);
     if (ref_ && ref_->batches() > 0) {
       gpu += ", reference " + std::to_string(ref_->batches()) + " batches (" +
@@ -531,7 +531,7 @@ class Viewer {
     try {
       check_output_file(path, false);
       if (what == 0) {
-        write_file_atomic(path, scene_to_json(scene_) + "\n");
+        write_view_scene(path, scene_);
       } else if (what == 1) {
         const ImageFormat f = image_format_of(path);
         if (f == ImageFormat::png)
@@ -635,7 +635,8 @@ class Viewer {
       e.amplitude_scale = amp;
       edited = true;
     }
-    // The sea from a wind spectrum, regenerated as the sliders move (explicit waves).
+    // The sea from a wind spectrum, regenerated as the sliders move (explicit waves, or the
+    // scene's number of cascades).
     bool sea = e.sea;
     if (ImGui::Checkbox("sea from a wind spectrum", &sea)) {
       e.sea = sea;
@@ -657,8 +658,15 @@ class Viewer {
         e.sea_params.fetch_km = fetch;
         edited = true;
       }
-      ImGui::TextWrapped("JONSWAP, %d waves (the scene's, 16 to 4096), seed %llu",
-                         e.sea_params.waves, static_cast<unsigned long long>(e.sea_params.seed));
+      if (base_.surface.cascades.empty()) {
+        ImGui::TextWrapped("JONSWAP, %d waves (the scene's, 16 to 4096), seed %llu",
+                           e.sea_params.waves, static_cast<unsigned long long>(e.sea_params.seed));
+      } else {
+        ImGui::TextWrapped("JONSWAP, %zu cascades of %d x %d (the scene's), seed %llu",
+                           base_.surface.cascades.size(), base_.surface.cascades[0].lattice,
+                           base_.surface.cascades[0].lattice,
+                           static_cast<unsigned long long>(e.sea_params.seed));
+      }
     }
     if (edited) set_edits(e, dirty);
     if (ImGui::Button("scene as loaded")) {
