@@ -32,9 +32,14 @@ void CascadeFieldsGl::prepare(const SceneModel& m, double t0) {
                     std::to_string(n) + " grid, past the GL FFT's " + std::to_string(kMaxLattice) +
                     ": use --cascade-fft host");
       }
-      // A transform per cascade (its lattice stays on the GPU); programs of one size are
-      // compiled once by the driver's cache.
-      ffts.push_back(std::make_unique<CascadeFftGl>(n));
+      // A transform per cascade (its lattice stays on the GPU), the last model's kept where
+      // its size is the same (the viewer's wind regenerates the lattices as a slider moves).
+      const size_t at = ffts.size();
+      if (at < ffts_.size() && ffts_[at] && ffts_[at]->n() == n) {
+        ffts.push_back(std::move(ffts_[at]));
+      } else {
+        ffts.push_back(std::make_unique<CascadeFftGl>(n));
+      }
     }
     ffts_ = std::move(ffts);
     model_ = m.id;
