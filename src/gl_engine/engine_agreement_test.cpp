@@ -2,8 +2,9 @@
 // only the shared ones (the GL reference was once biased on scenes the shared ones
 // never exercise). Random valid scenes (testing/random_scene.h, the finite-pixel test's
 // generator, here with 1 to 512 waves: side and back light, grazing and overhead sun,
-// Fresnel, sky gradients, colour, displaced water, low and far cameras, wild times) at
-// 24x16, one frame each, every method of the GL engine on both engines:
+// Fresnel, sky gradients, colour, displaced water, low and far cameras, wild times; every
+// third one's waves a generated sea of lattice cascades, with_cascades) at 24x16, one frame
+// each, every method of the GL engine on both engines:
 //   - point, supersample (2x2x2), staa-temporal, staa: the GL image against the CPU engine
 //     in float, within float's tolerance: at most 2% of the values (and at least one) may
 //     differ by more than 1e-3 of the image's largest value (a binary test at the disk's
@@ -46,6 +47,9 @@
 #include "base/atomic_file.h"
 #include "engine/render.h"
 #include "gl_engine/engines.h"
+#include "math/rng.h"
+#include "ocean/lattice_ocean.h"
+#include "scene/lattice.h"
 #include "testing/gl_context.h"
 #include "testing/path_tables.h"
 #include "testing/paths.h"
@@ -120,6 +124,38 @@ double float_range(const SceneModel& m) {
   return 16 * double(std::numeric_limits<float>::min()) * r;
 }
 
+// Every third scene a generated wind sea of lattice cascades in place of its waves (the
+// GL engine transforms them on the GPU, the CPU on the host: gl_engine/cascade_fields_gl.h):
+// 1 or 2 cascades of 16 or 32 (grids of 128 or 256), wind 3 to 20 m/s in any direction,
+// fetch 10 to 500 km, from a stream of its own (the other scenes stay the generator's).
+Scene with_cascades(Scene s, int k) {
+  Pcg32 rng(static_cast<uint64_t>(k), 17);
+  ocean::OceanParams p;
+  p.wind_speed = 3 + 17 * rng.uniform();
+  p.wind_direction_deg = 360 * rng.uniform() - 180;
+  p.fetch_km = 10 + 490 * rng.uniform();
+  p.seed = static_cast<uint64_t>(k);
+  ocean::CascadeParams c;
+  c.cascades = rng.uniform() < 0.5 ? 1 : 2;
+  c.lattice = c.cascades == 2 || rng.uniform() < 0.5 ? 32 : 16;
+  const ocean::LatticeOcean o = ocean::generate_lattice(p, c);
+  s.surface.waves.clear();
+  s.surface.cascades = o.cascades;
+  s.surface.depth = o.depth;
+  return s;
+}
+
+// A failing scene for the dump: its lattices beside it.
+void dump_scene(const std::string& path, Scene s) {
+  const std::filesystem::path out(path);
+  for (size_t c = 0; c < s.surface.cascades.size(); ++c) {
+    CascadeDesc& d = s.surface.cascades[c];
+    d.file = out.stem().string() + ".cascade" + std::to_string(c) + ".npy";
+    write_lattice((out.parent_path() / d.file).string(), *d.data);
+  }
+  write_file_atomic(path, scene_to_json(s));
+}
+
 Image render_one(const SceneModel& model, Method& m, int frame, uint64_t seed) {
   RenderSettings rs;
   rs.threads = 1;
@@ -165,13 +201,16 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   const auto t_start = std::chrono::steady_clock::now();
   for (int k = 0; k < scenes; ++k) {
     int frame = 0;
-    const Scene s = gen.next(24, 16, frame);
+    Scene s = gen.next(24, 16, frame);
     if (only >= 0 && k != only) continue;
+    if (k % 3 == 2) s = with_cascades(s, k);
     const SceneModel model(s);
     const double range = float_range(model);
     const std::string where =
         "random scene " + std::to_string(k) + " frame " + std::to_string(frame) + " (" +
-        std::to_string(s.surface.waves.size()) + " waves, " +
+        (s.surface.cascades.empty() ? std::to_string(s.surface.waves.size()) + " waves, "
+                                    : std::to_string(s.surface.cascades.size()) + " cascades of " +
+                                          std::to_string(s.surface.cascades[0].lattice) + ", ") +
         (s.surface.geometry == Geometry::displaced ? "displaced" : "flat") + ")";
     bool failed = false;
     std::string line = where + ":";
@@ -244,9 +283,8 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
     }
     std::printf("%s (CPU/GL)\n", line.c_str());
     if (failed) {
-      write_file_atomic(
-          dump + "/scene" + std::to_string(k) + "_frame" + std::to_string(frame) + ".json",
-          scene_to_json(s));
+      dump_scene(dump + "/scene" + std::to_string(k) + "_frame" + std::to_string(frame) + ".json",
+                 s);
     }
   }
   const double total =
