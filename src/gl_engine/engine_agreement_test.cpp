@@ -24,8 +24,8 @@
 //     two seeds is itself noisy), both plus float's tolerance.
 // Every bound also allows float's range: weights below float's smallest normal number,
 // which a GPU flushes to zero, times the scene's largest radiance (float_range).
-// Budget: at most 30 s in Release on the 2-core build machine: 15 scenes, 3.6 s measured
-// once the gl_programs fixture has compiled the programs (the CPU renders on one thread,
+// Budget: at most 30 s in Release on the 2-core build machine: 15 scenes (5 cascaded), 8.2 s
+// measured once the gl_programs fixture has compiled the programs (the CPU renders on one thread,
 // llvmpipe on both cores). The scenes that once cost minutes were a float march that
 // stood still far from the camera (kernel/intersect.glsl); 100 scenes now take about 40 s
 // once the programs are compiled. A longer run: SG_AGREE_SCENES=N SG_AGREE_SEED=S
