@@ -195,15 +195,10 @@ void run_lattice_ocean(const OceanArgs& a, const ocean::OceanParams& p, Scene sc
     // Explicit waves carry their frequencies; the depth is the lattices' only.
     scene.surface.depth = std::numeric_limits<double>::infinity();
   } else {
-    for (size_t c = 0; c < o.cascades.size(); ++c) {
-      CascadeDesc desc = o.cascades[c];
-      desc.file = out.stem().string() + ".cascade" + std::to_string(c) + ".npy";
-      write_lattice((out.parent_path() / desc.file).string(), *desc.data);
-      scene.surface.cascades.push_back(desc);
-    }
+    scene.surface.cascades = o.cascades;
   }
-  write_file_atomic(a.out, scene_to_json(scene) + "\n");
-  load_scene(a.out);  // what was written reads back (the loader's checks)
+  write_scene(a.out, scene);  // the lattices beside it
+  load_scene(a.out);          // what was written reads back (the loader's checks)
 
   std::printf(
       "%s: %zu cascades of %d x %d, Hs %.4g m (the spectrum's over the bands: %.4g m, "

@@ -49,7 +49,6 @@
 #include "gl_engine/engines.h"
 #include "math/rng.h"
 #include "ocean/lattice_ocean.h"
-#include "scene/lattice.h"
 #include "testing/gl_context.h"
 #include "testing/path_tables.h"
 #include "testing/paths.h"
@@ -143,17 +142,6 @@ Scene with_cascades(Scene s, int k) {
   s.surface.cascades = o.cascades;
   s.surface.depth = o.depth;
   return s;
-}
-
-// A failing scene for the dump: its lattices beside it.
-void dump_scene(const std::string& path, Scene s) {
-  const std::filesystem::path out(path);
-  for (size_t c = 0; c < s.surface.cascades.size(); ++c) {
-    CascadeDesc& d = s.surface.cascades[c];
-    d.file = out.stem().string() + ".cascade" + std::to_string(c) + ".npy";
-    write_lattice((out.parent_path() / d.file).string(), *d.data);
-  }
-  write_file_atomic(path, scene_to_json(s));
 }
 
 Image render_one(const SceneModel& model, Method& m, int frame, uint64_t seed) {
@@ -283,8 +271,8 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
     }
     std::printf("%s (CPU/GL)\n", line.c_str());
     if (failed) {
-      dump_scene(dump + "/scene" + std::to_string(k) + "_frame" + std::to_string(frame) + ".json",
-                 s);
+      write_scene(dump + "/scene" + std::to_string(k) + "_frame" + std::to_string(frame) + ".json",
+                  s);
     }
   }
   const double total =

@@ -125,6 +125,12 @@ Scene parse_scene(const std::string& json_text, const std::string& name_for_erro
 // prints and what cache keys hash.
 std::string scene_to_json(const Scene& scene);
 
+// Writes `scene` to `path` whole (temp file and rename), each cascade's lattice beside it
+// as `<stem>.cascade<c>.npy` (scene/lattice.h, write_lattice) and named so in the file:
+// what `sunglint ocean --cascades` writes, and a scene whose cascades were generated in
+// memory or loaded from another folder saved so that it renders as it is.
+void write_scene(const std::string& path, const Scene& scene);
+
 // Command-line overrides, checked by the same rules as the file ("--width: must be >= 1").
 void set_image_size(Scene& scene, int width, int height);
 

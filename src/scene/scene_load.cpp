@@ -694,6 +694,18 @@ int Scene::format_version() const {
   return grey() && !sky.gradient ? 1 : 2;
 }
 
+void write_scene(const std::string& path, const Scene& scene) {
+  Scene s = scene;
+  const std::filesystem::path out(path);
+  for (size_t c = 0; c < s.surface.cascades.size(); ++c) {
+    CascadeDesc& d = s.surface.cascades[c];
+    if (!d.data) throw Error(path + ": surface.cascades[" + std::to_string(c) + "] has no data");
+    d.file = out.stem().string() + ".cascade" + std::to_string(c) + ".npy";
+    write_lattice((out.parent_path() / d.file).string(), *d.data);
+  }
+  write_file_atomic(path, scene_to_json(s) + "\n");
+}
+
 std::string scene_to_json(const Scene& s) {
   auto v3 = [](const vec3& v) { return json::array({v.x, v.y, v.z}); };
   // Grey radiances as one number (format /1); colour and the gradient sky need format /2.

@@ -5,7 +5,6 @@
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "scene/camera_path.h"
-#include "viewer/view_edits.h"
 
 namespace sg::viewer {
 
@@ -53,7 +52,7 @@ Scene CameraRecorder::scene(const Scene& base) const {
 }
 
 void write_recording(const std::string& path, const Scene& scene) {
-  write_view_scene(path, scene);
+  write_scene(path, scene);
 }
 
 }  // namespace sg::viewer

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <memory>
 
-#include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/fnv1a.h"
 #include "ocean/lattice_ocean.h"
@@ -80,7 +78,7 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
   // The loader's checks, on the edited values (the cascades read again from their files).
   Scene out = parse_scene(scene_to_json(s), "the view's edits", s.source_dir);
   if (cascaded) {
-    // The generated lattices (no files: write_view_scene writes them), each fingerprinted
+    // The generated lattices (no files: write_scene writes them), each fingerprinted
     // by its bytes as a file would be (frame cache keys).
     for (CascadeDesc c : lattices.cascades) {
       auto data = std::make_shared<LatticeData>(*c.data);
@@ -114,18 +112,6 @@ Scene edited_scene(const Scene& base, const ViewEdits& e) {
     }
   }
   return out;
-}
-
-void write_view_scene(const std::string& path, const Scene& scene) {
-  Scene s = scene;
-  const std::filesystem::path out(path);
-  for (size_t c = 0; c < s.surface.cascades.size(); ++c) {
-    CascadeDesc& d = s.surface.cascades[c];
-    if (!d.data) throw Error(path + ": surface.cascades[" + std::to_string(c) + "] has no data");
-    d.file = out.stem().string() + ".cascade" + std::to_string(c) + ".npy";
-    write_lattice((out.parent_path() / d.file).string(), *d.data);
-  }
-  write_file_atomic(path, scene_to_json(s) + "\n");
 }
 
 FrameTime view_time(const Scene& scene, double position) {

@@ -159,7 +159,7 @@ TEST(ViewEdits, SeaFromAWindSpectrumKeepsTheCascades) {
   // Saved: the lattices beside the scene file, read back the same.
   const std::string dir = sg::testing::binary_dir() + "/test_out/view_edits_test";
   std::filesystem::create_directories(dir);
-  write_view_scene(dir + "/windy.json", u);
+  write_scene(dir + "/windy.json", u);
   EXPECT_TRUE(std::filesystem::exists(dir + "/windy.cascade1.npy"));
   const Scene back = load_scene(dir + "/windy.json");
   ASSERT_EQ(back.surface.cascades.size(), 2u);

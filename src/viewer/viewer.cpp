@@ -161,7 +161,7 @@ class Viewer {
           rgb[3 * k + c] = shot[4 * k + c];
       write_png_rgb8(o_.screenshot, scene_.width, scene_.height, rgb);
     }
-    if (!o_.save_scene.empty()) write_view_scene(o_.save_scene, scene_);
+    if (!o_.save_scene.empty()) write_scene(o_.save_scene, scene_);
     std::string gpu = sides_[0].method + " " + fmt_ms(sides_[0].sum_gpu_ms / o_.frames);
     if (ref_ && ref_->batches() > 0) {
       gpu += ", reference " + std::to_string(ref_->batches()) + " batches (" +
@@ -531,7 +531,7 @@ class Viewer {
     try {
       check_output_file(path, false);
       if (what == 0) {
-        write_view_scene(path, scene_);
+        write_scene(path, scene_);
       } else if (what == 1) {
         const ImageFormat f = image_format_of(path);
         if (f == ImageFormat::png)
