@@ -56,9 +56,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
       o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa" ||
                            (method == "supersample" && o.samples.st == 1));
   v.cascade_fft_gpu = o.cascade_fft_gpu;
-  v.cascade_reads = method == "staa"            ? CascadeReads::all
-                    : method == "staa-temporal" ? CascadeReads::instants_level0
-                                                : CascadeReads::display_level0;
+  v.cascade_reads = cascade_reads_of(method);
   if (method == "point") {
     v.entry = KernelEntry::point;
   } else if (method == "reference") {

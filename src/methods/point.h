@@ -15,8 +15,7 @@ class PointMethod final : public Method {
   explicit PointMethod(Precision precision = Precision::float64,
                        double intersect_tolerance = kDefaultIntersectTolerance,
                        bool cascade_fields = true)
-      : inputs_(1, precision, intersect_tolerance, 1, cascade_fields,
-                CascadeReads::display_level0) {}
+      : inputs_(1, precision, intersect_tolerance, 1, cascade_fields, cascade_reads_of("point")) {}
   std::string name() const override { return "point"; }
   void begin_frame(const FrameContext& ctx) override { inputs_.build(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;

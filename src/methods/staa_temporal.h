@@ -21,7 +21,7 @@ class StaaTemporalMethod final : public Method {
                               double intersect_tolerance = kDefaultIntersectTolerance,
                               bool cascade_fields = true)
       : inputs_(segments, precision, intersect_tolerance, 1, cascade_fields,
-                CascadeReads::instants_level0) {}
+                cascade_reads_of("staa-temporal")) {}
   std::string name() const override { return "staa-temporal"; }
   void begin_frame(const FrameContext& ctx) override { inputs_.build(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override;

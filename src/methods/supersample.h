@@ -38,7 +38,7 @@ class StratifiedMethod final : public Method {
       : name_(std::move(name)),
         settings_(settings),
         inputs_(1, precision, intersect_tolerance, 1, cascade_fields,
-                CascadeReads::display_level0) {}
+                cascade_reads_of("supersample")) {}
   std::string name() const override { return name_; }
   void begin_frame(const FrameContext& ctx) override { inputs_.build(ctx); }
   RadianceWeights weights(const FrameContext& ctx, int i, int j) const override {

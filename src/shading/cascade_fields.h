@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "scene/cascade_fft.h"
@@ -79,6 +80,13 @@ inline double cascade_instant(const FrameTime& ft, int segments, int k) {
 // 0), 0 at the other instants; what is not built stays 0. The images are the same to the
 // rounding (CascadeFields.ReducedReadsShadeTheSameAsTheWholeFields).
 enum class CascadeReads { all, instants_level0, display_level0 };
+// What a kernel method reads, by its name (`point`, `supersample`, `staa-temporal`, `staa`):
+// the one choice both engines make.
+inline CascadeReads cascade_reads_of(const std::string& method) {
+  if (method == "staa") return CascadeReads::all;
+  if (method == "staa-temporal") return CascadeReads::instants_level0;
+  return CascadeReads::display_level0;
+}
 
 class CascadeFields {
  public:
