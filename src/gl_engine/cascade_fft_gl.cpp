@@ -11,12 +11,13 @@
 
 namespace sg::gl_engine {
 
-gl::Program cascade_program(const char* main_file, const std::string& header, bool with_spectra) {
+gl::Program cascade_program(const char* main_file, const std::string& header,
+                            const char* kernel_file) {
   const auto& table = kernel_sources();
   std::vector<gl::ShaderSource> s;
-  if (with_spectra) {
+  if (kernel_file) {
     s.push_back(gl::embedded_source(table, "kernel/glsl_prelude.glsl"));
-    s.push_back(gl::embedded_source(table, "kernel/cascade_spectrum.glsl"));
+    s.push_back(gl::embedded_source(table, kernel_file));
   }
   s.push_back(gl::embedded_source(table, std::string("gl_engine/shaders/") + main_file));
   return gl::Program::compute(s, header);
@@ -26,9 +27,8 @@ CascadeFftGl::CascadeFftGl(int n) : n_(n) {
   if (n < kMinLattice || n > kMaxLattice || (n & (n - 1)) != 0)
     throw Error("CascadeFftGl: the lattice must be a power of two in [4, 1024], got " +
                 std::to_string(n));
-  spectrum_ = cascade_program("cascade_spectrum.glsl", "", true);
-  fft_ = cascade_program("cascade_fft.glsl", "#define SG_FFT_HALF " + std::to_string(n / 2) + "\n",
-                         false);
+  spectrum_ = cascade_program("cascade_spectrum.glsl", "", "kernel/cascade_spectrum.glsl");
+  fft_ = cascade_program("cascade_fft.glsl", "#define SG_FFT_HALF " + std::to_string(n / 2) + "\n");
   const size_t cells = static_cast<size_t>(n) * n;
   lattice_ = gl::Buffer(cells * 16);
   spectra_ = gl::Buffer(cells * 16);

@@ -25,9 +25,11 @@
 namespace sg::gl_engine {
 
 // A compute program of the cascades' passes: gl_engine/shaders/`main_file` after `header`,
-// with the kernel's cascade spectra (kernel/cascade_spectrum.glsl) where `with_spectra`.
+// and after the GLSL prelude and the kernel-subset file `kernel_file` where one is named
+// (kernel/cascade_spectrum.glsl, the spectra; kernel/cascade_chain.glsl, the chain's texels
+// and the height's differences: the CPU's text too).
 gl::Program cascade_program(const char* main_file, const std::string& header = {},
-                            bool with_spectra = false);
+                            const char* kernel_file = nullptr);
 
 class CascadeFftGl {
  public:

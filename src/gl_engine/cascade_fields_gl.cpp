@@ -12,11 +12,16 @@
 #include "kernel/kernel_double.h"
 #include "scene/dispersion.h"
 
+namespace sg::kd {
+// (after the kernel's types, kernel_double.h)
+#include "kernel/cascade_chain.glsl"
+}  // namespace sg::kd
+
 namespace sg::gl_engine {
 
 CascadeFieldsGl::CascadeFieldsGl()
-    : chain_(cascade_program("cascade_chain.glsl")),
-      bounds_(cascade_program("cascade_bounds.glsl")) {}
+    : chain_(cascade_program("cascade_chain.glsl", "", "kernel/cascade_chain.glsl")),
+      bounds_(cascade_program("cascade_bounds.glsl", "", "kernel/cascade_chain.glsl")) {}
 
 CascadeFieldsGl::~CascadeFieldsGl() = default;
 
@@ -54,6 +59,10 @@ void CascadeFieldsGl::prepare(const SceneModel& m, double t0) {
 
 void CascadeFieldsGl::chain(const CascadeFftGl& fft, Chain kind, int field, int slot, size_t at,
                             const gl::Buffer& waves, bool levels) {
+  // The pass's `full` is the chain's mode.
+  static_assert(int(Chain::slopes) == kd::kCascadeChainSlopes &&
+                int(Chain::full) == kd::kCascadeChainFull &&
+                int(Chain::display_level0) == kd::kCascadeChainSlopesHeight);
   const int n = fft.n();
   fft.field(field).bind(GL_SHADER_STORAGE_BUFFER, 0);
   fft.field(kind == Chain::full ? 1 : field).bind(GL_SHADER_STORAGE_BUFFER, 1);

@@ -1,7 +1,8 @@
 // The lattice cascades' FFT fields built on the GPU (docs/ocean.md, "Shading from the
 // cascades"): the GL engine's twin of shading/cascade_fields.h, writing the same texels
-// (to float rounding) into the wave buffer where the kernel reads them, so that a frame's
-// fields never cross the bus: the host lays out the headers and the bounds
+// (to float rounding; the chain and the height's differences by the same text,
+// kernel/cascade_chain.glsl) into the wave buffer where the kernel reads them, so that a
+// frame's fields never cross the bus: the host lays out the headers and the bounds
 // (build_kernel_inputs with CascadeData::layout), this fills each cascade's data.
 //
 // Per cascade and frame (the lattice oversampled as on the host, oversampled_cascade):
@@ -50,10 +51,11 @@ class CascadeFieldsGl {
 
  private:
   void prepare(const SceneModel& m, double t0);
-  // An instant's chain into `waves` from texel `at` (shaders/cascade_chain.glsl):
-  // Chain::full, the display time's from the transform's fields 0 and 1; Chain::slopes, the
-  // slopes in field `field`'s pair `slot` (0: xy, 1: zw); Chain::display_level0, level 0
-  // alone of field 0's slopes and height.
+  // An instant's chain into `waves` from texel `at` (shaders/cascade_chain.glsl), in the
+  // kernel's modes (kernel/cascade_chain.glsl, kCascadeChain*): Chain::full, the display
+  // time's from the transform's fields 0 and 1; Chain::slopes, the slopes in field
+  // `field`'s pair `slot` (0: xy, 1: zw); Chain::display_level0, level 0 alone of field 0's
+  // slopes and height.
   enum class Chain { slopes = 0, full = 1, display_level0 = 2 };
   void chain(const CascadeFftGl& fft, Chain kind, int field, int slot, size_t at,
              const gl::Buffer& waves, bool levels);

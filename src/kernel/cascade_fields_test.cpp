@@ -1,6 +1,9 @@
 // The cascades' FFT fields in the shading kernel (kernel/cascade_fields.glsl, built by
 // shading/cascade_fields.h) against the direct sums of the lattices' sines, on a generated
 // two-cascade sea of 32 x 32 lattices (2 x 1024 waves):
+//  - every texel the host writes (the LEAN chain, kernel/cascade_chain.glsl) against direct
+//    averaging of the grid over its block, and a CascadeFields kept from frame to frame
+//    against a fresh one;
 //  - at the coarser grid's points (which are the finer's too) the point-sampled slope is
 //    the direct sum at every path instant, to rounding;
 //  - between them, Catmull-Rom's error, measured and bounded;
@@ -88,6 +91,122 @@ vec2 direct_gradient(const std::vector<Wave>& waves, double x, double z, double 
 
 double instant_time(const FrameTime& ft, int K, int k) {
   return ft.end - ft.duration() * (K - k) / K;
+}
+
+// The grid the host transforms cascade c of m to at time t (what CascadeFields::append
+// evaluates: the lattice oversampled, at the scene's depth): with the curvatures, or the
+// slopes alone.
+CascadeGrid host_grid(const SceneModel& m, size_t c, double t, bool curvatures) {
+  const CascadeDesc padded = oversampled_cascade(m.scene.surface.cascades[c]);
+  CascadeFft fft(padded.lattice);
+  fft.set_lattice(padded, Dispersion{m.scene.surface.depth});
+  return curvatures ? fft.evaluate(t, true) : fft.evaluate_slopes(t);
+}
+
+TEST(CascadeFields, ChainIsTheBlockAverageOfTheGrid) {
+  // Every data texel CascadeFields::append writes against the grid averaged directly over
+  // the texel's aligned 2^l x 2^l block (Olano and Baker's LEAN moments), for each method's
+  // reads (CascadeReads), K = 2, a non-zero and a zero shutter (every instant the display
+  // time's): at the display time of the whole fields a = (E[s_x], E[s_z], E[h_xx],
+  // E[h_zz]), b = (E[h_xz], E[s_x^2], E[s_x s_z], E[s_z^2]) with level 0's b.y the height;
+  // at the other instants (s_x, s_z) and the rest 0; the reads other than `all` level 0
+  // alone, (s_x, s_z, 0, 0), (0, h, 0, 0) at the display time, (s_x, s_z, 0, 0), 0 at the
+  // instants they build; every texel not built 0. Within 1e-13 of each component's largest
+  // value.
+  const int K = 2;
+  for (const double shutter : {1.0, 0.0}) {
+    const Sea sea = cascade_sea(shutter);
+    const SceneModel m(sea.scene);
+    const FrameTime ft = frame_time(sea.scene, 3);
+    ASSERT_EQ(ft.duration() > 0, shutter > 0);
+    const vec3 cam = sea.scene.camera.position;
+    for (const CascadeReads reads :
+         {CascadeReads::all, CascadeReads::instants_level0, CascadeReads::display_level0}) {
+      CascadeFields fields;
+      std::vector<glm::dvec4> texels;
+      fields.append(m, ft, K, cam.x, cam.z, texels, reads);
+      const CascadeLayout& lay = fields.layout();
+      ASSERT_EQ(texels.size(), lay.end);
+      double worst = 0;
+      for (size_t c = 0; c < lay.data.size(); ++c) {
+        const int n = lay.grid[c];
+        for (int k = 0; k <= K; ++k) {
+          // A zero shutter: every instant the display time's (whole fields only).
+          const bool display = k == K || (reads == CascadeReads::all && shutter == 0);
+          const bool built = reads != CascadeReads::display_level0 || k == K;
+          const bool full = display && reads == CascadeReads::all;
+          const CascadeGrid g = host_grid(m, c, cascade_instant(ft, K, display ? K : k), display);
+          // Each component's want at every texel of every level, then its largest value.
+          std::vector<glm::dvec4> want;
+          for (int side = n, level = 0; side >= 1; side /= 2, ++level) {
+            const int block = n / side;
+            for (int q = 0; q < side; ++q) {
+              for (int p = 0; p < side; ++p) {
+                glm::dvec4 a(0.0), b(0.0);
+                for (int y = 0; y < block; ++y) {
+                  for (int x = 0; x < block; ++x) {
+                    const size_t e = static_cast<size_t>(q * block + y) * n + p * block + x;
+                    const double sx = g.slope_x[e], sz = g.slope_z[e];
+                    a += glm::dvec4(sx, sz, full ? g.curv_xx[e] : 0.0, full ? g.curv_zz[e] : 0.0);
+                    if (full) {
+                      b += glm::dvec4(g.curv_xz[e], level == 0 ? g.height[e] : sx * sx, sx * sz,
+                                      sz * sz);
+                    } else if (display && level == 0) {
+                      b += glm::dvec4(0.0, g.height[e], 0.0, 0.0);
+                    }
+                  }
+                }
+                const bool here = built && (level == 0 || reads == CascadeReads::all);
+                const double inv = here ? 1.0 / (block * block) : 0.0;
+                want.push_back(inv * a);
+                want.push_back(inv * b);
+              }
+            }
+          }
+          ASSERT_EQ(want.size(), static_cast<size_t>(kd::cascade_instant_texels(n)));
+          glm::dvec4 scale[2] = {glm::dvec4(0.0), glm::dvec4(0.0)};
+          for (size_t i = 0; i < want.size(); ++i)
+            scale[i % 2] = glm::max(scale[i % 2], glm::abs(want[i]));
+          const size_t at = lay.data[c] + static_cast<size_t>(k) * want.size();
+          for (size_t i = 0; i < want.size(); ++i) {
+            for (int j = 0; j < 4; ++j) {
+              const double d = std::fabs(texels[at + i][j] - want[i][j]);
+              const double sc = scale[i % 2][j];
+              ASSERT_LE(d, 1e-13 * sc)
+                  << "reads " << int(reads) << " shutter " << shutter << " cascade " << c
+                  << " instant " << k << " texel " << i << "." << j;
+              worst = std::max(worst, sc > 0 ? d / sc : d);
+            }
+          }
+        }
+      }
+      std::printf(
+          "reads %d, shutter %.1f: largest |texel - block average| %.3g of the "
+          "component's largest\n",
+          int(reads), shutter, worst);
+    }
+  }
+}
+
+TEST(CascadeFields, KeptFieldsWriteTheFreshTexels) {
+  // One CascadeFields appends frame after frame (its grids kept, whatever the reads and
+  // the instants before): every texel the fresh one's, bit for bit.
+  const Sea sea = cascade_sea(0.5);
+  const SceneModel m(sea.scene);
+  const vec3 cam = sea.scene.camera.position;
+  CascadeFields kept;
+  const CascadeReads order[] = {CascadeReads::all, CascadeReads::display_level0, CascadeReads::all,
+                                CascadeReads::instants_level0, CascadeReads::all};
+  for (int f = 0; f < 5; ++f) {
+    const FrameTime ft = frame_time(sea.scene, 2 + f);
+    const int K = 1 + f % 3;
+    std::vector<glm::dvec4> a, b;
+    kept.append(m, ft, K, cam.x, cam.z, a, order[f]);
+    CascadeFields fresh;
+    fresh.append(m, ft, K, cam.x, cam.z, b, order[f]);
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_TRUE(a == b) << "frame " << f;
+  }
 }
 
 TEST(CascadeFields, GridPointsAreTheDirectSum) {

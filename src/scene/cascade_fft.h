@@ -1,5 +1,6 @@
 // A cascade's water on its patch's N x N grid at one time, by inverse FFT (scene/lattice.h
-// defines the cascade), and the LEAN-style chain of its slopes' moments.
+// defines the cascade): what the LEAN chain of its slopes' moments is built from
+// (kernel/cascade_chain.glsl; shading/cascade_fields.h writes it into the wave buffer).
 //
 // On the grid x_pq = (p, q) L / N the lattice's phases are k_mn . x_pq = 2 pi (m p + n q) / N,
 // so with Z_mn = A_mn exp(i (omega_mn t + phi_mn)) (Tessendorf 2001, "Simulating Ocean
@@ -17,12 +18,6 @@
 // that ports sunglint may ship it; templated on the scalar, so the CPU engine runs it in
 // double; mixed radix), along rows then columns (a blocked transpose between), the rows
 // shared among oneTBB's threads.
-//
-// The moment chain (Olano and Baker 2010, "LEAN Mapping", Sec. 3: a filtered normal is
-// the mean of the slopes and their second moments over the footprint): level 0 holds each
-// grid point's slope s = (dh/dx, dh/dz) and s s^T; level l + 1 the mean of 2 x 2 blocks
-// of level l, down to one texel, so the mean and covariance of the slopes over any
-// aligned 2^l x 2^l block is one fetch: cov = E[s s^T] - E[s] E[s]^T.
 #pragma once
 
 #include <complex>
@@ -86,19 +81,5 @@ class CascadeFft {
   std::vector<Point> points_;
   std::vector<std::complex<double>> z_, a_, b_, c_;  // scratch of evaluate
 };
-
-// One level of the moment chain: n x n texels of the slopes' mean and second moments.
-struct MomentLevel {
-  int n = 0;
-  std::vector<double> mx, mz, mxx, mxz, mzz;  // E[s_x], E[s_z], E[s_x^2], E[s_x s_z], E[s_z^2]
-  // The block means of the second derivatives (the box-filtered field's curvatures; when
-  // the grid has them, else empty).
-  std::vector<double> hxx, hxz, hzz;
-};
-
-// Levels 0 (the grid, n x n) to log2 n (one texel: the whole patch).
-std::vector<MomentLevel> moment_chain(const CascadeGrid& g);
-// The same into `levels`, whose storage is kept from call to call.
-void moment_chain(const CascadeGrid& g, std::vector<MomentLevel>& levels);
 
 }  // namespace sg

@@ -3,9 +3,15 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "kernel/kernel_double.h"
+
+namespace sg::kd {
+// (after the kernel's types, kernel_double.h)
+#include "kernel/cascade_chain.glsl"
+}  // namespace sg::kd
 
 namespace sg {
 
@@ -18,32 +24,70 @@ int log2_exact(int n) {
   return l;
 }
 
-// Texels of one instant's chain (kernel/cascade_fields.glsl, cascade_instant_texels).
+// Texels of one instant's chain (kernel/cascade_grid.glsl, cascade_instant_texels).
 size_t instant_texels(int n) {
   return 2 * ((4 * static_cast<size_t>(n) * n - 1) / 3);
 }
 
 // Bounds on the bicubic interpolant of g's heights (kernel/cascade_grid.glsl,
-// cascade_interpolant_bounds) from the grid's maxima, the differences wrapping around
-// the periodic patch.
+// cascade_interpolant_bounds) from the maxima of the grid's differences
+// (kernel/cascade_chain.glsl, cascade_height_differences), wrapping around the periodic
+// patch.
 glm::dvec3 grid_interpolant_bounds(const CascadeGrid& g) {
   const int n = g.n;
   auto h = [&](int i, int j) {
     return g.height[static_cast<size_t>((j + n) % n) * n + static_cast<size_t>((i + n) % n)];
   };
-  double m0 = 0, mx = 0, mz = 0, m2 = 0, mxz = 0;
+  std::array<double, 5> m{};
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      const double c = h(i, j);
-      m0 = std::max(m0, std::abs(c));
-      mx = std::max(mx, std::abs(h(i + 1, j) - c));
-      mz = std::max(mz, std::abs(h(i, j + 1) - c));
-      m2 = std::max(m2, std::abs(h(i - 1, j) - 2 * c + h(i + 1, j)));
-      m2 = std::max(m2, std::abs(h(i, j - 1) - 2 * c + h(i, j + 1)));
-      mxz = std::max(mxz, std::abs(h(i + 1, j + 1) - h(i + 1, j) - h(i, j + 1) + c));
+      const kd::CascadeHeightDifferences d = kd::cascade_height_differences(
+          h(i, j), h(i + 1, j), h(i - 1, j), h(i, j + 1), h(i, j - 1), h(i + 1, j + 1));
+      m = {std::max(m[0], d.height), std::max(m[1], d.step_x), std::max(m[2], d.step_z),
+           std::max(m[3], d.second), std::max(m[4], d.mixed)};
     }
   }
-  return cascade_bounds_from_maxima({m0, mx, mz, m2, mxz}, g.patch_size / n);
+  return cascade_bounds_from_maxima(m, g.patch_size / n);
+}
+
+// One instant's chain from grid g written at `out` (kernel/cascade_chain.glsl): level 0 from
+// the grid in `mode` (kCascadeChain*: the height where the mode holds it, the curvatures in
+// the whole chain), and with `levels` each level above from the texels of the one below,
+// as written, down to one texel.
+template <class V4>
+void write_chain(const CascadeGrid& g, int mode, bool levels, V4* out) {
+  const size_t count = static_cast<size_t>(g.n) * g.n;
+  const bool height = mode != kd::kCascadeChainSlopes, full = mode == kd::kCascadeChainFull;
+  for (size_t e = 0; e < count; ++e) {
+    const kd::CascadeChainTexel t = kd::cascade_chain_level0(
+        kd::vec2(g.slope_x[e], g.slope_z[e]), height ? g.height[e] : 0.0,
+        full ? kd::vec3(g.curv_xx[e], g.curv_xz[e], g.curv_zz[e]) : kd::vec3(0.0), mode);
+    out[2 * e] = V4(t.a);
+    out[2 * e + 1] = V4(t.b);
+  }
+  if (!levels) return;
+  const V4* child = out;
+  V4* parent = out + 2 * count;
+  for (int side = g.n / 2, level = 0; side >= 1; side /= 2, ++level) {
+    const size_t fine = 2 * static_cast<size_t>(side);
+    auto read = [&](size_t x, size_t y) {
+      const V4* p = child + 2 * (y * fine + x);
+      kd::CascadeChainTexel t;
+      t.a = kd::vec4(p[0]);
+      t.b = kd::vec4(p[1]);
+      return t;
+    };
+    for (size_t y = 0; y < static_cast<size_t>(side); ++y) {
+      for (size_t x = 0; x < static_cast<size_t>(side); ++x) {
+        const kd::CascadeChainTexel t = kd::cascade_chain_parent(
+            read(2 * x, 2 * y), read(2 * x + 1, 2 * y), read(2 * x, 2 * y + 1),
+            read(2 * x + 1, 2 * y + 1), level, mode);
+        *parent++ = V4(t.a);
+        *parent++ = V4(t.b);
+      }
+    }
+    child += 2 * fine * fine;
+  }
 }
 
 }  // namespace
@@ -142,12 +186,14 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
   // The cascades on oneTBB's threads (each cascade's transforms share its rows among them
   // too).
   tbb::parallel_for(size_t(0), cs.size(), [&](size_t c) {
-    // The cascade's grid and chain, kept from frame to frame (no allocation per frame).
+    // The cascade's grid, kept from frame to frame (no allocation per frame).
     CascadeGrid& grid = scratch_[c].grid;
-    std::vector<MomentLevel>& chain = scratch_[c].chain;
+    const size_t per = instant_texels(lattices_[c]);
+    auto instant = [&](int k) {
+      return texels.data() + layout_.data[c] + static_cast<size_t>(k) * per;
+    };
     if (reads != CascadeReads::all) {
       // Level 0 alone: the display time's slopes and height, the other instants' slopes.
-      const size_t per = instant_texels(lattices_[c]);
       for (int k = segments; k >= 0; --k) {
         if (k < segments && reads == CascadeReads::display_level0) break;
         const double t = cascade_instant(ft, segments, k);
@@ -157,51 +203,26 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
         } else {
           ffts_[c]->evaluate_slopes(t, grid);
         }
-        V4* out = texels.data() + layout_.data[c] + static_cast<size_t>(k) * per;
-        const size_t count = static_cast<size_t>(grid.n) * grid.n;
-        for (size_t e = 0; e < count; ++e) {
-          *out++ = V4(R(grid.slope_x[e]), R(grid.slope_z[e]), R(0), R(0));
-          *out++ = V4(R(0), R(k == segments ? grid.height[e] : 0.0), R(0), R(0));
-        }
+        write_chain(grid, k == segments ? kd::kCascadeChainSlopesHeight : kd::kCascadeChainSlopes,
+                    false, instant(k));
       }
       return;
     }
-    V4* out = texels.data() + layout_.data[c];
+    // The display time's curvatures and second moments; the other instants' slopes alone
+    // (what the kernel reads there: cascade_fields.glsl), the rest of their texels 0.
+    const double end = cascade_instant(ft, segments, segments);
+    ffts_[c]->evaluate(end, true, grid);
+    bounds[c] = grid_interpolant_bounds(grid);
+    write_chain(grid, kd::kCascadeChainFull, true, instant(segments));
     // A zero shutter: every instant is the display time's.
     const bool still = !(ft.duration() > 0);
-    if (still) {
-      ffts_[c]->evaluate(ft.end, true, grid);
-      moment_chain(grid, chain);
-      bounds[c] = grid_interpolant_bounds(grid);
-    }
-    for (int k = 0; k <= segments; ++k) {
-      const double t = cascade_instant(ft, segments, k);
-      // The display time's curvatures and second moments; the other instants' slopes alone
-      // (what the kernel reads there: cascade_fields.glsl), the rest of their texels 0.
-      if (!still) {
-        if (k == segments) {
-          ffts_[c]->evaluate(t, true, grid);
-          bounds[c] = grid_interpolant_bounds(grid);
-        } else {
-          ffts_[c]->evaluate_slopes(t, grid);
-        }
-        moment_chain(grid, chain);
+    for (int k = 0; k < segments; ++k) {
+      if (still) {
+        std::copy(instant(segments), instant(segments) + per, instant(k));
+        continue;
       }
-      for (const MomentLevel& lv : chain) {
-        const size_t count = static_cast<size_t>(lv.n) * lv.n;
-        const bool full = !lv.hxx.empty();
-        // Level 0's s_x^2 is never read (a grid point has no spread): the height there.
-        const std::vector<double>& second = &lv == &chain[0] && full ? grid.height : lv.mxx;
-        for (size_t e = 0; e < count; ++e) {
-          if (full) {
-            *out++ = V4(R(lv.mx[e]), R(lv.mz[e]), R(lv.hxx[e]), R(lv.hzz[e]));
-            *out++ = V4(R(lv.hxz[e]), R(second[e]), R(lv.mxz[e]), R(lv.mzz[e]));
-          } else {
-            *out++ = V4(R(lv.mx[e]), R(lv.mz[e]), R(0), R(0));
-            *out++ = V4(R(0));
-          }
-        }
-      }
+      ffts_[c]->evaluate_slopes(cascade_instant(ft, segments, k), grid);
+      write_chain(grid, kd::kCascadeChainSlopes, true, instant(k));
     }
   });
   set_bounds_impl(bounds, texels);

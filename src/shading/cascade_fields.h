@@ -1,9 +1,10 @@
 // The lattice cascades' FFT fields for the shading kernel (kernel/cascade_fields.glsl):
 // per frame, each cascade transformed at the path's K + 1 instants (scene/cascade_fft.h,
 // slopes and second derivatives), its LEAN chain built (means of s, s s^T and the
-// curvatures over aligned 2^l blocks), and all of it appended to the wave buffer after the
-// waves' sums, with a two-texel header per cascade and a texel of the displaced march's
-// bounds per cascade (kernel/cascade_grid.glsl has the layout). The per-pixel cost is then a few
+// curvatures over aligned 2^l blocks; every texel written by kernel/cascade_chain.glsl, the
+// GL engine's text too), and all of it appended to the wave buffer after the waves' sums,
+// with a two-texel header per cascade and a texel of the displaced march's bounds per
+// cascade (kernel/cascade_grid.glsl has the layout). The per-pixel cost is then a few
 // fetches per cascade whatever its waves (docs/ocean.md, "Shading from the cascades").
 //
 // Which methods read them: `point`, `supersample` with T = 1, `staa-temporal` and `staa`
@@ -50,7 +51,8 @@ CascadeDesc oversampled_cascade(const CascadeDesc& c);
 // points (the differences wrapping around the periodic patch): max |h|, max |h(i+1,j) -
 // h(i,j)|, max |h(i,j+1) - h(i,j)|, the larger of max |h(i-1,j) - 2 h(i,j) + h(i+1,j)| and
 // max |h(i,j-1) - 2 h(i,j) + h(i,j+1)|, and max |h(i+1,j+1) - h(i+1,j) - h(i,j+1) +
-// h(i,j)|, in that order.
+// h(i,j)|, in that order (kernel/cascade_chain.glsl, cascade_height_differences: the
+// differences at one point, for the host and the GL engine).
 glm::dvec3 cascade_bounds_from_maxima(const std::array<double, 5>& maxima, double spacing);
 
 // Where a frame's cascade data sit in the wave buffer: Frame.cascade_base (the headers),
@@ -134,10 +136,9 @@ class CascadeFields {
   std::vector<std::unique_ptr<CascadeFft>> ffts_;
   std::vector<int> lattices_;    // each field's grid side (the lattice's, oversampled)
   std::vector<glm::dvec3> cov_;  // each cascade's sum A^2 / 2 k k^T (xx, xz, zz)
-  // Each cascade's grid and chain, their storage kept from frame to frame.
+  // Each cascade's grid, its storage kept from frame to frame.
   struct Scratch {
     CascadeGrid grid;
-    std::vector<MomentLevel> chain;
   };
   std::vector<Scratch> scratch_;
   WaveField explicit_;

@@ -1,8 +1,8 @@
 // The display time's height grid's maxima (gl_engine/cascade_fields_gl.h), from which the
 // host bounds the bicubic interpolant the displaced march reads (shading/cascade_fields.h,
-// cascade_bounds_from_maxima): max |h|, max |h(i+1,j) - h|, max |h(i,j+1) - h|, the
-// largest second difference along x or z and max |h(i+1,j+1) - h(i+1,j) - h(i,j+1) + h|,
-// the differences wrapping around the periodic patch. Reduced in shared memory, then one
+// cascade_bounds_from_maxima): the maxima of the five differences at each point
+// (kernel/cascade_chain.glsl, cascade_height_differences, the host's text too), the
+// differences wrapping around the periodic patch. Reduced in shared memory, then one
 // atomicMax per workgroup and value: non-negative floats order as their bits do, so the
 // result does not depend on the order (deterministic).
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -29,14 +29,13 @@ void main() {
   ivec2 id = ivec2(gl_GlobalInvocationID.xy);
   if (id.x < n && id.y < n) {
     int i = id.x, j = id.y;
-    float c = h(i, j);
-    float m2 =
-        max(abs(h(i - 1, j) - 2.0 * c + h(i + 1, j)), abs(h(i, j - 1) - 2.0 * c + h(i, j + 1)));
-    atomicMax(local_max[0], floatBitsToUint(abs(c)));
-    atomicMax(local_max[1], floatBitsToUint(abs(h(i + 1, j) - c)));
-    atomicMax(local_max[2], floatBitsToUint(abs(h(i, j + 1) - c)));
-    atomicMax(local_max[3], floatBitsToUint(m2));
-    atomicMax(local_max[4], floatBitsToUint(abs(h(i + 1, j + 1) - h(i + 1, j) - h(i, j + 1) + c)));
+    CascadeHeightDifferences d = cascade_height_differences(
+        h(i, j), h(i + 1, j), h(i - 1, j), h(i, j + 1), h(i, j - 1), h(i + 1, j + 1));
+    atomicMax(local_max[0], floatBitsToUint(d.height));
+    atomicMax(local_max[1], floatBitsToUint(d.step_x));
+    atomicMax(local_max[2], floatBitsToUint(d.step_z));
+    atomicMax(local_max[3], floatBitsToUint(d.second));
+    atomicMax(local_max[4], floatBitsToUint(d.mixed));
   }
   barrier();
   if (gl_LocalInvocationIndex < 5u)
