@@ -109,7 +109,8 @@ TEST_F(CascadeFftGlTest, FieldsAreTheHostsTexels) {
   // transforms write into the wave buffer against the host's
   // (shading/cascade_fields.h, double rounded to float), component by component, within
   // float's error relative to the largest value of that component; the headers, the
-  // bounds' texels and the frame's bounds against the host's.
+  // bounds' texels and the frame's bounds against the host's. Displaced water (whose path
+  // instants hold their heights), then flat.
   Scene s = testing::project_scene("smooth");
   s.surface.waves.clear();
   s.surface.cascades = {full_cascade(16, 30.0, 1), full_cascade(8, 7.0, 2)};
@@ -187,6 +188,13 @@ TEST_F(CascadeFftGlTest, FieldsAreTheHostsTexels) {
   // regenerates the lattices so): its own lattices, not the last model's.
   s.surface.cascades = {full_cascade(16, 30.0, 7), full_cascade(8, 7.0, 8)};
   check(SceneModel(s), CascadeReads::all, 2, 0.04);
+  // Flat water, whose other instants hold their slopes alone (two to a transform; on
+  // displaced water each instant's height too, one transform an instant).
+  s.surface.geometry = Geometry::flat;
+  const SceneModel flat(s);
+  for (const CascadeReads reads : {CascadeReads::all, CascadeReads::instants_level0})
+    for (const int segments : {1, 2, 3})
+      check(flat, reads, segments, 0.04);
 }
 
 }  // namespace

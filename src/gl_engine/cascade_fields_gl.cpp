@@ -62,7 +62,7 @@ void CascadeFieldsGl::chain(const CascadeFftGl& fft, Chain kind, int field, int 
   // The pass's `full` is the chain's mode.
   static_assert(int(Chain::slopes) == kd::kCascadeChainSlopes &&
                 int(Chain::full) == kd::kCascadeChainFull &&
-                int(Chain::display_level0) == kd::kCascadeChainSlopesHeight);
+                int(Chain::slopes_height) == kd::kCascadeChainSlopesHeight);
   const int n = fft.n();
   fft.field(field).bind(GL_SHADER_STORAGE_BUFFER, 0);
   fft.field(kind == Chain::full ? 1 : field).bind(GL_SHADER_STORAGE_BUFFER, 1);
@@ -93,6 +93,7 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
   if (maxima_.size() != count * 4) maxima_ = gl::Buffer(count * 4);
   maxima_.fill(0u);
   const bool still = !(ft.duration() > 0);
+  const bool heights = m.scene.surface.geometry == Geometry::displaced;
   using Pair = CascadeFftGl::Pair;
   for (size_t c = 0; c < cs.size(); ++c) {
     CascadeFftGl& fft = *ffts_[c];
@@ -113,12 +114,18 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
       // Level 0 alone: the display time's slopes and height, the other instants' slopes
       // two to a transform.
       fft.transform(Pair::full, time(segments), 0.0, false, 0);
-      chain(fft, Chain::display_level0, 0, 0, at(segments), waves, false);
+      chain(fft, Chain::slopes_height, 0, 0, at(segments), waves, false);
       bound();
       if (reads == CascadeReads::display_level0) continue;
-      for (int k = 0; k < segments; k += 2) {
-        const bool pair = k + 1 < segments;
+      for (int k = 0; k < segments; k += heights ? 1 : 2) {
+        const bool pair = !heights && k + 1 < segments;
         gl::barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        if (heights) {
+          // Displaced water: the instant's height too, one transform an instant.
+          fft.transform(Pair::full, time(k), 0.0, false, 0);
+          chain(fft, Chain::slopes_height, 0, 0, at(k), waves, false);
+          continue;
+        }
         fft.transform(Pair::two_slopes, time(k), pair ? time(k + 1) : 0.0, pair, 0);
         chain(fft, Chain::slopes, 0, 0, at(k), waves, false);
         if (pair) chain(fft, Chain::slopes, 0, 1, at(k + 1), waves, false);
@@ -137,6 +144,16 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
       for (int k = 0; k < segments; ++k)
         glCopyNamedBufferSubData(waves.id(), waves.id(), GLintptr(at(segments) * 16),
                                  GLintptr(at(k) * 16), GLsizeiptr(per * 16));
+      continue;
+    }
+    if (heights) {
+      // Displaced water, whose path follows the water's height (kernel/reflection_path.glsl,
+      // path_views): each other instant's slopes and height, one transform each.
+      for (int k = 0; k < segments; ++k) {
+        gl::barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        fft.transform(Pair::full, time(k), 0.0, false, 0);
+        chain(fft, Chain::slopes_height, 0, 0, at(k), waves, true);
+      }
       continue;
     }
     chain(fft, Chain::slopes, 1, 1, at(0), waves, true);

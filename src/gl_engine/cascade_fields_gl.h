@@ -54,9 +54,10 @@ class CascadeFieldsGl {
   // An instant's chain into `waves` from texel `at` (shaders/cascade_chain.glsl), in the
   // kernel's modes (kernel/cascade_chain.glsl, kCascadeChain*): Chain::full, the display
   // time's from the transform's fields 0 and 1; Chain::slopes, the slopes in field
-  // `field`'s pair `slot` (0: xy, 1: zw); Chain::display_level0, level 0 alone of field 0's
-  // slopes and height.
-  enum class Chain { slopes = 0, full = 1, display_level0 = 2 };
+  // `field`'s pair `slot` (0: xy, 1: zw); Chain::slopes_height, field 0's
+  // slopes and height at level 0, the slopes alone at the levels above (the display time's
+  // level 0 under the reduced reads; the other instants on displaced water).
+  enum class Chain { slopes = 0, full = 1, slopes_height = 2 };
   void chain(const CascadeFftGl& fft, Chain kind, int field, int slot, size_t at,
              const gl::Buffer& waves, bool levels);
 

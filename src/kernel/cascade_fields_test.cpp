@@ -573,6 +573,65 @@ TEST(CascadeFields, MarchHitsTheInterpolatedSurface) {
   EXPECT_LE(worst_above, 1e-6);
 }
 
+// On displaced water the path's points follow the water as it rises and falls over the
+// shutter (reflection_path.glsl, path_views): each instant's point lies on the pixel's ray
+// and on the water of that instant, to the Newton step's second order. Over the fields
+// (whose other instants hold their heights on displaced water) and over the same waves as
+// sines, K = 2; the fields' heights at the instants are the direct sum's.
+TEST(CascadeFields, PathPointsFollowTheRisingWater) {
+  Sea sea = cascade_sea();
+  sea.scene.surface.geometry = Geometry::displaced;
+  Scene sines = sea.scene;
+  sines.surface.cascades.clear();
+  sines.surface.waves = sea.waves;
+  const int K = 2;
+  const vec3 cam = sea.scene.camera.position;
+  for (const bool fields : {true, false}) {
+    const Fields in_f(fields ? sea.scene : sines, 2, K, 0.0);
+    const KernelInputsD& in = in_f.in;
+    const kd::WaveBuffer b = wave_buffer(in);
+    const kd::Frame& f = in.frame;
+    double moved = 0, off = 0, off_direct = 0;
+    int points = 0;
+    for (int j = 0; j < 36; j += 3) {
+      for (int i = 0; i < 64; i += 3) {
+        const kd::Footprint fp = kd::pixel_footprint(b, f, i + 0.5, j + 0.5, 0.0, true);
+        if (!fp.hit) continue;
+        const kd::PathViews v = kd::path_views(b, f, fp, i + 0.5, j + 0.5);
+        ASSERT_TRUE(v.moving);
+        ASSERT_FALSE(v.camera_moves);
+        const kd::vec3 d = -fp.view;
+        for (int k = 0; k < K; ++k) {
+          const double dt = kd::path_instant_dt(f, k), t = instant_time(in_f.ft, K, k);
+          auto water = [&](kd::vec2 p) {
+            return kd::water_height_slope_at_instant(b, f, k, p.x, p.y, dt, kd::vec2(0.0)).x;
+          };
+          // The instant's point on the ray: p_K + s d, s from its horizontal offset.
+          const kd::vec2 shift = v.point[k] - kd::vec2(fp.point.x, fp.point.z);
+          const double s =
+              dot(shift, kd::vec2(d.x, d.z)) / dot(kd::vec2(d.x, d.z), kd::vec2(d.x, d.z));
+          EXPECT_LT(length(shift - s * kd::vec2(d.x, d.z)), 1e-12) << "off the ray";
+          const double y = fp.point.y + s * d.y;
+          moved += std::abs(water(kd::vec2(fp.point.x, fp.point.z)) - fp.point.y);
+          off += std::abs(water(v.point[k]) - y);
+          off_direct +=
+              std::abs(direct_height(sea.waves, v.point[k].x + cam.x, v.point[k].y + cam.z, t) - y);
+          EXPECT_LT(length(v.view[k] - fp.view), 1e-12);
+          ++points;
+        }
+      }
+    }
+    std::printf(
+        "%s: the water moves %.3g m at the held point on average, the moved point is %.3g m "
+        "off its instant's water (%.3g m off the direct sum)\n",
+        fields ? "fields" : "sines", moved / points, off / points, off_direct / points);
+    EXPECT_GT(points, 100);
+    EXPECT_GT(moved / points, 0.005);  // the water does move over the shutter
+    EXPECT_LT(off, 0.02 * moved);
+    EXPECT_LT(off_direct, 0.05 * moved);
+  }
+}
+
 // The tolerance leaves out the last cascades where the rest fits tau eps s (intersect.glsl):
 // every hit lies within that of the whole interpolated surface, vertically, the ray never
 // dips further below it before the hit, and far rays do march fewer cascades.

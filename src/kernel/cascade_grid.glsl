@@ -22,7 +22,9 @@
 //   - then each cascade's data, instant by instant, level by level, two texels per texel:
 //     a = (E[s_x], E[s_z], E[h_xx], E[h_zz]), b = (E[h_xz], E[s_x^2], E[s_x s_z], E[s_z^2]);
 //     level 0 holds no spread (a grid point's second moments are its mean's square, and
-//     are not read), so at the display time its b.y holds the height h instead.
+//     are not read), so at the display time its b.y holds the height h instead, and so
+//     at the other instants on displaced water (their texels' other entries than the
+//     slopes' means are 0: only the display time's chain is whole).
 // Level l's texel i averages samples i 2^l .. i 2^l + 2^l - 1 of the grid, whose sample p
 // lies at world x = p L / N.
 //
@@ -232,13 +234,16 @@ SG_FN vec4 catmull_rom_derivative_weights(real t) {
               0.5 * (-9.0 * t2 + 8.0 * t + 1.0), 0.5 * (3.0 * t2 - 2.0 * t));
 }
 
-// Every cascade's height at camera-relative (x, z) at the display time, Catmull-Rom's
-// bicubic of level 0's heights, and that interpolant's own gradient (its weights'
-// derivatives): (h, dh/dx, dh/dz). The displaced intersection marches this surface (the
-// shading's slope, cascade_gradient, interpolates the slope grid instead: the two differ
-// by the cubic's error, docs/ocean.md).
-SG_FN vec3 cascade_height_gradient_first(IN(WaveBuffer) waves, IN(Frame) f, int count, real x,
-                                         real z) {
+// The first `count` cascades' height at camera-relative (x, z) at path instant k,
+// Catmull-Rom's bicubic of level 0's heights, and that interpolant's own gradient (its
+// weights' derivatives): (h, dh/dx, dh/dz). The displaced intersection marches this
+// surface at the display time (the shading's slope, cascade_gradient, interpolates the
+// slope grid instead: the two differ by the cubic's error, docs/ocean.md). The instants
+// other than the display time hold their heights on displaced water only (level 0's b.y;
+// shading/cascade_fields.h), where the path's points follow the water (reflection_path.glsl,
+// path_views).
+SG_FN vec3 cascade_height_gradient_of(IN(WaveBuffer) waves, IN(Frame) f, int count, int k, real x,
+                                      real z) {
   vec3 r = vec3(0.0);
   int data = cascade_data_start(f);
   for (int c = 0; c < count; ++c) {
@@ -251,7 +256,7 @@ SG_FN vec3 cascade_height_gradient_first(IN(WaveBuffer) waves, IN(Frame) f, int 
     vec4 dx = catmull_rom_derivative_weights(u.x - i0.x);
     vec4 dz = catmull_rom_derivative_weights(u.y - i0.y);
     int nl = cc.n;
-    int first = cc.data + f.segments * cascade_instant_texels(cc.n);
+    int first = cc.data + k * cascade_instant_texels(cc.n);
     real per_texel = real(cc.n) / cc.size;
     for (int b = 0; b < 4; ++b) {
       for (int a = 0; a < 4; ++a) {
@@ -263,6 +268,10 @@ SG_FN vec3 cascade_height_gradient_first(IN(WaveBuffer) waves, IN(Frame) f, int 
     }
   }
   return r;
+}
+SG_FN vec3 cascade_height_gradient_first(IN(WaveBuffer) waves, IN(Frame) f, int count, real x,
+                                         real z) {
+  return cascade_height_gradient_of(waves, f, count, f.segments, x, z);
 }
 SG_FN vec3 cascade_height_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z) {
   return cascade_height_gradient_first(waves, f, f.cascade_count, x, z);

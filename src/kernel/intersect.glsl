@@ -117,6 +117,22 @@ SG_FN real height_above_first(IN(WaveBuffer) waves, IN(Frame) f, int n, int nc, 
   return p.y - h;
 }
 
+// The water's height at camera-relative (x, z) at path instant k (dt from the display
+// time), every wave and cascade, and its slope along horizontal u: (h, grad h . u). The
+// waves in the march's blocks (water_height_slope, in SIMD lanes on the CPU); a cascade's
+// height from its fields at instant k (cascade_grid.glsl, cascade_height_gradient_of).
+SG_FN vec2 water_height_slope_at_instant(IN(WaveBuffer) waves, IN(Frame) f, int k, real x, real z,
+                                         real dt, vec2 u) {
+  vec2 r = vec2(0.0);
+  for (int lo = 0; lo < f.wave_count; lo += kMarchBlock)
+    r += water_height_slope(waves, f, lo, min(lo + kMarchBlock, f.wave_count), x, z, dt, u.x, u.y);
+  if (f.cascade_count > 0) {
+    vec3 c = cascade_height_gradient_of(waves, f, f.cascade_count, k, x, z);
+    r += vec2(c.x, c.y * u.x + c.z * u.y);
+  }
+  return r;
+}
+
 // The first n waves' and nc cascades' bounds on the ray: the slab |y| <= amplitude (entry
 // and exit parameters) and the Lipschitz bound of f along d.
 struct MarchSet {

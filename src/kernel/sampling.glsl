@@ -111,7 +111,7 @@ SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) 
   if (pw.share <= 0.0) return miss_pixel_weights(f, i, j);
   Footprint fp = pixel_footprint(waves, f, pw.centre.x, pw.centre.y, 0.0, f.displaced);
   if (!fp.hit) return miss_pixel_weights(f, i, j);
-  PathViews v = path_views(f, fp, pw.centre.x, pw.centre.y);
+  PathViews v = path_views(waves, f, fp, pw.centre.x, pw.centre.y);
   PathGradients g;
   if (v.moving) {
     g = path_gradients_moving(waves, f, v);

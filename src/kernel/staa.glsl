@@ -39,7 +39,10 @@
 // of that view. Eq. 20's split and Appendix A's half-width are taken over the footprint
 // swept by the point's motion p_K - p_0 (aliasing.glsl, swept_frequency; ndf.glsl,
 // swept_half_width). The pixel-footprint term stays the display time's: the motion is the
-// path's. A fixed camera takes none of these branches (bit for bit as before).
+// path's. On displaced water the points move too, along the pixel's one ray as the water
+// rises and falls (path_views), and take the same branches, but for the footprint term,
+// taken along the path at each instant's Hessian as under a still camera. A still camera
+// over flat water takes none of these branches.
 
 // Reflections further than this from the light (r . L / |r| below it) are not projected
 // on the light plane: the gnomonic projection diverges at 90 degrees, and an RDF would
@@ -174,7 +177,7 @@ SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) 
   int c = staa_remainder_start(waves, f, p, px.J);
   staa_waves_add(sums, waves, f, px, c);
   staa_add_remainder(sums, waves, f, c);
-  staa_hessians_held(sums, f, v.moving);
+  staa_hessians_held(sums, f, v.camera_moves);
   return sums;
 }
 
@@ -311,13 +314,14 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
 // instant's footprint is taken at its own gradient and Hessian, and the average over the
 // shutter is the trapezoid rule's over the K + 1 instants. `display`: the display time's.
 // Under a moving camera (whose instants' footprints are not formed) and with a zero
-// shutter, the display time's alone.
+// shutter, the display time's alone. On displaced water under a still camera the instants'
+// points move along the one ray (path_views) and the view stays: their own Hessians.
 SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews) v,
                                      IN(StaaSums) sums, vec2 mean, mat2 display,
                                      IN(LightAnchor) a) {
   int K = f.segments;
   mat2 cov = display;
-  if (!v.moving && f.duration > 0.0) {
+  if (!v.camera_moves && f.duration > 0.0) {
     mat2 sum = 0.5 * display;
     // At the light's anchor the chain rule's factors are the display time's at every
     // instant (the view and n_L do not move): only the Hessian changes.
@@ -749,7 +753,7 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
   }
   StaaParams q = p;
   if (pw.share < 1.0 && q.footprint == 2) q.footprint = 1;
-  PathViews v = path_views(f, fp, pw.centre.x, pw.centre.y);
+  PathViews v = path_views(waves, f, fp, pw.centre.x, pw.centre.y);
   StaaSums sums = staa_wave_pass(waves, f, q, fp, v);
   staa_cascades_add(sums, waves, f, q, fp, v);
   StaaResult r = staa_finish(table_f, table_s, tinfo, fits, finfo, f, q, fp, v, sums, path);

@@ -61,21 +61,23 @@ struct StaaWavePixel {
 // Wave i's resolved share A (sine s and cosine c of its display-time phase) in the
 // gradients and Hessians of the path's instants (still camera): instant k's phase is
 // theta - c (end - t_k), its cosine and sine by angle subtraction (rotated_cos_sin); the
-// gradient A cos k, the Hessian -A sin k k^T. Under a moving camera the gradients as
-// path_gradients_add_moving takes them and the display time's Hessian alone.
+// gradient A cos k, the Hessian -A sin k k^T. Where the instants' points move (a moving
+// camera, displaced water: reflection_path.glsl, PathViews) instant k's phase is taken at
+// p_k and t_k instead (one sine and cosine per wave and instant).
 SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, IN(WaveBuffer) waves, int i,
                          IN(Wave) w, real A, real s, real c) {
   vec2 k = vec2(w.a, w.b);
   vec3 kk = wave_curvature_of(w);
-  if (inst.moving) {
-    path_gradients_add_moving(sums.path, inst, w, A, c);
-    sums.hess[inst.segments] -= (A * s) * kk;
-    return;
-  }
   sums.path.g[inst.segments] += (A * c) * k;
   sums.hess[inst.segments] -= (A * s) * kk;
   for (int q = 0; q < inst.segments; ++q) {
-    vec2 cs = rotated_cos_sin(wave_rotation_of(waves, inst.wave_stride, i, q), s, c);
+    vec2 cs;
+    if (inst.moving) {
+      real theta = wave_phase(w, inst.points[q].x, inst.points[q].y, inst.dts[q]);
+      cs = vec2(cos(theta), sin(theta));
+    } else {
+      cs = rotated_cos_sin(wave_rotation_of(waves, inst.wave_stride, i, q), s, c);
+    }
     sums.path.g[q] += (A * cs.x) * k;
     sums.hess[q] -= (A * cs.y) * kk;
   }

@@ -183,6 +183,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
   if (!data) return base;
   texels.resize(at);
   std::vector<glm::dvec3> bounds(cs.size(), glm::dvec3(0.0));
+  const bool heights = m.scene.surface.geometry == Geometry::displaced;
   // The cascades on oneTBB's threads (each cascade's transforms share its rows among them
   // too).
   tbb::parallel_for(size_t(0), cs.size(), [&](size_t c) {
@@ -192,24 +193,29 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
     auto instant = [&](int k) {
       return texels.data() + layout_.data[c] + static_cast<size_t>(k) * per;
     };
+    // The other instants' slopes, with their heights on displaced water (where the path's
+    // points follow the water: kernel/reflection_path.glsl, path_views).
+    auto other_instant = [&](int k, bool levels) {
+      const double t = cascade_instant(ft, segments, k);
+      if (heights) {
+        ffts_[c]->evaluate(t, false, grid);
+      } else {
+        ffts_[c]->evaluate_slopes(t, grid);
+      }
+      write_chain(grid, heights ? kd::kCascadeChainSlopesHeight : kd::kCascadeChainSlopes, levels,
+                  instant(k));
+    };
     if (reads != CascadeReads::all) {
       // Level 0 alone: the display time's slopes and height, the other instants' slopes.
-      for (int k = segments; k >= 0; --k) {
-        if (k < segments && reads == CascadeReads::display_level0) break;
-        const double t = cascade_instant(ft, segments, k);
-        if (k == segments) {
-          ffts_[c]->evaluate(t, false, grid);
-          bounds[c] = grid_interpolant_bounds(grid);
-        } else {
-          ffts_[c]->evaluate_slopes(t, grid);
-        }
-        write_chain(grid, k == segments ? kd::kCascadeChainSlopesHeight : kd::kCascadeChainSlopes,
-                    false, instant(k));
-      }
+      ffts_[c]->evaluate(cascade_instant(ft, segments, segments), false, grid);
+      bounds[c] = grid_interpolant_bounds(grid);
+      write_chain(grid, kd::kCascadeChainSlopesHeight, false, instant(segments));
+      for (int k = 0; k < segments && reads == CascadeReads::instants_level0; ++k)
+        other_instant(k, false);
       return;
     }
-    // The display time's curvatures and second moments; the other instants' slopes alone
-    // (what the kernel reads there: cascade_fields.glsl), the rest of their texels 0.
+    // The display time's curvatures and second moments; the other instants' slopes (and
+    // heights) alone (what the kernel reads there: cascade_fields.glsl), the rest 0.
     const double end = cascade_instant(ft, segments, segments);
     ffts_[c]->evaluate(end, true, grid);
     bounds[c] = grid_interpolant_bounds(grid);
@@ -221,8 +227,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
         std::copy(instant(segments), instant(segments) + per, instant(k));
         continue;
       }
-      ffts_[c]->evaluate_slopes(cascade_instant(ft, segments, k), grid);
-      write_chain(grid, kd::kCascadeChainSlopes, true, instant(k));
+      other_instant(k, true);
     }
   });
   set_bounds_impl(bounds, texels);
