@@ -2,9 +2,10 @@
 // point seen through the pixel centre, and the reflection of the view about the normal of
 // the resolved waves at K + 1 instants of the shutter, t_k = start + k (end - start) / K
 // (K sub-arcs, "dividing the frame time into subintervals", Sec. 3.5; K = 1 is the paper's
-// path from the previous frame to the current one). The point is the one at the display
-// time; on displaced water its horizontal position is kept for the whole interval (the
-// paper samples "a single point on the water surface corresponding to the pixel centre").
+// path from the previous frame to the current one). On flat water under a still camera the
+// point is the one at the display time, for the whole interval (the paper samples "a
+// single point on the water surface corresponding to the pixel centre"); on displaced water
+// each instant's point is where the pixel's ray meets that instant's water (path_views).
 //
 // The gradients at the instants come from the phases at the display time by angle
 // subtraction, cos(theta - c dt) = cos(theta) cos(c dt) + sin(theta) sin(c dt), with the
@@ -19,8 +20,9 @@
 // camera"): at instant t_k the pixel's ray is that of camera_at(t_k), which meets the water
 // at its own point p_k; the gradient of instant k is the waves' at p_k and t_k (their
 // phases there, one cosine per wave and instant), and the reflection of instant k is that
-// of the view from p_k towards camera_at(t_k) (PathViews). A fixed camera keeps the one
-// point and view, and the phases by rotation as above, bit for bit.
+// of the view from p_k towards camera_at(t_k) (PathViews); so on displaced water, whose
+// points move along the one ray. A fixed camera over flat water keeps the one point and
+// view, and the phases by rotation as above.
 
 // The water points and views of the path's instants. moving false: every instant has the
 // display time's point and view (a camera that stands still over flat water, or a zero
