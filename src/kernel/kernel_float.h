@@ -34,6 +34,10 @@ real float_water_height(const WaveBuffer& waves, const Frame& f, real x, real z,
 vec2 float_water_gradient(const WaveBuffer& waves, const Frame& f, real x, real z, real dt);
 vec2 float_water_height_slope(const WaveBuffer& waves, const Frame& f, int lo, int hi, real x,
                               real z, real dt, real ux, real uz);
+// The reflection path's gradients g[0..K] at `point` (kernel/reflection_path.glsl); with
+// `points`, the instants' own points p_0 .. p_{K-1} (a moving camera, displaced water).
+void float_path_gradients(const WaveBuffer& waves, const Frame& f, vec3 point, const vec2* points,
+                          vec2* g);
 // The reference's path (kernel/reference.glsl): g[0..K] and dg[0..K].
 void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, real dt, vec2* g,
                             vec2* dg);

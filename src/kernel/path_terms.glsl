@@ -3,29 +3,33 @@
 // derivatives (reference_path.glsl). Lane-generic (wave_terms.glsl): the GPU's loops and
 // the CPU engine's SIMD lanes (kernel/cpu/lane_passes.inc) run this same text.
 
+// (cos, sin) of wave i's phase at instant q < K, theta_q = theta - c (end - t_q) + k . (p_q -
+// p_K), from the sine s and cosine c of its phase theta at the display time and point p_K:
+// the turn back in time by angle subtraction (rotated_cos_sin, the wave buffer's rotations)
+// and, where the instants' points move (inst.moving: a moving camera, displaced water), the
+// turn k . (p_q - p_K) on top. Both turns are small angles, so float carries each instant's
+// phase to the display time's rounding; the phase taken whole at p_q and t_q, k . p_q +
+// theta0 + c dt_q, rounds on its own at each instant (at 1 km from the camera, 6e-5 rad
+// apart in float: enough to move a path tangent to a small light's disk; docs/gpu.md).
+SG_FN vec2 path_instant_cos_sin(IN(PathInstants) inst, IN(WaveBuffer) waves, int i, IN(Wave) w,
+                                real s, real c, int q) {
+  vec2 cs = rotated_cos_sin(wave_rotation_of(waves, inst.wave_stride, i, q), s, c);
+  if (inst.moving) {
+    vec2 dp = inst.points[q] - inst.points[inst.segments];
+    real d = w.a * dp.x + w.b * dp.y;
+    cs = rotated_cos_sin(vec2(cos(d), -sin(d)), cs.y, cs.x);
+  }
+  return cs;
+}
+
 // A wave's term, of resolved amplitude A and phase theta (sine s, cosine c) at the display
-// time, in the gradients of every instant (a fixed camera: theta_k = theta - c (end - t_k)
-// by angle subtraction).
+// time and point, in the gradients of every instant (path_instant_cos_sin).
 SG_FN void path_gradients_add(INOUT(PathGradients) p, IN(PathInstants) inst, IN(WaveBuffer) waves,
                               int i, IN(Wave) w, real A, real s, real c) {
   vec2 k = vec2(w.a, w.b);
   p.g[inst.segments] += (A * c) * k;
-  for (int q = 0; q < inst.segments; ++q) {
-    vec2 cs = rotated_cos_sin(wave_rotation_of(waves, inst.wave_stride, i, q), s, c);
-    p.g[q] += (A * cs.x) * k;
-  }
-}
-
-// The same under a moving camera: the phase at the display time's point (cosine c) for
-// instant K, and at p_k and t_k for the others.
-SG_FN void path_gradients_add_moving(INOUT(PathGradients) p, IN(PathInstants) inst, IN(Wave) w,
-                                     real A, real c) {
-  vec2 k = vec2(w.a, w.b);
-  p.g[inst.segments] += (A * c) * k;
-  for (int q = 0; q < inst.segments; ++q) {
-    real theta = wave_phase(w, inst.points[q].x, inst.points[q].y, inst.dts[q]);
-    p.g[q] += (A * cos(theta)) * k;
-  }
+  for (int q = 0; q < inst.segments; ++q)
+    p.g[q] += (A * path_instant_cos_sin(inst, waves, i, w, s, c, q).x) * k;
 }
 
 // A wave's term in the reference's path, its phase theta (sine s, cosine c) at the window's

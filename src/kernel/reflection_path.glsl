@@ -19,7 +19,8 @@
 // A camera that moves over the shutter (format /3, camera.glsl; docs/method.md, "A moving
 // camera"): at instant t_k the pixel's ray is that of camera_at(t_k), which meets the water
 // at its own point p_k; the gradient of instant k is the waves' at p_k and t_k (their
-// phases there, one cosine per wave and instant), and the reflection of instant k is that
+// phases there: the display time's, turned back in time by the rotations and on by
+// k . (p_k - p_K), path_terms.glsl), and the reflection of instant k is that
 // of the view from p_k towards camera_at(t_k) (PathViews); so on displaced water, whose
 // points move along the one ray. A fixed camera over flat water keeps the one point and
 // view, and the phases by rotation as above.
@@ -155,7 +156,7 @@ SG_FN PathGradients wave_sum_path_moving(IN(WaveBuffer) waves, IN(Frame) f, IN(P
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
     real theta = wave_phase(w, v.point[f.segments].x, v.point[f.segments].y, 0.0);
-    path_gradients_add_moving(p, inst, w, w.A, cos(theta));
+    path_gradients_add(p, inst, waves, i, w, w.A, sin(theta), cos(theta));
   }
   return p;
 }

@@ -59,11 +59,8 @@ struct StaaWavePixel {
 };
 
 // Wave i's resolved share A (sine s and cosine c of its display-time phase) in the
-// gradients and Hessians of the path's instants (still camera): instant k's phase is
-// theta - c (end - t_k), its cosine and sine by angle subtraction (rotated_cos_sin); the
-// gradient A cos k, the Hessian -A sin k k^T. Where the instants' points move (a moving
-// camera, displaced water: reflection_path.glsl, PathViews) instant k's phase is taken at
-// p_k and t_k instead (one sine and cosine per wave and instant).
+// gradients and Hessians of the path's instants: instant k's phase by
+// path_instant_cos_sin (path_terms.glsl), the gradient A cos k, the Hessian -A sin k k^T.
 SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, IN(WaveBuffer) waves, int i,
                          IN(Wave) w, real A, real s, real c) {
   vec2 k = vec2(w.a, w.b);
@@ -71,13 +68,7 @@ SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, IN(WaveBuf
   sums.path.g[inst.segments] += (A * c) * k;
   sums.hess[inst.segments] -= (A * s) * kk;
   for (int q = 0; q < inst.segments; ++q) {
-    vec2 cs;
-    if (inst.moving) {
-      real theta = wave_phase(w, inst.points[q].x, inst.points[q].y, inst.dts[q]);
-      cs = vec2(cos(theta), sin(theta));
-    } else {
-      cs = rotated_cos_sin(wave_rotation_of(waves, inst.wave_stride, i, q), s, c);
-    }
+    vec2 cs = path_instant_cos_sin(inst, waves, i, w, s, c, q);
     sums.path.g[q] += (A * cs.x) * k;
     sums.hess[q] -= (A * cs.y) * kk;
   }

@@ -237,6 +237,42 @@ TEST(KernelWaveSums, VectorisedFloatSumsEqualTheFloatKernelLoops) {
   }
 }
 
+TEST(KernelWaveSums, MovingInstantsKeepTheDisplayTimesPhaseInFloat) {
+  // A moving path's instants take their phases from the display time's, turned back in
+  // time and on by k . (p_k - p_K) (kernel/path_terms.glsl, path_instant_cos_sin), so
+  // that float rounds the display time's phase once for every instant. With the instants'
+  // points at p_K the path is the fixed camera's, to the last bits; taken whole at each
+  // instant, k . p_k + theta0 + c dt_k, the phases 1.1 km from the camera (up to 2.4e4
+  // rad, a float's unit 2e-3 rad) round apart by up to a unit at each instant.
+  const Scene s = random_waves_scene(64, 3);
+  const SceneModel m(s);
+  for (int segments : {1, 4}) {
+    KernelInputsF in;
+    build_kernel_inputs(m, frame_time(s, 3), segments, 0, in);
+    double gscale = 0;
+    for (const Wave& w : s.surface.waves)
+      gscale += w.amplitude * length(w.wave_vector);
+    for (bool lanes : {true, false}) {
+      const kf::WaveBuffer waves = wave_buffer(in, lanes);
+      Pcg32 rng(segments, 7);
+      double largest = 0;
+      for (int q = 0; q < 20; ++q) {
+        const kf::vec3 p(float(700 + 50 * rng.uniform()), 0.0f, float(-900 - 50 * rng.uniform()));
+        kf::vec2 points[kf::kMaxSegments + 1], fixed[kf::kMaxSegments + 1],
+            moving[kf::kMaxSegments + 1];
+        for (int k = 0; k < segments; ++k)
+          points[k] = kf::vec2(p.x, p.z);
+        kf::float_path_gradients(waves, in.frame, p, nullptr, fixed);
+        kf::float_path_gradients(waves, in.frame, p, points, moving);
+        for (int k = 0; k <= segments; ++k)
+          largest = std::max({largest, double(std::fabs(moving[k].x - fixed[k].x)),
+                              double(std::fabs(moving[k].y - fixed[k].y))});
+      }
+      EXPECT_LE(largest, 1e-6 * gscale) << segments << " segments, lanes " << lanes;
+    }
+  }
+}
+
 TEST(KernelWaveSums, StaaPixelsWithAndWithoutVectorisedSumsAgree) {
   // staa end to end (its values are smooth in the sums): every pixel with the vectorised
   // sums against the kernel's loops.

@@ -70,6 +70,22 @@ vec2 float_water_height_slope(const WaveBuffer& waves, const Frame& f, int lo, i
   return water_height_slope(waves, f, lo, hi, x, z, dt, ux, uz);
 }
 
+void float_path_gradients(const WaveBuffer& waves, const Frame& f, vec3 point, const vec2* points,
+                          vec2* g) {
+  PathGradients p;
+  if (points == nullptr) {
+    p = path_gradients(waves, f, point);
+  } else {
+    PathViews v = path_views_fixed(point, vec3(0.0, 1.0, 0.0));
+    v.moving = true;
+    for (int k = 0; k < f.segments; ++k)
+      v.point[k] = points[k];
+    p = path_gradients_moving(waves, f, v);
+  }
+  for (int k = 0; k <= f.segments; ++k)
+    g[k] = p.g[k];
+}
+
 void float_path_derivatives(const WaveBuffer& waves, const Frame& f, vec3 point, real dt, vec2* g,
                             vec2* dg) {
   const PathDerivatives p = path_derivatives(waves, f, point, dt);
