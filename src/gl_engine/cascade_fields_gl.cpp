@@ -133,9 +133,10 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
       continue;
     }
     // The display time: (dh/dx, h, dh/dz, d2h/dxdz), then (d2h/dx2, d2h/dz2) with the
-    // slopes at t_0.
+    // slopes at t_0 (not on displaced water, whose instants each take a full transform
+    // below).
     fft.transform(Pair::full, time(segments), 0.0, false, 0);
-    fft.transform(Pair::curvature_and_slopes, time(segments), time(0), !still, 1);
+    fft.transform(Pair::curvature_and_slopes, time(segments), time(0), !still && !heights, 1);
     chain(fft, Chain::full, 0, 0, at(segments), waves, true);
     bound();
     if (still) {

@@ -120,13 +120,6 @@ SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
   return p.smooth_cells;
 }
 
-// Under a moving camera the instants' Hessians are not summed: each is the display time's.
-SG_FN void staa_hessians_held(INOUT(StaaSums) sums, IN(Frame) f, bool moving) {
-  if (!moving) return;
-  for (int q = 0; q < f.segments; ++q)
-    sums.hess[q] = sums.hess[f.segments];
-}
-
 // The pass's pixel-wide inputs (staa_waves.glsl): the footprint's Jacobian and its
 // inverse, Eq. 20's band, the curvature limit, the smooth terms' cells, and under a moving
 // camera the instants' points and times and the motion.
@@ -177,7 +170,6 @@ SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) 
   int c = staa_remainder_start(waves, f, p, px.J);
   staa_waves_add(sums, waves, f, px, c);
   staa_add_remainder(sums, waves, f, c);
-  staa_hessians_held(sums, f, v.camera_moves);
   return sums;
 }
 

@@ -93,7 +93,7 @@ void write_chain(const CascadeGrid& g, int mode, bool levels, V4* out) {
 }  // namespace
 
 CascadeDesc oversampled_cascade(const CascadeDesc& c) {
-  const int n = c.lattice, m = n * cascade_oversampling(n);
+  const int n = c.lattice, m = n * cascade_oversampling(c);
   CascadeDesc o = c;
   o.lattice = m;
   auto d = std::make_shared<LatticeData>();

@@ -27,15 +27,20 @@
 namespace sg {
 
 // The fields' grid: the lattice's points oversampled (a zero-padded spectrum), so that the
-// cubic interpolation between them follows the lattice's top octave: at least 2 times per
-// axis, and up to 8 times while the grid stays within 256 points a side (32 -> 256,
-// 64 -> 256, 128 -> 256, 256 -> 512). The cubic's slope error falls with the fourth power
-// of the spacing (docs/ocean.md: 24.7% of the RMS slope on the lattice's own grid, 2.5%
-// at 2 times); on small lattices, whose texels are wide against a pixel, it was of the
+// cubic interpolation between them follows the cascade's shortest waves with at least 4
+// grid points a period: 2 times per axis where the band reaches past half the lattice's
+// Nyquist wavenumber N pi / L (the last cascade of a sea, whose band ends at its Nyquist),
+// 1 time where it does not (a sea's other cascades, whose bands end at half their Nyquist:
+// docs/ocean.md, "Bands, never doubled"); then doubled up to 8 times while the grid stays
+// within 256 points a side (a last cascade of 32 -> 256, 64 -> 256, 128 -> 256, 256 ->
+// 512; another of 256 -> 256). The cubic's slope error falls with the fourth power of the
+// spacing (docs/ocean.md: 24.7% of the RMS slope with the top octave at 2 points a period,
+// 2.5% at 4); on small lattices, whose texels are wide against a pixel, 2.5% was of the
 // order of the sun's disk.
-inline int cascade_oversampling(int lattice) {
-  int o = 2;
-  while (o < 8 && lattice * o * 2 <= 256)
+inline int cascade_oversampling(const CascadeDesc& c) {
+  const double half_nyquist = 0.5 * c.lattice * kPi / c.patch_size;
+  int o = c.band_max <= half_nyquist * (1 + 1e-9) ? 1 : 2;
+  while (o < 8 && c.lattice * o * 2 <= 256)
     o *= 2;
   return o;
 }
