@@ -45,6 +45,24 @@ struct CascadeFilter {
   bool whole;
 };
 
+// The scale that matches the chain's filter to Eq. 20's ramp (aliasing.glsl): a wave of f
+// cycles per pixel is resolved in full below alias_start, aliased in full past alias_end,
+// half at f_mid = (alias_start + alias_end) / 2. The chain passes a wave of f_m cycles per
+// metre as a box of width w (a texel of the level read) and the bilinear tent between
+// texel centres (w each side): sinc(f_m w) sinc(f_m w)^2, which is 1/2 at f_m w =
+// kChainHalfPass. Half at f_mid for a footprint axis of sigma metres per pixel, w =
+// kChainHalfPass sigma / f_mid: boxes sigma / scale wide with scale = f_mid /
+// kChainHalfPass (1.50 with the defaults 0.3 and 0.8). Between levels the trilinear blend
+// moves the response either way; over the levels' fractions the chain keeps 0.48 of a
+// wave at f_mid, 0.80 at alias_start and 0.24 at alias_end
+// (`CascadeFields.ChainResolvesAWaveAsEq20sRamp`). The scale alias_end (boxes 1.9 times
+// as wide, before 2026-12-05) kept 0.47 at alias_start and 0.10 at f_mid, the rest going
+// to the aliasing NDF: docs/ocean.md, "The chain's filter matched to Eq. 20".
+const real kChainHalfPass = 0.36606325663820;
+SG_FN real cascade_resolving_scale(IN(StaaParams) p) {
+  return 0.5 * (p.alias_start + p.alias_end) / kChainHalfPass;
+}
+
 SG_FN CascadeFilter cascade_filter(IN(Cascade) c, mat2 J, real scale) {
   vec4 ax = footprint_axes(J);
   real h = c.size / real(c.n);
@@ -98,7 +116,7 @@ SG_FN CascadeShare cascade_staa_share(IN(WaveBuffer) waves, IN(Frame) f, IN(Staa
     s.g[k] = vec2(0.0);
     s.hess[k] = vec3(0.0);
   }
-  CascadeFilter b = cascade_filter(c, footprint_xz_jacobian(fp), p.alias_end);
+  CascadeFilter b = cascade_filter(c, footprint_xz_jacobian(fp), cascade_resolving_scale(p));
   if (b.whole) {
     s.cov = c.cov;
     return s;

@@ -299,6 +299,71 @@ TEST(CascadeFields, LargeLatticesOversampleTheLastCascadeAlone) {
   EXPECT_LT(rel, 0.02);
 }
 
+TEST(CascadeFields, ChainResolvesAWaveAsEq20sRamp) {
+  // One sine in a cascade (16 m patch), seen through square footprints of f cycles per
+  // pixel: the share of its slope that staa's chain filter keeps in the resolved gradient
+  // (the regression of the filtered slope on the wave's over a period), averaged over nine
+  // wavelengths (1.2 to 3.2 m: the chain's levels fall at every fraction), against Eq. 20's
+  // ramp, 1 - alias_fraction(f) (resolved in full below 0.3 cycles a pixel, aliased in
+  // full past 0.8): half at the ramp's middle (kernel/cascade_fields.glsl,
+  // cascade_resolving_scale). Measured 0.946, 0.797, 0.480, 0.237, 0.050 at the f below
+  // (the filter's tail is longer than the ramp's); with the boxes of the scale alias_end
+  // (before) 0.821, 0.465, 0.100, 0.019, 0.004.
+  const double freqs[] = {0.15, 0.3, 0.55, 0.8, 1.2};
+  double share[5] = {0, 0, 0, 0, 0};
+  const int n = 32, ms[] = {5, 6, 7, 8, 9, 10, 11, 12, 13};
+  for (const int m : ms) {
+    Sea sea = cascade_sea();
+    const double L = 16, k = kTwoPi * m / L, A = 0.01;
+    auto data = std::make_shared<LatticeData>();
+    data->n = n;
+    data->amplitude.assign(n * n, 0.0);
+    data->phase.assign(n * n, 0.0);
+    data->amplitude[m] = A;
+    data->phase[m] = 0.4;
+    CascadeDesc c;
+    c.file = "one.npy";
+    c.patch_size = L;
+    c.lattice = n;
+    c.band_min = 0.5;
+    c.band_max = n * kPi / L;
+    c.data = data;
+    sea.scene.surface.cascades = {c};
+    const Fields fields(sea.scene, 0, 1, kDefaultIntersectTolerance);
+    const kd::WaveBuffer b = wave_buffer(fields.in);
+    const kd::Frame& f = fields.in.frame;
+    const kd::Cascade cc = kd::cascade_at(b, f, 0);
+    kd::StaaParams p{};
+    p.alias_start = 0.3;
+    p.alias_end = 0.8;
+    for (int q = 0; q < 5; ++q) {
+      const double sigma = kTwoPi * freqs[q] / k;
+      double gt = 0, tt = 0;
+      for (int s = 0; s < 64; ++s) {
+        kd::Footprint fp;
+        fp.hit = true;
+        fp.point = kd::vec3(0.37 + (s + 0.5) / 64 * (kTwoPi / k), 0.0, 1.3 + 0.1 * s);
+        fp.view = kd::vec3(0.0, 1.0, 0.0);
+        fp.dp_dpx = kd::vec3(sigma, 0.0, 0.0);
+        fp.dp_dpy = kd::vec3(0.0, 0.0, sigma);
+        fp.distance = 10;
+        const kd::PathViews v = kd::path_views_fixed(fp.point, fp.view);
+        const kd::CascadeShare sh = kd::cascade_staa_share(b, f, p, fp, v, cc);
+        const double truth = kd::cascade_gradient(b, f, f.segments, fp.point.x, fp.point.z).x;
+        gt += sh.g[f.segments].x * truth;
+        tt += truth * truth;
+      }
+      share[q] += gt / tt / std::size(ms);
+    }
+  }
+  for (int q = 0; q < 5; ++q) {
+    const double ramp = 1 - kd::alias_fraction(freqs[q], 0.3, 0.8);
+    std::printf("f %.2f cycles a pixel: the chain keeps %.3f of the slope, Eq. 20 %.3f\n", freqs[q],
+                share[q], ramp);
+    EXPECT_NEAR(share[q], ramp, q == 2 ? 0.05 : 0.25) << freqs[q];
+  }
+}
+
 TEST(CascadeFields, ChainSecondMomentsAverageToTheSlopeVariance) {
   const Sea sea = cascade_sea();
   const Fields fields(sea.scene, 0, 1, kDefaultIntersectTolerance);

@@ -29,10 +29,10 @@
 // lies at world x = p L / N.
 //
 // What a pixel reads (cascade_filtered): the level whose texel spans the footprint's
-// smaller axis scaled to Eq. 20's end of aliasing (a box of width w passes waves longer
-// than about 3 w and removes those of length w or less: with w = sigma_min / alias_end the
-// waves a pixel resolves stay in the mean, those it aliases go to the second moments),
-// the two levels about it blended (trilinear), and along the footprint's longer axis up
+// smaller axis scaled so that the filter passes half of a wave at the middle of Eq. 20's
+// ramp (cascade_fields.glsl, cascade_resolving_scale: the waves a pixel resolves stay in
+// the mean, those it aliases go to the second moments), the two levels about it blended
+// (trilinear), and along the footprint's longer axis up
 // to kCascadeMaxTaps such boxes side by side (anisotropic filtering; past that the boxes
 // widen). Level 0 is interpolated by Catmull-Rom's cubic (a bilinear blend of a sine
 // sampled four times per period is off by up to 29%; the cubic's error is measured in
