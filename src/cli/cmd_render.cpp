@@ -291,9 +291,16 @@ void run_render(RenderArgs& a) {
               warmup > 0 ? (" after " + std::to_string(warmup) + " warm-up frames").c_str() : "",
               secs, 1000 * secs / frames, fb.c_str(), written.c_str());
   if (variance_frames > 0) {
-    std::printf("%s: standard error %.3g (RMSE units, RMS over %d frame%s)\n",
+    // Batches that agree in every pixel measure no noise: either there is none, or a rare
+    // bright sample (a glint) that no batch drew would not show in them.
+    const char* unmeasured =
+        variance_sum > 0 ? ""
+                         : "; the batches agree in every pixel, so a rare bright sample that none "
+                           "of them drew (a glint) would not show in it: more --samples or "
+                           "--batches measure it";
+    std::printf("%s: standard error %.3g (RMSE units, RMS over %d frame%s)%s\n",
                 method->name().c_str(), std::sqrt(variance_sum / variance_frames), variance_frames,
-                variance_frames > 1 ? "s" : "");
+                variance_frames > 1 ? "s" : "", unmeasured);
   }
 }
 
