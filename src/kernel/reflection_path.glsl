@@ -115,30 +115,32 @@ SG_FN PathInstants path_instants_fixed(IN(Frame) f) {
   return inst;
 }
 
-// Under a moving camera (v.moving), each instant's water point and dt as well.
+// Where the instants' points move (v.moving), each instant's water point as well.
 SG_FN PathInstants path_instants(IN(Frame) f, IN(PathViews) v) {
   PathInstants inst = path_instants_fixed(f);
   inst.moving = v.moving;
   if (v.moving) {
-    for (int k = 0; k <= f.segments; ++k) {
+    for (int k = 0; k <= f.segments; ++k)
       inst.points[k] = v.point[k];
-      inst.dts[k] = k < f.segments ? path_instant_dt(f, k) : 0.0;
-    }
   }
   return inst;
 }
 
 // Every wave at full amplitude: the path of staa-temporal (the definition; the CPU engine
 // runs the same terms, path_terms.glsl, in SIMD lanes under SG_CPU_WAVE_SUMS).
-SG_FN PathGradients wave_sum_path(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
+// The instants `inst`, the display time's phases at `point` (x, z).
+SG_FN PathGradients wave_sum_path_of(IN(WaveBuffer) waves, IN(Frame) f, IN(PathInstants) inst,
+                                     vec2 point) {
   PathGradients p = path_gradients_zero(f.segments);
-  PathInstants inst = path_instants_fixed(f);
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
-    real theta = wave_phase(w, point.x, point.z, 0.0);
+    real theta = wave_phase(w, point.x, point.y, 0.0);
     path_gradients_add(p, inst, waves, i, w, w.A, sin(theta), cos(theta));
   }
   return p;
+}
+SG_FN PathGradients wave_sum_path(IN(WaveBuffer) waves, IN(Frame) f, vec3 point) {
+  return wave_sum_path_of(waves, f, path_instants_fixed(f), vec2(point.x, point.z));
 }
 
 #ifdef SG_CPU_WAVE_SUMS
@@ -151,14 +153,7 @@ SG_FN PathGradients path_gradients(IN(WaveBuffer) waves, IN(Frame) f, vec3 point
 
 // The same under a moving camera (the definition; in SIMD lanes on the CPU, as above).
 SG_FN PathGradients wave_sum_path_moving(IN(WaveBuffer) waves, IN(Frame) f, IN(PathViews) v) {
-  PathGradients p = path_gradients_zero(f.segments);
-  PathInstants inst = path_instants(f, v);
-  for (int i = 0; i < f.wave_count; ++i) {
-    Wave w = wave_at(waves, f, i);
-    real theta = wave_phase(w, v.point[f.segments].x, v.point[f.segments].y, 0.0);
-    path_gradients_add(p, inst, waves, i, w, w.A, sin(theta), cos(theta));
-  }
-  return p;
+  return wave_sum_path_of(waves, f, path_instants(f, v), v.point[f.segments]);
 }
 
 #ifdef SG_CPU_WAVE_SUMS

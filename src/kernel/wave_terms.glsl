@@ -94,16 +94,15 @@ SG_FN vec2 wave_gradient_of(IN(Wave) w, real x, real z, real dt) {
 }
 
 // The path's instants t_k = end - duration (K - k) / K, k = 0..K, as the sums over the
-// waves take them (reflection_path.glsl, path_instants): a fixed camera turns each wave's
-// display-time phase back by the wave buffer's rotations (waves `wave_stride` texels
-// apart); a moving one takes each instant's phase at its own water point p_k and dt_k
-// (k < K; instant K is the display time's point).
+// waves take them (reflection_path.glsl, path_instants): each wave's display-time phase
+// turned back by the wave buffer's rotations (waves `wave_stride` texels apart) and, where
+// the instants' points move, on to each instant's own water point p_k (k < K; p_K is the
+// display time's point; path_terms.glsl, path_instant_cos_sin).
 struct PathInstants {
   int segments;  // K
   int wave_stride;
   bool moving;
   vec2 points[kMaxSegments + 1];
-  real dts[kMaxSegments + 1];
 };
 
 // The gradient and its time derivative at the path's instants t_0 .. t_K (the reference's
