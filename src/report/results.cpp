@@ -451,6 +451,13 @@ std::string reference_noise_text(const SceneResult& sc, const std::string& q) {
       fmt("%.3g", f.reference_se) +
       "). RMSEs are against the reference, the noise-corrected RMSE "
       "sqrt(max(0, RMSE^2 - se^2)) in brackets.";
+  if (!(a.reference_se > 0)) {
+    // Batches that agree in every pixel measure no noise (cmd_render.cpp says the same of
+    // `render`): a rare bright sample that no batch drew would not show in them.
+    t += " A standard error of 0: the reference's batches agree in every pixel, so a rare "
+         "bright sample that none of them drew (a glint) would not show in it; more samples "
+         "or batches in the reference measure it.";
+  }
   // Methods whose RMSEs differ by less than the reference's noise.
   std::string close;
   for (size_t x = 0; x < sc.methods.size(); ++x) {

@@ -317,6 +317,22 @@ TEST(Results, MarkdownAndReadmeSection) {
   EXPECT_NE(summary.find("| `point` |"), std::string::npos);
 }
 
+// A reference whose batches agree in every pixel (standard error 0) measured no noise: the
+// report says so, where a measured or unknown noise gets no such sentence.
+TEST(Results, AReferenceStandardErrorOfZeroIsSaidToMeasureNoNoise) {
+  SceneResult sc = sample().scenes[0];
+  auto text_with = [&](double se) {
+    for (RegionMetrics& m : sc.reference.regions)
+      m.reference_se = se;
+    return reference_noise_text(sc, "`");
+  };
+  const std::string said = "A standard error of 0: the reference's batches agree in every pixel";
+  EXPECT_NE(text_with(0.0).find(said), std::string::npos);
+  EXPECT_EQ(text_with(2e-4).find(said), std::string::npos);
+  EXPECT_NE(text_with(2e-4).find("standard error (its expected RMSE"), std::string::npos);
+  EXPECT_EQ(text_with(std::numeric_limits<double>::quiet_NaN()).find(said), std::string::npos);
+}
+
 TEST(Paper, RowsMatchVariantsAndRatiosCompare) {
   const auto m = match_paper_rows(
       {"point", "supersample --samples 6x6x1", "staa", "staa --footprint none --ndf uniform"}, {});
