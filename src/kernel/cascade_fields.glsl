@@ -76,16 +76,16 @@ SG_FN CascadeFilter cascade_filter(IN(Cascade) c, mat2 J, real scale) {
   return b;
 }
 
-// The mean of the chain over the filter's boxes about `centre` (camera-relative x, z) at
-// instant k.
-SG_FN CascadeTexel cascade_box_mean(IN(WaveBuffer) waves, IN(Cascade) c, int k, IN(CascadeFilter) b,
-                                    vec2 centre, bool moments) {
+// The mean of the chain over the filter's boxes about `centre` (camera-relative x, z), what
+// the read `rd` takes (cascade_grid.glsl, CascadeRead).
+SG_FN CascadeTexel cascade_box_mean(IN(WaveBuffer) waves, IN(Cascade) c, IN(CascadeRead) rd,
+                                    IN(CascadeFilter) b, vec2 centre) {
   real inv_taps = 1.0 / real(b.taps);
   CascadeTexel acc = cascade_texel_zero();
   for (int q = 0; q < b.taps; ++q) {
     vec2 at = centre + ((real(q) + 0.5) * inv_taps - 0.5) * b.major * b.axis;
-    cascade_texel_add(
-        acc, cascade_filtered(waves, c, k, b.level, cascade_grid_coord(c, at), moments), inv_taps);
+    cascade_texel_add(acc, cascade_filtered(waves, c, rd, b.level, cascade_grid_coord(c, at)),
+                      inv_taps);
   }
   return acc;
 }
@@ -121,10 +121,15 @@ SG_FN CascadeShare cascade_staa_share(IN(WaveBuffer) waves, IN(Frame) f, IN(Staa
     s.cov = c.cov;
     return s;
   }
+  // Where the instants' points coincide (the camera holds still on flat water), the display
+  // time's pass over the filter's texels takes the shutter start's slopes along (the same
+  // weights: the same values as a pass of its own).
+  bool start_along = !v.moving;
   CascadeTexel now = cascade_texel_zero();
-  for (int k = K; k >= 0; --k) {
+  for (int k = K; k >= (start_along ? 1 : 0); --k) {
     vec2 centre = v.moving ? v.point[k] : vec2(fp.point.x, fp.point.z);
-    CascadeTexel acc = cascade_box_mean(waves, c, k, b, centre, k == K);
+    CascadeTexel acc =
+        cascade_box_mean(waves, c, cascade_read(k, k == K, start_along && k == K), b, centre);
     s.g[k] = vec2(acc.a.x, acc.a.y);
     if (k == K) {
       now = acc;
@@ -132,6 +137,10 @@ SG_FN CascadeShare cascade_staa_share(IN(WaveBuffer) waves, IN(Frame) f, IN(Staa
     } else {
       s.hess[k] = s.hess[K];
     }
+  }
+  if (start_along) {
+    s.g[0] = now.start;
+    s.hess[0] = s.hess[K];
   }
   // The covariance over the boxes, less the resolved curvature's spread over them (the
   // boxes' positions: w^2 / 12 across, the taps' span along the axis).
@@ -171,7 +180,7 @@ SG_FN CascadeMoments cascade_footprint_moments(IN(WaveBuffer) waves, IN(Frame) f
       r.cov += cc.cov;
       continue;
     }
-    CascadeTexel t = cascade_box_mean(waves, cc, f.segments, b, centre, true);
+    CascadeTexel t = cascade_box_mean(waves, cc, cascade_read(f.segments, true, false), b, centre);
     vec2 g = vec2(t.a.x, t.a.y);
     r.mean += g;
     r.cov += cascade_psd(sym2(vec3(t.b.y, t.b.z, t.b.w)) - outerProduct(g, g));

@@ -18,11 +18,14 @@
 //    gradient its finite differences, the interpolant within its bounds at random points,
 //    and the march's hits on the interpolated surface, the ray above it before them;
 //  - the fields a method builds for what it reads (CascadeReads): `point`, `supersample`
-//    with T = 1 and `staa-temporal` shade the same, to rounding, as from the whole fields.
+//    with T = 1 and `staa-temporal` shade the same, to rounding, as from the whole fields;
+//  - a still camera's shutter start read along the display time's pass: the same share, to
+//    the bit, as a pass of its own.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 #include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
@@ -393,7 +396,8 @@ TEST(CascadeFields, ChainSecondMomentsAverageToTheSlopeVariance) {
           top += dot(s, s) / (g * g);
         }
       }
-      const kd::CascadeTexel t = kd::cascade_filtered(b, cc, 1, cc.levels - 1, kd::vec2(0.0), true);
+      const kd::CascadeTexel t = kd::cascade_filtered(b, cc, kd::cascade_read(1, true, false),
+                                                      cc.levels - 1, kd::vec2(0.0));
       EXPECT_NEAR(t.b.y + t.b.w, top, 1e-9 * top) << "cascade " << c;
     }
     for (double level : {1.0, 2.5, 4.0, 5.0}) {
@@ -404,7 +408,8 @@ TEST(CascadeFields, ChainSecondMomentsAverageToTheSlopeVariance) {
       for (int q = 0; q < g; ++q) {
         for (int p = 0; p < g; ++p) {
           const kd::vec2 u((p + 0.5) * cc.n / g, (q + 0.5) * cc.n / g);
-          const kd::CascadeTexel t = kd::cascade_filtered(b, cc, 1, level, u, true);
+          const kd::CascadeTexel t =
+              kd::cascade_filtered(b, cc, kd::cascade_read(1, true, false), level, u);
           tr += (t.b.y + t.b.w) / (g * g);
         }
       }
@@ -451,11 +456,58 @@ TEST(CascadeFields, StaaShareLimits) {
     const kd::Footprint tiny = footprint_of(3, 7, 1e-5 * cc.size / cc.n);
     const kd::CascadeShare st = kd::cascade_staa_share(
         b, in.frame, p, tiny, kd::path_views_fixed(tiny.point, tiny.view), cc);
-    const kd::vec4 a =
-        kd::cascade_bicubic(b, cc, 1, kd::cascade_grid_coord(cc, kd::vec2(3, 7)), false).a;
+    const kd::vec4 a = kd::cascade_bicubic(b, cc, kd::cascade_read(1, false, false),
+                                           kd::cascade_grid_coord(cc, kd::vec2(3, 7)))
+                           .a;
     EXPECT_NEAR(st.g[1].x, a.x, 1e-14);
     EXPECT_NEAR(st.g[1].y, a.y, 1e-14);
     EXPECT_LT(st.cov.x + st.cov.z, 1e-12 * (cc.cov.x + cc.cov.z));
+  }
+}
+
+// A camera that holds still reads the path's two ends at one water point: the display
+// time's pass over the filter's texels takes the shutter start's slopes along
+// (cascade_fields.glsl, CascadeRead.start). The share must be the one that a pass of the
+// shutter start's own gives (PathViews marked moving with every instant's point the same
+// takes that pass), to the bit: every slope, Hessian and the covariance, over footprints
+// from below a texel to past the patch, elongated and turned, for 1 and 3 sub-arcs; and the
+// start's slopes must differ from the display time's (the shutter is not zero).
+TEST(CascadeFields, ShutterStartTakenAlongEqualsItsOwnPass) {
+  const Sea sea = cascade_sea();
+  const kd::StaaParams p = params();
+  for (int K : {1, 3}) {
+    const Fields fields(sea.scene, 2, K, kDefaultIntersectTolerance);
+    const KernelInputsD& in = fields.in;
+    const kd::WaveBuffer b = wave_buffer(in);
+    std::mt19937 rng(7 + K);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    int differ = 0, read = 0;
+    for (int c = 0; c < 2; ++c) {
+      const kd::Cascade cc = kd::cascade_at(b, in.frame, c);
+      for (int trial = 0; trial < 60; ++trial) {
+        kd::Footprint fp = footprint_of(40 * u01(rng) - 20, 40 * u01(rng) - 20,
+                                        std::pow(10.0, 4 * u01(rng) - 3) * cc.size / cc.n);
+        const double turn = kTwoPi * u01(rng), stretch = 1 + 9 * u01(rng);
+        fp.dp_dpx = kd::vec3(std::cos(turn), 0, std::sin(turn)) * fp.dp_dpx.x;
+        fp.dp_dpy = kd::vec3(-std::sin(turn), 0, std::cos(turn)) * (fp.dp_dpy.z * stretch);
+        const kd::PathViews still = kd::path_views_fixed(fp.point, fp.view);
+        kd::PathViews own = still;
+        own.moving = true;
+        const kd::CascadeShare a = kd::cascade_staa_share(b, in.frame, p, fp, still, cc);
+        const kd::CascadeShare o = kd::cascade_staa_share(b, in.frame, p, fp, own, cc);
+        for (int k = 0; k <= K; ++k) {
+          EXPECT_EQ(a.g[k], o.g[k]) << "K " << K << " cascade " << c << " trial " << trial;
+          EXPECT_EQ(a.hess[k], o.hess[k]) << "K " << K << " instant " << k;
+        }
+        EXPECT_EQ(a.cov, o.cov);
+        if (a.g[K] != kd::vec2(0.0)) ++read;
+        if (a.g[0] != a.g[K]) ++differ;
+      }
+    }
+    // Most footprints read the chain (the rest average a cascade out whole), and there the
+    // two ends' slopes differ.
+    EXPECT_GT(read, 60) << "K " << K;
+    EXPECT_EQ(differ, read) << "K " << K;
   }
 }
 

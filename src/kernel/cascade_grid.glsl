@@ -91,36 +91,76 @@ SG_FN Cascade cascade_at(IN(WaveBuffer) waves, IN(Frame) f, int c) {
   return cascade_header(waves, f, c, data);
 }
 
-// A texel's (or a filtered sample's) two vec4s.
+// A texel's (or a filtered sample's) two vec4s, and the shutter start's slope where a read
+// takes it along (cascade_read).
 struct CascadeTexel {
-  vec4 a;  // E[s_x], E[s_z], E[h_xx], E[h_zz]
-  vec4 b;  // E[h_xz], E[s_x^2], E[s_x s_z], E[s_z^2]
+  vec4 a;      // E[s_x], E[s_z], E[h_xx], E[h_zz]
+  vec4 b;      // E[h_xz], E[s_x^2], E[s_x s_z], E[s_z^2]
+  vec2 start;  // E[s_x], E[s_z] at instant 0, at the same points (else 0)
 };
 
 SG_FN CascadeTexel cascade_texel_zero() {
   CascadeTexel t;
   t.a = vec4(0.0);
   t.b = vec4(0.0);
+  t.start = vec2(0.0);
   return t;
 }
 
 SG_FN void cascade_texel_add(INOUT(CascadeTexel) acc, IN(CascadeTexel) t, real w) {
   acc.a += w * t.a;
   acc.b += w * t.b;
+  acc.start += w * t.start;
 }
 
-// Texel (x, y) of level l at instant k, the indices wrapped to the level's n_l x n_l (a
-// power of two: the two's-complement mask is the modulo); `moments`: with its second
-// texel (else b = 0: the slope and h_xx, h_zz alone).
-SG_FN CascadeTexel cascade_texel(IN(WaveBuffer) waves, IN(Cascade) c, int k, int l, int x, int y,
-                                 bool moments) {
-  int nl = c.n >> l;
-  int i = c.data + k * cascade_instant_texels(c.n) + cascade_level_offset(c.n, l) +
-          2 * ((y & (nl - 1)) * nl + (x & (nl - 1)));
-  CascadeTexel t;
-  t.a = wave_texel(waves, i);
-  t.b = moments ? wave_texel(waves, i + 1) : vec4(0.0);
-  return t;
+// What a filtered read takes: instant k's chain, with its second texels (`moments`; else
+// b = 0: the slope and h_xx, h_zz alone) and, `start`, instant 0's slopes at the same
+// points and weights (a camera that holds still reads the path's two ends at one water
+// point: one pass over the filter's texels serves both, cascade_fields.glsl).
+struct CascadeRead {
+  int k;
+  bool moments;
+  bool start;
+};
+
+SG_FN CascadeRead cascade_read(int k, bool moments, bool start) {
+  CascadeRead r;
+  r.k = k;
+  r.moments = moments;
+  r.start = start && k > 0;
+  return r;
+}
+
+// Where level l of a read's instant starts in the wave buffer (and instant 0's, where the
+// read takes it along: -1 where not), and the level's side n_l.
+struct CascadeLevel {
+  int base;
+  int start;
+  int n;
+  bool moments;
+};
+
+SG_FN CascadeLevel cascade_level(IN(Cascade) c, IN(CascadeRead) r, int l) {
+  CascadeLevel v;
+  int level = c.data + cascade_level_offset(c.n, l);
+  v.base = level + r.k * cascade_instant_texels(c.n);
+  v.start = r.start ? level : -1;
+  v.n = c.n >> l;
+  v.moments = r.moments;
+  return v;
+}
+
+// Texel (x, y) of a level, the indices wrapped to its n_l x n_l (a power of two: the two's-
+// complement mask is the modulo), added to `acc` with weight w.
+SG_FN void cascade_texel_add_at(INOUT(CascadeTexel) acc, IN(WaveBuffer) waves, IN(CascadeLevel) lv,
+                                int x, int y, real w) {
+  int i = 2 * ((y & (lv.n - 1)) * lv.n + (x & (lv.n - 1)));
+  acc.a += w * wave_texel(waves, lv.base + i);
+  if (lv.moments) acc.b += w * wave_texel(waves, lv.base + i + 1);
+  if (lv.start >= 0) {
+    vec4 s = wave_texel(waves, lv.start + i);
+    acc.start += w * vec2(s.x, s.y);
+  }
 }
 
 // Camera-relative (x, z) in level-0 sample units, reduced to [0, N).
@@ -132,19 +172,20 @@ SG_FN vec2 cascade_grid_coord(IN(Cascade) c, vec2 xz) {
 
 // Level l >= 1 at grid coordinate u, bilinearly (texel i's centre is sample
 // i 2^l + (2^l - 1) / 2).
-SG_FN CascadeTexel cascade_bilinear(IN(WaveBuffer) waves, IN(Cascade) c, int k, int l, vec2 u,
-                                    bool moments) {
+SG_FN CascadeTexel cascade_bilinear(IN(WaveBuffer) waves, IN(Cascade) c, IN(CascadeRead) rd, int l,
+                                    vec2 u) {
   real s = real(1 << l);
   vec2 t = (u - 0.5 * (s - 1.0)) / s;
   vec2 i0 = floor(t);
   vec2 w = t - i0;
   int x = int(i0.x);
   int y = int(i0.y);
+  CascadeLevel lv = cascade_level(c, rd, l);
   CascadeTexel r = cascade_texel_zero();
-  cascade_texel_add(r, cascade_texel(waves, c, k, l, x, y, moments), (1.0 - w.x) * (1.0 - w.y));
-  cascade_texel_add(r, cascade_texel(waves, c, k, l, x + 1, y, moments), w.x * (1.0 - w.y));
-  cascade_texel_add(r, cascade_texel(waves, c, k, l, x, y + 1, moments), (1.0 - w.x) * w.y);
-  cascade_texel_add(r, cascade_texel(waves, c, k, l, x + 1, y + 1, moments), w.x * w.y);
+  cascade_texel_add_at(r, waves, lv, x, y, (1.0 - w.x) * (1.0 - w.y));
+  cascade_texel_add_at(r, waves, lv, x + 1, y, w.x * (1.0 - w.y));
+  cascade_texel_add_at(r, waves, lv, x, y + 1, (1.0 - w.x) * w.y);
+  cascade_texel_add_at(r, waves, lv, x + 1, y + 1, w.x * w.y);
   return r;
 }
 
@@ -157,42 +198,42 @@ SG_FN vec4 catmull_rom_weights(real t) {
 }
 
 // Level 0 at grid coordinate u, by Catmull-Rom's bicubic (16 texels).
-SG_FN CascadeTexel cascade_bicubic(IN(WaveBuffer) waves, IN(Cascade) c, int k, vec2 u,
-                                   bool moments) {
+SG_FN CascadeTexel cascade_bicubic(IN(WaveBuffer) waves, IN(Cascade) c, IN(CascadeRead) rd,
+                                   vec2 u) {
   vec2 i0 = floor(u);
   vec4 wx = catmull_rom_weights(u.x - i0.x);
   vec4 wy = catmull_rom_weights(u.y - i0.y);
   int x = int(i0.x);
   int y = int(i0.y);
+  CascadeLevel lv = cascade_level(c, rd, 0);
   CascadeTexel r = cascade_texel_zero();
   for (int b = 0; b < 4; ++b) {
-    for (int a = 0; a < 4; ++a) {
-      cascade_texel_add(r, cascade_texel(waves, c, k, 0, x + a - 1, y + b - 1, moments),
-                        wx[a] * wy[b]);
-    }
+    for (int a = 0; a < 4; ++a)
+      cascade_texel_add_at(r, waves, lv, x + a - 1, y + b - 1, wx[a] * wy[b]);
   }
   return r;
 }
 
 // The chain at fractional level `level` (0 to levels - 1) and grid coordinate u: the two
 // levels about it blended.
-SG_FN CascadeTexel cascade_filtered(IN(WaveBuffer) waves, IN(Cascade) c, int k, real level, vec2 u,
-                                    bool moments) {
+SG_FN CascadeTexel cascade_filtered(IN(WaveBuffer) waves, IN(Cascade) c, IN(CascadeRead) rd,
+                                    real level, vec2 u) {
   int l0 = int(floor(level));
   real t = level - real(l0);
   CascadeTexel r;
   if (l0 == 0) {
-    r = cascade_bicubic(waves, c, k, u, moments);
+    r = cascade_bicubic(waves, c, rd, u);
     // A grid point has no spread of its own: level 0's second moments are its mean's
     // square (an interpolated s s^T would add the blend's spread between samples).
     r.b = vec4(r.b.x, r.a.x * r.a.x, r.a.x * r.a.y, r.a.y * r.a.y);
   } else {
-    r = cascade_bilinear(waves, c, k, l0, u, moments);
+    r = cascade_bilinear(waves, c, rd, l0, u);
   }
   if (t > 0.0 && l0 + 1 < c.levels) {
-    CascadeTexel r1 = cascade_bilinear(waves, c, k, l0 + 1, u, moments);
+    CascadeTexel r1 = cascade_bilinear(waves, c, rd, l0 + 1, u);
     r.a = mix(r.a, r1.a, t);
     r.b = mix(r.b, r1.b, t);
+    r.start = mix(r.start, r1.start, t);
   }
   return r;
 }
@@ -206,7 +247,9 @@ SG_FN vec2 cascade_gradient(IN(WaveBuffer) waves, IN(Frame) f, int k, real x, re
   for (int c = 0; c < f.cascade_count; ++c) {
     Cascade cc = cascade_header(waves, f, c, data);
     data = cascade_data_end(f, cc);
-    vec4 a = cascade_bicubic(waves, cc, k, cascade_grid_coord(cc, vec2(x, z)), false).a;
+    vec4 a = cascade_bicubic(waves, cc, cascade_read(k, false, false),
+                             cascade_grid_coord(cc, vec2(x, z)))
+                 .a;
     g += vec2(a.x, a.y);
   }
   return g;
@@ -220,8 +263,8 @@ SG_FN vec3 cascade_hessian(IN(WaveBuffer) waves, IN(Frame) f, real x, real z) {
   for (int c = 0; c < f.cascade_count; ++c) {
     Cascade cc = cascade_header(waves, f, c, data);
     data = cascade_data_end(f, cc);
-    CascadeTexel t =
-        cascade_bicubic(waves, cc, f.segments, cascade_grid_coord(cc, vec2(x, z)), true);
+    CascadeTexel t = cascade_bicubic(waves, cc, cascade_read(f.segments, true, false),
+                                     cascade_grid_coord(cc, vec2(x, z)));
     h += vec3(t.a.z, t.b.x, t.a.w);
   }
   return h;
