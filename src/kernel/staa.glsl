@@ -139,6 +139,7 @@ SG_FN StaaWavePixel staa_wave_pixel(IN(Frame) f, IN(StaaParams) p, IN(Footprint)
   px.per_pixel_ndf = p.per_pixel_ndf;
   px.cells = staa_smooth_side(f, p);
   px.inst = path_instants(f, v);
+  px.instant_hessians = !v.camera_moves && f.duration > 0.0;
   px.sweep = v.point[f.segments] - v.point[0];
   return px;
 }

@@ -55,14 +55,19 @@ struct StaaWavePixel {
   bool per_pixel_ndf;  // Appendix A's moments (else Eq. 3)
   int cells;           // the smooth terms' cells per side (0: none)
   PathInstants inst;   // the path's instants (wave_terms.glsl)
-  vec2 sweep;          // a moving camera's motion p_K - p_0 over the shutter
+  // The instants' Hessians are read (a still camera and a shutter: the footprint term at
+  // each instant, staa.glsl, staa_footprint_covariance); else the display time's alone.
+  bool instant_hessians;
+  vec2 sweep;  // a moving camera's motion p_K - p_0 over the shutter
 };
 
 // Wave i's resolved share A (sine s and cosine c of its display-time phase) in the
 // gradients and Hessians of the path's instants: instant k's phase by
-// path_instant_cos_sin (path_terms.glsl), the gradient A cos k, the Hessian -A sin k k^T.
-SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, IN(WaveBuffer) waves, int i,
-                         IN(Wave) w, real A, real s, real c) {
+// path_instant_cos_sin (path_terms.glsl), the gradient A cos k, the Hessian -A sin k k^T
+// (the instants' other than the display time's only where `hessians`: nothing reads them
+// under a moving camera or a zero shutter).
+SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, bool hessians,
+                         IN(WaveBuffer) waves, int i, IN(Wave) w, real A, real s, real c) {
   vec2 k = vec2(w.a, w.b);
   vec3 kk = wave_curvature_of(w);
   sums.path.g[inst.segments] += (A * c) * k;
@@ -70,7 +75,7 @@ SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, IN(WaveBuf
   for (int q = 0; q < inst.segments; ++q) {
     vec2 cs = path_instant_cos_sin(inst, waves, i, w, s, c, q);
     sums.path.g[q] += (A * cs.x) * k;
-    sums.hess[q] -= (A * cs.y) * kk;
+    if (hessians) sums.hess[q] -= (A * cs.y) * kk;
   }
 }
 
@@ -96,7 +101,8 @@ SG_FN void staa_wave_add(INOUT(StaaSums) sums, IN(StaaWavePixel) px, IN(WaveBuff
   real resolved = (1.0 - alpha) * w.A;
   // A share of 0 adds nothing: the branch skips the instants' terms of the fully aliasing
   // waves.
-  if (any_lane(resolved != 0.0)) staa_path_add(sums, px.inst, waves, i, w, resolved, s, c);
+  if (any_lane(resolved != 0.0))
+    staa_path_add(sums, px.inst, px.instant_hessians, waves, i, w, resolved, s, c);
   real aliasing = alpha * w.A;
   if (any_lane(aliasing > 0.0)) {
     sums.any_alias = true;
