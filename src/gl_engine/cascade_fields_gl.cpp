@@ -110,7 +110,7 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
       bounds_.set("base", static_cast<int>(5 * c));
       gl::dispatch_2d(bounds_, n, n);
     };
-    if (reads != CascadeReads::all) {
+    if (reads == CascadeReads::instants_level0 || reads == CascadeReads::display_level0) {
       // Level 0 alone: the display time's slopes and height, the other instants' slopes
       // two to a transform.
       fft.transform(Pair::full, time(segments), 0.0, false, 0);
@@ -139,6 +139,7 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
     fft.transform(Pair::curvature_and_slopes, time(segments), time(0), !still && !heights, 1);
     chain(fft, Chain::full, 0, 0, at(segments), waves, true);
     bound();
+    if (reads == CascadeReads::display_chain) continue;
     if (still) {
       // Every instant is the display time's.
       gl::barrier();

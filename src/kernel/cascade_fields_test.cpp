@@ -20,7 +20,9 @@
 //  - the fields a method builds for what it reads (CascadeReads): `point`, `supersample`
 //    with T = 1 and `staa-temporal` shade the same, to rounding, as from the whole fields;
 //  - a still camera's shutter start read along the display time's pass: the same share, to
-//    the bit, as a pass of its own.
+//    the bit, as a pass of its own;
+//  - the host baselines' fields (the display time's chain alone): the whole fields' display
+//    time, texel for texel.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -904,6 +906,64 @@ TEST(CascadeFields, ReducedReadsShadeTheSameAsTheWholeFields) {
   std::printf("pixels that the display time's slopes of one cascade change: %d of %d\n", lit,
               6 * sea.scene.width * sea.scene.height);
   EXPECT_GT(lit, sea.scene.width * sea.scene.height);
+}
+
+// The host's baselines (`lean`, `specaa`, `bruneton`: methods/host_cascades.h) read the
+// display time alone; their fields (CascadeReads::display_chain) are the whole fields'
+// display time, texel for texel, the other instants 0, and the baselines' reads of them
+// the same to the bit, at K = 1 and 3, with a shutter and without.
+TEST(CascadeFields, DisplayChainIsTheWholeFieldsDisplayTime) {
+  for (const double shutter : {1.0, 0.0}) {
+    const Sea sea = cascade_sea(shutter);
+    const SceneModel m(sea.scene);
+    const FrameTime ft = frame_time(sea.scene, 3);
+    for (int K : {1, 3}) {
+      KernelInputsD all, display;
+      build_kernel_inputs(m, ft, K, 0, all, 0.25, 1, true);
+      build_kernel_inputs(m, ft, K, 0, display, 0.25, 1, true, CascadeData::host,
+                          CascadeReads::display_chain);
+      ASSERT_EQ(all.texels.size(), display.texels.size());
+      const CascadeLayout& lay = display.cascades->layout();
+      // Every texel before the cascades' data (the waves, headers and bounds) and each
+      // cascade's display-time chain the same; the other instants 0 where the whole
+      // fields fill them.
+      size_t others = 0;
+      for (size_t e = 0; e < lay.data[0]; ++e)
+        ASSERT_EQ(all.texels[e], display.texels[e]) << e;
+      for (size_t c = 0; c < lay.data.size(); ++c) {
+        const size_t per = static_cast<size_t>(kd::cascade_instant_texels(lay.grid[c]));
+        for (int k = 0; k <= K; ++k) {
+          for (size_t e = 0; e < per; ++e) {
+            const size_t at = lay.data[c] + static_cast<size_t>(k) * per + e;
+            if (k == K) {
+              ASSERT_EQ(all.texels[at], display.texels[at]) << "cascade " << c << " texel " << e;
+            } else {
+              ASSERT_EQ(display.texels[at], kd::vec4(0.0));
+              others += all.texels[at] != kd::vec4(0.0);
+            }
+          }
+        }
+      }
+      EXPECT_GT(others, 0u) << "shutter " << shutter << " K " << K;
+      // What the baselines read: the footprint moments, the slope and the Hessian.
+      std::mt19937 rng(K);
+      std::uniform_real_distribution<double> u(-30.0, 30.0), s(0.01, 3.0);
+      for (int q = 0; q < 200; ++q) {
+        const kd::vec2 p(u(rng), u(rng));
+        const kd::mat2 J(s(rng), 0.1 * u(rng) / 30, 0.1 * u(rng) / 30, s(rng));
+        const kd::CascadeMoments a =
+            kd::cascade_footprint_moments(wave_buffer(all), all.frame, p, J);
+        const kd::CascadeMoments b =
+            kd::cascade_footprint_moments(wave_buffer(display), display.frame, p, J);
+        EXPECT_EQ(a.mean, b.mean);
+        EXPECT_EQ(a.cov, b.cov);
+        EXPECT_EQ(kd::cascade_gradient(wave_buffer(all), all.frame, K, p.x, p.y),
+                  kd::cascade_gradient(wave_buffer(display), display.frame, K, p.x, p.y));
+        EXPECT_EQ(kd::cascade_hessian(wave_buffer(all), all.frame, p.x, p.y),
+                  kd::cascade_hessian(wave_buffer(display), display.frame, p.x, p.y));
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -26,7 +26,9 @@ namespace sg {
 class HostCascades {
  public:
   explicit HostCascades(bool enabled)
-      : enabled_(enabled), inputs_(1, Precision::float64, kDefaultIntersectTolerance, 1, enabled) {}
+      : enabled_(enabled),
+        inputs_(1, Precision::float64, kDefaultIntersectTolerance, 1, enabled,
+                CascadeReads::display_chain) {}
 
   // Builds frame ctx's fields where they apply (the method's begin_frame).
   void build(const FrameContext& ctx);

@@ -205,7 +205,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
       write_chain(grid, heights ? kd::kCascadeChainSlopesHeight : kd::kCascadeChainSlopes, levels,
                   instant(k));
     };
-    if (reads != CascadeReads::all) {
+    if (reads == CascadeReads::instants_level0 || reads == CascadeReads::display_level0) {
       // Level 0 alone: the display time's slopes and height, the other instants' slopes.
       ffts_[c]->evaluate(cascade_instant(ft, segments, segments), false, grid);
       bounds[c] = grid_interpolant_bounds(grid);
@@ -220,6 +220,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
     ffts_[c]->evaluate(end, true, grid);
     bounds[c] = grid_interpolant_bounds(grid);
     write_chain(grid, kd::kCascadeChainFull, true, instant(segments));
+    if (reads == CascadeReads::display_chain) return;
     // A zero shutter: every instant is the display time's.
     const bool still = !(ft.duration() > 0);
     for (int k = 0; k < segments; ++k) {
