@@ -146,6 +146,10 @@ void GlEngine::upload(const FrameContext& ctx) {
                                        ? reference_time_split(ctx.model, ctx.time.duration())
                                        : ReferenceTimeSplit{v_.segments, 1};
   const int segments = split.segments;
+  // A program other than the reference's is compiled for its frames' K (kernel_program.h).
+  if (v_.entry != KernelEntry::reference && segments != v_.segments)
+    throw Error("GlEngine: a frame of " + std::to_string(segments) + " sub-arcs for a program of " +
+                std::to_string(v_.segments));
   const bool gpu_fields =
       v_.cascade_fields && v_.cascade_fft_gpu && cascade_fields_apply(ctx.model);
   build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance,

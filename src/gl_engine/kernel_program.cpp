@@ -58,6 +58,7 @@ const char* entry_define(KernelEntry e) {
 std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o) {
   std::string h = std::string("#define ") + entry_define(entry) + "\n#define SG_MAX_SEGMENTS " +
                   std::to_string(o.segments) + "\n";
+  if (entry != KernelEntry::reference) h += "#define SG_EXACT_SEGMENTS 1\n";
   if (entry == KernelEntry::staa) {
     h += std::string("#define SG_STAA_FALLBACK_RIEMANN ") + (o.fallback_riemann ? "1" : "0") +
          "\n#define SG_STAA_FALLBACK_ALONG_PATH " + (o.fallback_along_path ? "1" : "0") + "\n";

@@ -21,8 +21,12 @@ const char* entry_define(KernelEntry e);
 // What a program fixes in its text; every other option is a uniform. `staa`'s fallback
 // integrator selects code (kernel/staa.glsl, staa_fallback_share): a program holds the
 // one it runs, since code that never runs still costs a shader (docs/benchmarks.md).
+// The path's sub-arcs: every entry but the reference is compiled for its frames' K
+// (SG_MAX_SEGMENTS = K and SG_EXACT_SEGMENTS: the per-wave terms then index their arrays by
+// a constant, kernel/wave_terms.glsl, path_segments); the reference's frames pick K up to
+// the cap (SG_MAX_SEGMENTS alone).
 struct ProgramOptions {
-  int segments = 1;                 // the cap on the path's sub-arcs (SG_MAX_SEGMENTS)
+  int segments = 1;                 // the frames' K, or the reference's cap on it
   bool fallback_riemann = false;    // staa: SG_STAA_FALLBACK_RIEMANN
   bool fallback_along_path = true;  // staa: SG_STAA_FALLBACK_ALONG_PATH
 };

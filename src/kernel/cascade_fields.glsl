@@ -110,7 +110,7 @@ SG_FN vec3 cascade_psd(mat2 m2) {
 
 SG_FN CascadeShare cascade_staa_share(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p,
                                       IN(Footprint) fp, IN(PathViews) v, IN(Cascade) c) {
-  int K = f.segments;
+  int K = frame_segments(f);
   CascadeShare s;
   for (int k = 0; k <= K; ++k) {
     s.g[k] = vec2(0.0);
@@ -180,7 +180,8 @@ SG_FN CascadeMoments cascade_footprint_moments(IN(WaveBuffer) waves, IN(Frame) f
       r.cov += cc.cov;
       continue;
     }
-    CascadeTexel t = cascade_box_mean(waves, cc, cascade_read(f.segments, true, false), b, centre);
+    CascadeTexel t =
+        cascade_box_mean(waves, cc, cascade_read(frame_segments(f), true, false), b, centre);
     vec2 g = vec2(t.a.x, t.a.y);
     r.mean += g;
     r.cov += cascade_psd(sym2(vec3(t.b.y, t.b.z, t.b.w)) - outerProduct(g, g));

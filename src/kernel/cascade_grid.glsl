@@ -81,7 +81,7 @@ SG_FN int cascade_data_start(IN(Frame) f) {
 }
 // Where the data of the cascade after `c` starts.
 SG_FN int cascade_data_end(IN(Frame) f, IN(Cascade) c) {
-  return c.data + (f.segments + 1) * cascade_instant_texels(c.n);
+  return c.data + (frame_segments(f) + 1) * cascade_instant_texels(c.n);
 }
 
 SG_FN Cascade cascade_at(IN(WaveBuffer) waves, IN(Frame) f, int c) {
@@ -263,7 +263,7 @@ SG_FN vec3 cascade_hessian(IN(WaveBuffer) waves, IN(Frame) f, real x, real z) {
   for (int c = 0; c < f.cascade_count; ++c) {
     Cascade cc = cascade_header(waves, f, c, data);
     data = cascade_data_end(f, cc);
-    CascadeTexel t = cascade_bicubic(waves, cc, cascade_read(f.segments, true, false),
+    CascadeTexel t = cascade_bicubic(waves, cc, cascade_read(frame_segments(f), true, false),
                                      cascade_grid_coord(cc, vec2(x, z)));
     h += vec3(t.a.z, t.b.x, t.a.w);
   }
@@ -314,7 +314,7 @@ SG_FN vec3 cascade_height_gradient_of(IN(WaveBuffer) waves, IN(Frame) f, int cou
 }
 SG_FN vec3 cascade_height_gradient_first(IN(WaveBuffer) waves, IN(Frame) f, int count, real x,
                                          real z) {
-  return cascade_height_gradient_of(waves, f, count, f.segments, x, z);
+  return cascade_height_gradient_of(waves, f, count, frame_segments(f), x, z);
 }
 SG_FN vec3 cascade_height_gradient(IN(WaveBuffer) waves, IN(Frame) f, real x, real z) {
   return cascade_height_gradient_first(waves, f, f.cascade_count, x, z);

@@ -40,7 +40,8 @@ SG_FN Footprint pixel_footprint(IN(WaveBuffer) waves, IN(Frame) f, real px, real
   vec3 m = vec3(0.0, 1.0, 0.0);
   if (displaced) {
     vec2 g = water_gradient(waves, f, hit.point.x, hit.point.z, dt);
-    if (f.cascade_count > 0) g += cascade_gradient(waves, f, f.segments, hit.point.x, hit.point.z);
+    if (f.cascade_count > 0)
+      g += cascade_gradient(waves, f, frame_segments(f), hit.point.x, hit.point.z);
     m = vec3(-g.x, 1.0, -g.y);
   }
   fp.hit = true;

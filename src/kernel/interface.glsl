@@ -94,6 +94,20 @@ struct Frame {
   uvec2 seed;  // the sampling seed, as a 64-bit word (rng.glsl)
 };
 
+// K as the kernel takes it: the constant in a GLSL program compiled for its frames' K
+// (SG_EXACT_SEGMENTS, gl_engine/kernel_program.h: every entry but the reference, whose
+// frames pick K up to the cap), else the frame's. The pixel's arrays indexed by K (the
+// path's instants, centres, gradients) then stay in registers, where an index known only
+// at run time sends them through memory (wave_terms.glsl, path_segments; on llvmpipe a
+// third of `staa`'s frame on `smooth`, docs/benchmarks.md).
+SG_FN int frame_segments(IN(Frame) f) {
+#ifndef SG_EXACT_SEGMENTS
+  return f.segments;
+#else
+  return kMaxSegments;
+#endif
+}
+
 // The path tables' shapes (path_table.glsl, shading/path_table.h).
 struct PathTableInfo {
   int n_distance;

@@ -15,7 +15,7 @@ SG_FN vec2 path_instant_cos_sin(IN(PathInstants) inst, IN(WaveBuffer) waves, int
                                 real s, real c, int q) {
   vec2 cs = rotated_cos_sin(wave_rotation_of(waves, inst.wave_stride, i, q), s, c);
   if (inst.moving) {
-    vec2 dp = inst.points[q] - inst.points[inst.segments];
+    vec2 dp = inst.points[q] - inst.points[path_segments(inst)];
     real d = w.a * dp.x + w.b * dp.y;
     cs = rotated_cos_sin(vec2(cos(d), -sin(d)), cs.y, cs.x);
   }
@@ -27,8 +27,9 @@ SG_FN vec2 path_instant_cos_sin(IN(PathInstants) inst, IN(WaveBuffer) waves, int
 SG_FN void path_gradients_add(INOUT(PathGradients) p, IN(PathInstants) inst, IN(WaveBuffer) waves,
                               int i, IN(Wave) w, real A, real s, real c) {
   vec2 k = vec2(w.a, w.b);
-  p.g[inst.segments] += (A * c) * k;
-  for (int q = 0; q < inst.segments; ++q)
+  int K = path_segments(inst);
+  p.g[K] += (A * c) * k;
+  for (int q = 0; q < K; ++q)
     p.g[q] += (A * path_instant_cos_sin(inst, waves, i, w, s, c, q).x) * k;
 }
 
@@ -38,7 +39,7 @@ SG_FN void path_gradients_add(INOUT(PathGradients) p, IN(PathInstants) inst, IN(
 SG_FN void path_derivatives_add(INOUT(PathDerivatives) p, IN(PathInstants) inst,
                                 IN(WaveBuffer) waves, int i, IN(Wave) w, real s, real c) {
   vec2 k = vec2(w.a, w.b);
-  int K = inst.segments;
+  int K = path_segments(inst);
   p.g[K] += (w.A * c) * k;
   p.dg[K] -= (w.A * w.c * s) * k;
   for (int q = 0; q < K; ++q) {

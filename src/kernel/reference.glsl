@@ -172,11 +172,11 @@ SG_FN vec4 subinterval_weights(IN(Frame) f, IN(LightConic) lc, vec2 g0, vec2 d0,
 // shutter along its path p.
 SG_FN vec4 path_time_weights(IN(Frame) f, vec3 v, IN(PathDerivatives) p) {
   LightConic lc = light_conic(f.light, v);
-  real h = f.duration / real(f.windows * f.segments);
+  real h = f.duration / real(f.windows * frame_segments(f));
   vec4 sum = vec4(0.0);
-  for (int k = 0; k < f.segments; ++k)
+  for (int k = 0; k < frame_segments(f); ++k)
     sum += subinterval_weights(f, lc, p.g[k], p.dg[k], p.g[k + 1], p.dg[k + 1], h);
-  return sum / real(f.segments);
+  return sum / real(frame_segments(f));
 }
 
 // One spatial sample on flat water, integrated over the shutter's window that ends dt
@@ -225,7 +225,7 @@ SG_FN bool reference_pixel_busy(IN(WaveBuffer) waves, IN(Frame) f, real margin, 
     hits += 1;
     PathGradients p = path_gradients(waves, f, hit.point);
     vec3 previous = vec3(0.0);
-    for (int k = 0; k <= f.segments; ++k) {
+    for (int k = 0; k <= frame_segments(f); ++k) {
       vec3 m = normal_direction(p.g[k]);
       vec3 r = reflect_view(m, -d);
       dmin = min(dmin, length(r - f.light.L));

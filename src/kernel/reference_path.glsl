@@ -12,7 +12,7 @@
 SG_FN PathDerivatives wave_sum_path_derivatives(IN(WaveBuffer) waves, IN(Frame) f, vec3 point,
                                                 real dt) {
   PathDerivatives p;
-  for (int k = 0; k <= f.segments; ++k) {
+  for (int k = 0; k <= frame_segments(f); ++k) {
     p.g[k] = vec2(0.0);
     p.dg[k] = vec2(0.0);
   }

@@ -38,7 +38,7 @@ struct PathViews {
 
 // dt of instant k: t_k - end = -duration (K - k) / K (interface.glsl, Frame.segments).
 SG_FN real path_instant_dt(IN(Frame) f, int k) {
-  return -f.duration * real(f.segments - k) / real(f.segments);
+  return -f.duration * real(frame_segments(f) - k) / real(frame_segments(f));
 }
 
 SG_FN PathViews path_views_fixed(vec3 point, vec3 view) {
@@ -77,7 +77,7 @@ SG_FN PathViews path_views(IN(WaveBuffer) waves, IN(Frame) f, IN(Footprint) fp, 
   if (!rising && !camera_moves) return v;
   v.moving = true;
   v.camera_moves = camera_moves;
-  for (int k = 0; k < f.segments; ++k) {
+  for (int k = 0; k < frame_segments(f); ++k) {
     real dt = path_instant_dt(f, k);
     vec3 o = f.camera.position;
     vec3 d = -fp.view;
@@ -109,7 +109,7 @@ SG_FN PathViews path_views(IN(WaveBuffer) waves, IN(Frame) f, IN(Footprint) fp, 
 // The instants as the sums over the waves take them (wave_terms.glsl): a fixed camera's.
 SG_FN PathInstants path_instants_fixed(IN(Frame) f) {
   PathInstants inst;
-  inst.segments = f.segments;
+  inst.segments = frame_segments(f);
   inst.wave_stride = f.wave_stride;
   inst.moving = false;
   return inst;
@@ -120,7 +120,7 @@ SG_FN PathInstants path_instants(IN(Frame) f, IN(PathViews) v) {
   PathInstants inst = path_instants_fixed(f);
   inst.moving = v.moving;
   if (v.moving) {
-    for (int k = 0; k <= f.segments; ++k)
+    for (int k = 0; k <= frame_segments(f); ++k)
       inst.points[k] = v.point[k];
   }
   return inst;
@@ -131,7 +131,7 @@ SG_FN PathInstants path_instants(IN(Frame) f, IN(PathViews) v) {
 // The instants `inst`, the display time's phases at `point` (x, z).
 SG_FN PathGradients wave_sum_path_of(IN(WaveBuffer) waves, IN(Frame) f, IN(PathInstants) inst,
                                      vec2 point) {
-  PathGradients p = path_gradients_zero(f.segments);
+  PathGradients p = path_gradients_zero(frame_segments(f));
   for (int i = 0; i < f.wave_count; ++i) {
     Wave w = wave_at(waves, f, i);
     real theta = wave_phase(w, point.x, point.y, 0.0);
@@ -153,7 +153,7 @@ SG_FN PathGradients path_gradients(IN(WaveBuffer) waves, IN(Frame) f, vec3 point
 
 // The same under a moving camera (the definition; in SIMD lanes on the CPU, as above).
 SG_FN PathGradients wave_sum_path_moving(IN(WaveBuffer) waves, IN(Frame) f, IN(PathViews) v) {
-  return wave_sum_path_of(waves, f, path_instants(f, v), v.point[f.segments]);
+  return wave_sum_path_of(waves, f, path_instants(f, v), v.point[frame_segments(f)]);
 }
 
 #ifdef SG_CPU_WAVE_SUMS
@@ -178,7 +178,7 @@ SG_FN PathShares temporal_shares_along(IN(Frame) f, IN(PathGradients) p, IN(Path
   s.in_light = 0.0;
   s.below = 0.0;
   s.fresnel = 0.0;
-  int K = f.segments;
+  int K = frame_segments(f);
   real inv_k = 1.0 / real(K);
   vec3 n0 = normalize(normal_direction(p.g[0]));
   vec3 r0 = reflect_view(n0, v.view[0]);

@@ -30,7 +30,8 @@ SG_FN vec4 sample_weights(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, r
   // Cascades shaded from their fields are sampled at the display time only (the host
   // builds fields for `point`, `staa-temporal` and `supersample` with T = 1 alone, whose
   // rays all have dt = 0).
-  if (f.cascade_count > 0) g += cascade_gradient(waves, f, f.segments, hit.point.x, hit.point.z);
+  if (f.cascade_count > 0)
+    g += cascade_gradient(waves, f, frame_segments(f), hit.point.x, hit.point.z);
   return water_weights(f, normal_direction(g), -d);
 }
 
@@ -119,7 +120,7 @@ SG_FN vec4 staa_temporal_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) 
     g = path_gradients(waves, f, fp.point);
   }
   // Cascades shaded from their fields: point-sampled at each instant's water point.
-  for (int k = 0; k <= f.segments; ++k) {
+  for (int k = 0; k <= frame_segments(f); ++k) {
     if (f.cascade_count > 0) {
       vec2 at = v.moving ? v.point[k] : vec2(fp.point.x, fp.point.z);
       g.g[k] += cascade_gradient(waves, f, k, at.x, at.y);

@@ -140,7 +140,7 @@ SG_FN StaaWavePixel staa_wave_pixel(IN(Frame) f, IN(StaaParams) p, IN(Footprint)
   px.cells = staa_smooth_side(f, p);
   px.inst = path_instants(f, v);
   px.instant_hessians = !v.camera_moves && f.duration > 0.0;
-  px.sweep = v.point[f.segments] - v.point[0];
+  px.sweep = v.point[frame_segments(f)] - v.point[0];
   return px;
 }
 
@@ -166,7 +166,7 @@ SG_FN void staa_waves_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Frame) 
 // remainder's sums.
 SG_FN StaaSums staa_wave_pass(IN(WaveBuffer) waves, IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp,
                               IN(PathViews) v) {
-  StaaSums sums = staa_sums_zero(f.segments);
+  StaaSums sums = staa_sums_zero(frame_segments(f));
   StaaWavePixel px = staa_wave_pixel(f, p, fp, v);
   int c = staa_remainder_start(waves, f, p, px.J);
   staa_waves_add(sums, waves, f, px, c);
@@ -186,7 +186,7 @@ SG_FN void staa_cascades_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Fram
     Cascade cc = cascade_header(waves, f, c, data);
     data = cascade_data_end(f, cc);
     CascadeShare s = cascade_staa_share(waves, f, p, fp, v, cc);
-    for (int k = 0; k <= f.segments; ++k) {
+    for (int k = 0; k <= frame_segments(f); ++k) {
       sums.path.g[k] += s.g[k];
       sums.hess[k] += s.hess[k];
     }
@@ -194,7 +194,7 @@ SG_FN void staa_cascades_add(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Fram
     sums.remainder += s.cov;
     sums.any_alias = sums.any_alias || s.cov.x + s.cov.z > 0.0;
     for (int q = 0; q < side * side; ++q)
-      sums.cells.m[q].mean -= s.g[f.segments];
+      sums.cells.m[q].mean -= s.g[frame_segments(f)];
   }
 }
 
@@ -236,7 +236,7 @@ SG_FN vec4 staa_weights(IN(Frame) f, IN(StaaResult) r) {
 // time, and its spread, uniform in time along each sub-segment (the segments' midpoints'
 // spread plus d d^T / 12 within each).
 SG_FN SmoothTerms staa_smooth_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) sums, vec3 view) {
-  int K = f.segments;
+  int K = frame_segments(f);
   real inv_k = 1.0 / real(K);
   vec2 g_mean = vec2(0.0);
   for (int k = 0; k < K; ++k)
@@ -312,7 +312,7 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
 SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews) v,
                                      IN(StaaSums) sums, vec2 mean, mat2 display,
                                      IN(LightAnchor) a) {
-  int K = f.segments;
+  int K = frame_segments(f);
   mat2 cov = display;
   if (!v.camera_moves && f.duration > 0.0) {
     mat2 sum = 0.5 * display;
@@ -376,7 +376,7 @@ struct StaaNdf {
 
 SG_FN StaaNdf staa_ndf_along_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v, IN(StaaSums) sums,
                                   INOUT(StaaPath) path) {
-  int K = f.segments;
+  int K = frame_segments(f);
   StaaNdf ndf;
   ndf.mean = (sums.any_alias && p.per_pixel_ndf && p.ndf_mean_shift) ? sums.ndf.mean : vec2(0.0);
   ndf.cov = sums.any_alias ? sym2(sums.ndf.cov) : mat2(0.0);
@@ -399,7 +399,7 @@ SG_FN StaaNdf staa_ndf_along_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v
 // b's path: it integrates the exact parallelogram around the exact centre.
 SG_FN LightAnchor staa_light_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v, IN(StaaSums) sums,
                                   IN(StaaNdf) ndf, INOUT(StaaPath) path) {
-  int K = f.segments;
+  int K = frame_segments(f);
   LightAnchor a = light_anchor(v.view[K], f.light);
   a.valid = a.valid && p.rdf_at_light && !(p.footprint == 2 && !sums.any_alias);
   if (!a.valid) return a;
@@ -444,7 +444,7 @@ struct StaaRdf {
 
 SG_FN StaaRdf staa_rdf(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp, IN(PathViews) v,
                        IN(StaaSums) sums, IN(StaaNdf) ndf, IN(LightAnchor) a) {
-  int K = f.segments;
+  int K = frame_segments(f);
   StaaRdf rdf;
   mat2 J = a.valid ? a.J : ndf_to_light_plane_jacobian(ndf.now, fp.view, f.light);
   rdf.cov = rdf_covariance(J, ndf.cov);
@@ -469,7 +469,7 @@ SG_FN StaaRdf staa_rdf(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp, IN(PathV
 SG_FN real staa_below_share(IN(Frame) f, IN(StaaPath) path, mat2 cov_r) {
   real below = 0.0;
   int counted = 0;
-  for (int k = 0; k <= f.segments; ++k) {
+  for (int k = 0; k <= frame_segments(f); ++k) {
     if (!path.valid[k]) continue;
     below += horizon_share(f.light, path.centre[k], cov_r);
     counted += 1;
@@ -625,7 +625,7 @@ SG_FN StaaLightShare staa_light_share(IN(R32Texture2D) table_f, IN(R32Texture3D)
                                       IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
                                       IN(KernelFitInfo) finfo, IN(Frame) f, IN(StaaParams) p,
                                       IN(StaaPath) path, mat2 cov_r) {
-  int K = f.segments;
+  int K = frame_segments(f);
   real R = f.light.tan_radius;
   PrincipalAxes ax = principal_axes(cov_r);
   StaaLightShare s;
@@ -656,7 +656,7 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
                              IN(KernelFitInfo) finfo, IN(Frame) f, IN(StaaParams) p,
                              IN(Footprint) fp, IN(PathViews) v, IN(StaaSums) sums,
                              OUT(StaaPath) path) {
-  int K = f.segments;
+  int K = frame_segments(f);
   for (int k = 0; k <= K; ++k) {
     path.centre[k] = vec2(0.0);
     path.valid[k] = false;
@@ -738,7 +738,7 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
   if (!(pw.share > 0.0) || !fp.hit) {
     StaaResult r = staa_result_miss();
     r.weights = miss_pixel_weights(f, i, j);
-    for (int k = 0; k <= f.segments; ++k) {
+    for (int k = 0; k <= frame_segments(f); ++k) {
       path.centre[k] = vec2(0.0);
       path.valid[k] = false;
     }

@@ -70,9 +70,10 @@ SG_FN void staa_path_add(INOUT(StaaSums) sums, IN(PathInstants) inst, bool hessi
                          IN(WaveBuffer) waves, int i, IN(Wave) w, real A, real s, real c) {
   vec2 k = vec2(w.a, w.b);
   vec3 kk = wave_curvature_of(w);
-  sums.path.g[inst.segments] += (A * c) * k;
-  sums.hess[inst.segments] -= (A * s) * kk;
-  for (int q = 0; q < inst.segments; ++q) {
+  int K = path_segments(inst);
+  sums.path.g[K] += (A * c) * k;
+  sums.hess[K] -= (A * s) * kk;
+  for (int q = 0; q < K; ++q) {
     vec2 cs = path_instant_cos_sin(inst, waves, i, w, s, c, q);
     sums.path.g[q] += (A * cs.x) * k;
     if (hessians) sums.hess[q] -= (A * cs.y) * kk;

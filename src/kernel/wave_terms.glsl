@@ -105,6 +105,20 @@ struct PathInstants {
   vec2 points[kMaxSegments + 1];
 };
 
+// K as the per-wave terms take it. A GLSL program compiled for its frames' K
+// (SG_EXACT_SEGMENTS, gl_engine/kernel_program.h: every entry but the reference) takes the
+// constant: the pixel's arrays that the terms index by K (the gradients and Hessians at the
+// instants) then stay in registers, where an index known only at run time sends them
+// through memory on every wave (on llvmpipe a third of `staa`'s frame on `smooth`,
+// docs/benchmarks.md; a GPU's local arrays behave alike). Elsewhere, the frame's K.
+SG_FN int path_segments(IN(PathInstants) inst) {
+#ifndef SG_EXACT_SEGMENTS
+  return inst.segments;
+#else
+  return kMaxSegments;
+#endif
+}
+
 // The gradient and its time derivative at the path's instants t_0 .. t_K (the reference's
 // path, reference_path.glsl).
 struct PathDerivatives {
