@@ -104,6 +104,7 @@ ProgramOptions program_options(const GlVariant& v) {
   o.segments = v.segments;
   o.fallback_riemann = v.params.fallback_riemann;
   o.fallback_along_path = v.params.fallback_along_path;
+  o.smooth_cells = v.params.smooth_cells;
   return o;
 }
 

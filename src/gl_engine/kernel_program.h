@@ -29,6 +29,7 @@ struct ProgramOptions {
   int segments = 1;                 // the frames' K, or the reference's cap on it
   bool fallback_riemann = false;    // staa: SG_STAA_FALLBACK_RIEMANN
   bool fallback_along_path = true;  // staa: SG_STAA_FALLBACK_ALONG_PATH
+  int smooth_cells = 3;             // staa: SG_SMOOTH_CELLS, the smooth terms' cells a side
 };
 
 // The header of `entry`'s program: its #defines, before the kernel's sources (the web

@@ -111,13 +111,25 @@ SG_FN void staa_add_remainder(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Fra
   sums.any_alias = sums.any_alias || m.w > 0.0;
 }
 
+// The option's cells per side (--smooth-cells) as the kernel takes it: the constant in a
+// GLSL program compiled for one value (SG_SMOOTH_CELLS, gl_engine/kernel_program.h), so
+// that the cells' arrays indexed by it stay in registers (as K: frame_segments,
+// interface.glsl); else the parameter.
+SG_FN int staa_smooth_cells(IN(StaaParams) p) {
+#ifndef SG_SMOOTH_CELLS
+  return p.smooth_cells;
+#else
+  return SG_SMOOTH_CELLS;
+#endif
+}
+
 // The smooth terms' cells per side for this frame: none with --smooth-terms mean, and
 // none where F = 1 and the sky is constant (the water is then the sky or the sea, and
 // only the horizon's share is at stake: the RDF's mass beyond the horizon's line on the
 // light plane serves, at no cost); else the option's.
 SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
-  if (p.smooth_cells <= 0 || (f.fresnel == 0 && !f.sky_gradient)) return 0;
-  return p.smooth_cells;
+  if (staa_smooth_cells(p) <= 0 || (f.fresnel == 0 && !f.sky_gradient)) return 0;
+  return staa_smooth_cells(p);
 }
 
 // The pass's pixel-wide inputs (staa_waves.glsl): the footprint's Jacobian and its
@@ -249,7 +261,7 @@ SG_FN SmoothTerms staa_smooth_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) 
   }
   // NDF-plane coordinates are minus the slope: the shutter's mean offset is -(g_mean - g_K).
   vec2 shift = sums.path.g[K] - g_mean;
-  int n = staa_smooth_side(f, p);
+  int n = staa_smooth_cells(p);  // on (staa_centre_terms): the side is the option's
   real inv_cells = 1.0 / real(n * n);
   // The cells' mixture as one Gaussian (its mean and covariance): where the cells' means
   // spread by less than a tenth of their own covariance (by trace), or the whole spread is

@@ -61,6 +61,18 @@ struct StaaWavePixel {
   vec2 sweep;  // a moving camera's motion p_K - p_0 over the shutter
 };
 
+// The smooth terms' cells per side where they are on (px.cells > 0). A GLSL program compiled
+// for one value of the option (SG_SMOOTH_CELLS, gl_engine/kernel_program.h) takes the
+// constant: the cells' array indexed by it stays in registers, as K does (frame_segments,
+// interface.glsl). Elsewhere, the pixel's.
+SG_FN int staa_cells_side(IN(StaaWavePixel) px) {
+#ifndef SG_SMOOTH_CELLS
+  return px.cells;
+#else
+  return SG_SMOOTH_CELLS;
+#endif
+}
+
 // Wave i's resolved share A (sine s and cosine c of its display-time phase) in the
 // gradients and Hessians of the path's instants: instant k's phase by
 // path_instant_cos_sin (path_terms.glsl), the gradient A cos k, the Hessian -A sin k k^T
@@ -115,6 +127,7 @@ SG_FN void staa_wave_add(INOUT(StaaSums) sums, IN(StaaWavePixel) px, IN(WaveBuff
     }
   }
   if (px.cells > 0) {
-    box_cells_add(sums.cells, px.cells, w.A, k, s, c, 0.5 * vec2(dot(k, px.J[0]), dot(k, px.J[1])));
+    box_cells_add(sums.cells, staa_cells_side(px), w.A, k, s, c,
+                  0.5 * vec2(dot(k, px.J[0]), dot(k, px.J[1])));
   }
 }
