@@ -105,6 +105,7 @@ ProgramOptions program_options(const GlVariant& v) {
   o.fallback_riemann = v.params.fallback_riemann;
   o.fallback_along_path = v.params.fallback_along_path;
   o.smooth_cells = v.params.smooth_cells;
+  o.kernels = v.params.kernels;
   return o;
 }
 

@@ -61,6 +61,7 @@ std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o) {
   if (entry != KernelEntry::reference) h += "#define SG_EXACT_SEGMENTS 1\n";
   if (entry == KernelEntry::staa) {
     h += "#define SG_SMOOTH_CELLS " + std::to_string(o.smooth_cells) + "\n";
+    h += "#define SG_STAA_KERNELS " + std::to_string(o.kernels) + "\n";
     h += std::string("#define SG_STAA_FALLBACK_RIEMANN ") + (o.fallback_riemann ? "1" : "0") +
          "\n#define SG_STAA_FALLBACK_ALONG_PATH " + (o.fallback_along_path ? "1" : "0") + "\n";
   }

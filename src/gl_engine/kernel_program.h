@@ -30,6 +30,7 @@ struct ProgramOptions {
   bool fallback_riemann = false;    // staa: SG_STAA_FALLBACK_RIEMANN
   bool fallback_along_path = true;  // staa: SG_STAA_FALLBACK_ALONG_PATH
   int smooth_cells = 3;             // staa: SG_SMOOTH_CELLS, the smooth terms' cells a side
+  int kernels = 9;                  // staa: SG_STAA_KERNELS, the RDF's kernels
 };
 
 // The header of `entry`'s program: its #defines, before the kernel's sources (the web

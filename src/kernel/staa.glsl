@@ -111,6 +111,18 @@ SG_FN void staa_add_remainder(INOUT(StaaSums) sums, IN(WaveBuffer) waves, IN(Fra
   sums.any_alias = sums.any_alias || m.w > 0.0;
 }
 
+// The RDF's kernels (--kernels) as the kernel takes it: the constant in a GLSL program
+// compiled for one count (SG_STAA_KERNELS, gl_engine/kernel_program.h), so that the
+// kernels' arrays stay in registers (as K: frame_segments, interface.glsl); else the
+// parameter.
+SG_FN int staa_kernel_count(IN(StaaParams) p) {
+#ifndef SG_STAA_KERNELS
+  return p.kernels;
+#else
+  return SG_STAA_KERNELS;
+#endif
+}
+
 // The option's cells per side (--smooth-cells) as the kernel takes it: the constant in a
 // GLSL program compiled for one value (SG_SMOOTH_CELLS, gl_engine/kernel_program.h), so
 // that the cells' arrays indexed by it stay in registers (as K: frame_segments,
@@ -594,7 +606,7 @@ SG_FN real staa_kernels_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s
                               IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
                               IN(KernelFitInfo) finfo, IN(StaaParams) p, IN(StaaPath) path, int K,
                               IN(PrincipalAxes) ax, real R, real min_minor, real min_major) {
-  KernelSet ks = elliptical_kernels(fits, finfo, p.kernels, ax.s2, ax.s1);
+  KernelSet ks = elliptical_kernels(fits, finfo, staa_kernel_count(p), ax.s2, ax.s1);
   real sigma_max = 0.0;
   real offset_max = 0.0;
   for (int q = 0; q < ks.count; ++q) {
