@@ -28,7 +28,8 @@ CascadeFftGl::CascadeFftGl(int n) : n_(n) {
     throw Error("CascadeFftGl: the lattice must be a power of two in [4, 1024], got " +
                 std::to_string(n));
   spectrum_ = cascade_program("cascade_spectrum.glsl", "", "kernel/cascade_spectrum.glsl");
-  fft_ = cascade_program("cascade_fft.glsl", "#define SG_FFT_HALF " + std::to_string(n / 2) + "\n");
+  fft_ =
+      cascade_program("cascade_fft.glsl", "#define SG_FFT_QUARTER " + std::to_string(n / 4) + "\n");
   const size_t cells = static_cast<size_t>(n) * n;
   lattice_ = gl::Buffer(cells * 16);
   spectra_ = gl::Buffer(cells * 16);

@@ -2,7 +2,7 @@
 // scene/cascade_fft.h. Each transform is two compute passes' worth of work on the lattice
 // (A, phi, omega): the spectra of two complex fields at the wanted times
 // (shaders/cascade_spectrum.glsl, by the same text as the CPU: kernel/cascade_spectrum.glsl),
-// then the rows and the columns of the inverse 2-D FFT (shaders/cascade_fft.glsl: radix-2
+// then the rows and the columns of the inverse 2-D FFT (shaders/cascade_fft.glsl: radix-4
 // Stockham in shared memory, one workgroup per row, each pass writing transposed). Which
 // two fields a transform carries is its Pair; gl_engine/cascade_fields_gl.h combines them
 // into the kernel's LEAN chains.

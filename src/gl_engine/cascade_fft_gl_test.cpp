@@ -36,7 +36,9 @@ double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) 
 }
 
 TEST_F(CascadeFftGlTest, FieldIsTheCpusWithinFloat) {
-  for (int n : {16, 64, 256}) {
+  // Every lattice the GL transform takes, 4 to 1024: radix 4 alone where log2 N is even,
+  // with the one radix-2 pass where it is odd.
+  for (int n : {4, 8, 16, 32, 64, 128, 256, 512, 1024}) {
     const CascadeDesc c = full_cascade(n, 37.0, static_cast<uint64_t>(n));
     const Dispersion water{25};
     // A time 10^4 s from zero, 0.7 s after the GL's origin.

@@ -90,10 +90,10 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
     throw Error("CascadeFieldsGl: the wave buffer is smaller than the layout");
   prepare(m, kTimeEpoch * std::floor(ft.end / kTimeEpoch));
   const size_t count = std::max<size_t>(1, 5 * cs.size());
-  if (maxima_.size() != count * 4) maxima_ = gl::Buffer(count * 4);
-  maxima_.fill(0u);
   const bool still = !(ft.duration() > 0);
-  const bool heights = m.scene.surface.geometry == Geometry::displaced;
+  const bool heights = m.displaced();
+  if (maxima_.size() != count * 4) maxima_ = gl::Buffer(count * 4);
+  if (heights) maxima_.fill(0u);
   using Pair = CascadeFftGl::Pair;
   for (size_t c = 0; c < cs.size(); ++c) {
     CascadeFftGl& fft = *ffts_[c];
@@ -115,7 +115,7 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
       // two to a transform.
       fft.transform(Pair::full, time(segments), 0.0, false, 0);
       chain(fft, Chain::slopes_height, 0, 0, at(segments), waves, false);
-      bound();
+      if (heights) bound();
       if (reads == CascadeReads::display_level0) continue;
       for (int k = 0; k < segments; k += heights ? 1 : 2) {
         const bool pair = !heights && k + 1 < segments;
@@ -133,12 +133,14 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
       continue;
     }
     // The display time: (dh/dx, h, dh/dz, d2h/dxdz), then (d2h/dx2, d2h/dz2) with the
-    // slopes at t_0 (not on displaced water, whose instants each take a full transform
-    // below).
+    // slopes at t_0, which level 0 of its chain keeps (kernel/cascade_chain.glsl), the
+    // still camera's too (t_0 is then the display time); not on displaced water, whose
+    // instants each take a full transform below, nor for the display time alone.
     fft.transform(Pair::full, time(segments), 0.0, false, 0);
-    fft.transform(Pair::curvature_and_slopes, time(segments), time(0), !still && !heights, 1);
+    fft.transform(Pair::curvature_and_slopes, time(segments), time(0),
+                  !heights && reads != CascadeReads::display_chain, 1);
     chain(fft, Chain::full, 0, 0, at(segments), waves, true);
-    bound();
+    if (heights) bound();
     if (reads == CascadeReads::display_chain) continue;
     if (still) {
       // Every instant is the display time's.
@@ -166,11 +168,13 @@ std::vector<glm::dvec3> CascadeFieldsGl::fill(const SceneModel& m, const FrameTi
       if (pair) chain(fft, Chain::slopes, 0, 1, at(k + 1), waves, true);
     }
   }
-  // The kernel's fetches and the host's read of the maxima after every write above.
+  // The kernel's fetches and the host's read of the maxima after every write above; on
+  // flat water no maxima (and no wait for them).
   gl::barrier();
+  std::vector<glm::dvec3> bounds(cs.size(), glm::dvec3(0.0));
+  if (!heights) return bounds;
   std::vector<std::uint32_t> bits(count);
   maxima_.read(0, count * 4, bits.data());
-  std::vector<glm::dvec3> bounds(cs.size());
   for (size_t c = 0; c < cs.size(); ++c) {
     std::array<double, 5> mx{};
     for (int j = 0; j < 5; ++j) {

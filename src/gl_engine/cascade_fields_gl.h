@@ -42,8 +42,9 @@ class CascadeFieldsGl {
 
   // Fills frame ft's cascade data (K = segments) into `waves` (the wave buffer's storage)
   // at `layout`'s places and returns each cascade's bounds on its interpolants
-  // (set_cascade_bounds in shading/kernel_frame.h takes them). Issues the barrier the
-  // kernel's texel fetches need.
+  // (set_cascade_bounds in shading/kernel_frame.h takes them): on displaced water alone,
+  // whose march reads them (zeros on flat water, as the host's CascadeFields leaves them:
+  // no pass, no wait for a read-back). Issues the barrier the kernel's texel fetches need.
   // `reads`: what the method reads (shading/cascade_fields.h), the rest not built.
   std::vector<glm::dvec3> fill(const SceneModel& m, const FrameTime& ft, int segments,
                                const CascadeLayout& layout, const gl::Buffer& waves,

@@ -26,25 +26,29 @@ struct CascadeChainTexel {
 
 // Level 0's texel of a grid point from its slope (dh/dx, dh/dz), height and curvatures
 // (d2h/dx2, d2h/dxdz, d2h/dz2). A grid point has no spread (its second moments are its
-// slope's square, and are not read), so b.y holds the height instead; what `mode` leaves
-// out is 0 (the height and curvatures are not read then).
-SG_FN CascadeChainTexel cascade_chain_level0(vec2 slope, real height, vec3 curvature, int mode) {
+// slope's square, and are not read), so b.y holds the height instead, and in the whole
+// chain b.zw the slope at the path's first instant (`start`: the shutter start's, on flat
+// water; 0 where the engines leave it out), which a still camera's pass over the display
+// time's texels takes along (cascade_grid.glsl, cascade_level) without a third texel a
+// point; what `mode` leaves out is 0 (the height and curvatures are not read then).
+SG_FN CascadeChainTexel cascade_chain_level0(vec2 slope, real height, vec3 curvature, vec2 start,
+                                             int mode) {
   CascadeChainTexel t;
   t.a = vec4(slope.x, slope.y, 0.0, 0.0);
   t.b = vec4(0.0);
   if (mode == kCascadeChainFull) {
     t.a = vec4(slope.x, slope.y, curvature.x, curvature.z);
-    t.b = vec4(curvature.y, height, slope.x * slope.y, slope.y * slope.y);
+    t.b = vec4(curvature.y, height, start.x, start.y);
   } else if (mode == kCascadeChainSlopesHeight) {
     t.b = vec4(0.0, height, 0.0, 0.0);
   }
   return t;
 }
 
-// A child's second texel as its parent averages it: at level 0 its slope's square in place
-// of the height.
+// A child's second texel as its parent averages it: at level 0 the products of its slope
+// in place of the height and the first instant's slope.
 SG_FN vec4 cascade_chain_moments(IN(CascadeChainTexel) t, int level) {
-  if (level == 0) return vec4(t.b.x, t.a.x * t.a.x, t.b.z, t.b.w);
+  if (level == 0) return vec4(t.b.x, t.a.x * t.a.x, t.a.x * t.a.y, t.a.y * t.a.y);
   return t.b;
 }
 

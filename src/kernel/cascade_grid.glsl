@@ -24,7 +24,9 @@
 //     level 0 holds no spread (a grid point's second moments are its mean's square, and
 //     are not read), so at the display time its b.y holds the height h instead, and so
 //     at the other instants on displaced water (their texels' other entries than the
-//     slopes' means are 0: only the display time's chain is whole).
+//     slopes' means are 0: only the display time's chain is whole); at the display time
+//     its b.zw hold instant 0's slopes on flat water (0 on displaced water, and where a
+//     method reads the display time alone).
 // Level l's texel i averages samples i 2^l .. i 2^l + 2^l - 1 of the grid, whose sample p
 // lies at world x = p L / N.
 //
@@ -132,19 +134,24 @@ SG_FN CascadeRead cascade_read(int k, bool moments, bool start) {
 }
 
 // Where level l of a read's instant starts in the wave buffer (and instant 0's, where the
-// read takes it along: -1 where not), and the level's side n_l.
+// read takes it along from a texel of its own: -1 where not), and the level's side n_l.
+// At level 0 the display time's second texels hold instant 0's slopes in b.zw
+// (cascade_chain.glsl, cascade_chain_level0): a read of the display time's moments takes
+// them there (`start_in_moments`), two fetches a texel instead of three.
 struct CascadeLevel {
   int base;
   int start;
   int n;
   bool moments;
+  bool start_in_moments;
 };
 
 SG_FN CascadeLevel cascade_level(IN(Cascade) c, IN(CascadeRead) r, int l) {
   CascadeLevel v;
   int level = c.data + cascade_level_offset(c.n, l);
   v.base = level + r.k * cascade_instant_texels(c.n);
-  v.start = r.start ? level : -1;
+  v.start_in_moments = r.start && r.moments && l == 0;
+  v.start = r.start && !v.start_in_moments ? level : -1;
   v.n = c.n >> l;
   v.moments = r.moments;
   return v;
@@ -156,7 +163,11 @@ SG_FN void cascade_texel_add_at(INOUT(CascadeTexel) acc, IN(WaveBuffer) waves, I
                                 int x, int y, real w) {
   int i = 2 * ((y & (lv.n - 1)) * lv.n + (x & (lv.n - 1)));
   acc.a += w * wave_texel(waves, lv.base + i);
-  if (lv.moments) acc.b += w * wave_texel(waves, lv.base + i + 1);
+  if (lv.moments) {
+    vec4 b = wave_texel(waves, lv.base + i + 1);
+    acc.b += w * b;
+    if (lv.start_in_moments) acc.start += w * vec2(b.z, b.w);
+  }
   if (lv.start >= 0) {
     vec4 s = wave_texel(waves, lv.start + i);
     acc.start += w * vec2(s.x, s.y);

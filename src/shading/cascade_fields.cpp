@@ -61,7 +61,8 @@ void write_chain(const CascadeGrid& g, int mode, bool levels, V4* out) {
   for (size_t e = 0; e < count; ++e) {
     const kd::CascadeChainTexel t = kd::cascade_chain_level0(
         kd::vec2(g.slope_x[e], g.slope_z[e]), height ? g.height[e] : 0.0,
-        full ? kd::vec3(g.curv_xx[e], g.curv_xz[e], g.curv_zz[e]) : kd::vec3(0.0), mode);
+        full ? kd::vec3(g.curv_xx[e], g.curv_xz[e], g.curv_zz[e]) : kd::vec3(0.0), kd::vec2(0.0),
+        mode);
     out[2 * e] = V4(t.a);
     out[2 * e + 1] = V4(t.b);
   }
@@ -208,7 +209,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
     if (reads == CascadeReads::instants_level0 || reads == CascadeReads::display_level0) {
       // Level 0 alone: the display time's slopes and height, the other instants' slopes.
       ffts_[c]->evaluate(cascade_instant(ft, segments, segments), false, grid);
-      bounds[c] = grid_interpolant_bounds(grid);
+      if (heights) bounds[c] = grid_interpolant_bounds(grid);
       write_chain(grid, kd::kCascadeChainSlopesHeight, false, instant(segments));
       for (int k = 0; k < segments && reads == CascadeReads::instants_level0; ++k)
         other_instant(k, false);
@@ -218,11 +219,21 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
     // heights) alone (what the kernel reads there: cascade_fields.glsl), the rest 0.
     const double end = cascade_instant(ft, segments, segments);
     ffts_[c]->evaluate(end, true, grid);
-    bounds[c] = grid_interpolant_bounds(grid);
+    if (heights) bounds[c] = grid_interpolant_bounds(grid);
     write_chain(grid, kd::kCascadeChainFull, true, instant(segments));
     if (reads == CascadeReads::display_chain) return;
-    // A zero shutter: every instant is the display time's.
+    // A zero shutter: every instant is the display time's. On flat water level 0 of the
+    // display time keeps instant 0's slopes (kernel/cascade_chain.glsl, cascade_chain_level0),
+    // its own where the shutter is zero (before the copies, which then hold them too).
     const bool still = !(ft.duration() > 0);
+    auto keep_start = [&](const V4* first) {
+      V4* display = instant(segments);
+      for (size_t e = 0; e < static_cast<size_t>(lattices_[c]) * lattices_[c]; ++e) {
+        display[2 * e + 1].z = first[2 * e].x;
+        display[2 * e + 1].w = first[2 * e].y;
+      }
+    };
+    if (still && !heights) keep_start(instant(segments));
     for (int k = 0; k < segments; ++k) {
       if (still) {
         std::copy(instant(segments), instant(segments) + per, instant(k));
@@ -230,6 +241,7 @@ int CascadeFields::append_impl(const SceneModel& m, const FrameTime& ft, int seg
       }
       other_instant(k, true);
     }
+    if (!still && !heights) keep_start(instant(0));
   });
   set_bounds_impl(bounds, texels);
   return base;

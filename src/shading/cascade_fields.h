@@ -130,7 +130,8 @@ class CascadeFields {
   // The last append's bounds on the fields' interpolated height, its slope along a
   // horizontal direction and its second derivative along one, summed over the cascades
   // (kernel/cascade_grid.glsl, cascade_interpolant_bounds): what the frame's bounds add
-  // for them, far tighter than the sines' sums.
+  // for them, far tighter than the sines' sums. Displaced water's alone: the displaced
+  // march is their only reader, and on flat water they are 0 (not computed).
   const glm::dvec3& interpolant_bounds() const { return bounds_; }
 
  private:

@@ -106,9 +106,12 @@ void fill_camera_keys(const CameraDesc& c, const FrameTime& ft, const vec3& orig
 }
 
 // The frame's bounds with the cascades' fields: the explicit waves' and the fields'
-// interpolants' (the surface the kernel sees).
+// interpolants' (the surface the kernel sees). On flat water neither engine bounds the
+// interpolants (the displaced march, kernel/intersect.glsl, is their only reader), and the
+// frame keeps the sines' sums that build() set.
 template <class In>
 void frame_cascade_bounds(const SceneModel& m, In& out) {
+  if (!m.displaced()) return;
   using R = decltype(out.frame.duration);
   const WaveField& w = out.cascades->explicit_waves(m);
   const glm::dvec3 cb = out.cascades->interpolant_bounds();

@@ -5,10 +5,10 @@
 // (gl_engine/cascade_fft_gl.h), each later level the mean of 2 x 2 texels of the one
 // before (Olano and Baker 2010, "LEAN Mapping", Sec. 3). At the display time (`full` 1,
 // kCascadeChainFull) from field_a = (dh/dx, h, dh/dz, d2h/dxdz) and field_b = (d2h/dx2,
-// d2h/dz2, ., .); at the path's other instants the slopes alone (kCascadeChainSlopes),
-// (dh/dx, dh/dz) from field_a's xy or zw (`slot`). A method that reads level 0 alone
-// (shading/cascade_fields.h, CascadeReads) takes the display time's slopes and height
-// (kCascadeChainSlopesHeight) and no later level.
+// d2h/dz2, and instant 0's dh/dx, dh/dz: level 0 keeps them, or 0 where not transformed); at the
+// path's other instants the slopes alone (kCascadeChainSlopes), (dh/dx, dh/dz) from field_a's xy or
+// zw (`slot`). A method that reads level 0 alone (shading/cascade_fields.h, CascadeReads) takes the
+// display time's slopes and height (kCascadeChainSlopesHeight) and no later level.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 0) readonly buffer FieldA {
@@ -46,8 +46,8 @@ void main() {
   if (level == 0) {
     vec4 f = field_a[i];
     vec2 slope = full != kCascadeChainSlopes ? f.xz : (slot == 0 ? f.xy : f.zw);
-    vec3 curvature = full == kCascadeChainFull ? vec3(field_b[i].x, f.w, field_b[i].y) : vec3(0.0);
-    t = cascade_chain_level0(slope, f.y, curvature, full);
+    vec4 g = full == kCascadeChainFull ? field_b[i] : vec4(0.0);
+    t = cascade_chain_level0(slope, f.y, vec3(g.x, f.w, g.y), vec2(g.z, g.w), full);
   } else {
     int x = 2 * id.x, y = 2 * id.y;
     t = cascade_chain_parent(child(x, y), child(x + 1, y), child(x, y + 1), child(x + 1, y + 1),
