@@ -120,10 +120,10 @@ std::unique_ptr<ProgramWatch> started_watch(const std::string& method) {
 }  // namespace
 
 GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
-    : watch_(started_watch(method)),
-      v_(gl_variant(method, o)),
-      program_(kernel_program(v_.entry, program_options(v_))) {
-  watch_->pause();
+    : method_(method), v_(gl_variant(method, o)) {
+  // Every program but staa's fixes nothing a frame decides: compiled now. staa's is
+  // compiled at the first frame, for whether its water needs the smooth terms.
+  if (v_.entry != KernelEntry::staa) use_program(program_options(v_));
   if (v_.entry == KernelEntry::staa) {
     const PathTables& t = required_path_tables(o, method);
     const kernel_tables::R32Texture2D f = t.f_texture();
@@ -143,6 +143,17 @@ GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
 
 GlEngine::~GlEngine() = default;
 
+void GlEngine::use_program(const ProgramOptions& o) {
+  if (program_options_ && *program_options_ == o) return;
+  // A program compiled after the first frame's (another frame's smooth terms) is watched
+  // as the first one is, until its first dispatch (prepare).
+  if (!watch_) watch_ = started_watch(method_);
+  watch_->resume();
+  program_ = kernel_program(v_.entry, o);
+  watch_->pause();
+  program_options_ = o;
+}
+
 void GlEngine::upload(const FrameContext& ctx) {
   const ReferenceTimeSplit split = v_.entry == KernelEntry::reference
                                        ? reference_time_split(ctx.model, ctx.time.duration())
@@ -157,6 +168,12 @@ void GlEngine::upload(const FrameContext& ctx) {
   build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance,
                       split.windows, v_.cascade_fields,
                       gpu_fields ? CascadeData::layout : CascadeData::host, v_.cascade_reads);
+  if (v_.entry == KernelEntry::staa) {
+    // The program for this frame's smooth terms (kernel/staa.glsl, staa_frame_terms).
+    ProgramOptions o = program_options(v_);
+    o.smooth_terms = inputs_->frame.fresnel != 0 || inputs_->frame.sky_gradient ? 1 : 0;
+    use_program(o);
+  }
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,7 @@ class GlEngine {
   FrameTimes time_frames(const FrameContext& ctx, int warmup, int repeats);
   // GPU time of the last dispatch in ms.
   double last_gpu_ms() const { return last_ms_; }
+  // The program of the last frame (staa's is compiled at its first frame: before it, none).
   const gl::Program& program() const { return program_; }
 
  private:
@@ -103,9 +105,14 @@ class GlEngine {
   // compiles at first use (llvmpipe) does so, outside any timing (program_notice.h).
   void prepare();
 
-  std::unique_ptr<ProgramWatch> watch_;  // until the first dispatch; first, to time the link
+  // The program of `o`, compiled unless it is the current one's.
+  void use_program(const ProgramOptions& o);
+
+  std::string method_;
+  std::unique_ptr<ProgramWatch> watch_;  // a program's, from its compile to its first dispatch
   GlVariant v_;
   gl::Program program_;
+  std::optional<ProgramOptions> program_options_;  // what program_ was compiled for
   gl::Texture table_f_, table_s_, fits_;
   kf::PathTableInfo tinfo_{};
   kf::KernelFitInfo finfo_{};

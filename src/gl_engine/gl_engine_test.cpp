@@ -39,23 +39,32 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
   Scene s = testing::project_scene("simple");
   s.width = 16;
   s.height = 8;
-  const SceneModel m(s);
+  // staa's programs differ by the water's smooth terms (kernel/staa.glsl,
+  // staa_frame_terms): each case runs on water without them and, for staa, with them.
+  Scene terms = s;
+  terms.surface.fresnel = FresnelMode::schlick;
+  terms.sky.gradient = true;
+  const SceneModel plain_model(s), terms_model(terms);
   struct Case {
     const char* name;
     MethodOptions o;
+    const SceneModel* m;
   };
   // Every program the suite runs (this test is the fixture that compiles them first:
   // src/CMakeLists.txt, gl_programs): the five methods with the default options, and staa's
   // with 2 path segments.
-  std::vector<Case> cases = {
-      {"point", {}}, {"supersample", {}}, {"reference", {}}, {"staa-temporal", {}}, {"staa", {}}};
+  std::vector<Case> cases = {{"point", {}, &plain_model},     {"supersample", {}, &plain_model},
+                             {"reference", {}, &plain_model}, {"staa-temporal", {}, &plain_model},
+                             {"staa", {}, &plain_model},      {"staa", {}, &terms_model}};
   MethodOptions two;
   two.staa.segments = 2;
   two.staa.ndf = NdfMode::uniform;
   two.staa.footprint = FootprintMode::none;
-  cases.push_back({"staa", two});
-  cases.push_back({"staa-temporal", two});
+  cases.push_back({"staa", two, &plain_model});
+  cases.push_back({"staa", two, &terms_model});
+  cases.push_back({"staa-temporal", two, &plain_model});
   for (const Case& c : cases) {
+    const SceneModel& m = *c.m;
     gl_engine::GlEngine engine(c.name, testing::with_tables(c.o));
     FrameContext ctx{m, frame_time(s, 1), 0};
     engine.dispatch(ctx);  // sets the uniforms
@@ -350,6 +359,32 @@ TEST_F(GlEngineTest, SmoothTermsAndTheHorizonMatchTheCpuEngine) {
                 cpu_ref);
     EXPECT_LE(gl_cpu, 0.02 * cpu_ref) << name;
   }
+}
+
+TEST_F(GlEngineTest, StaaProgramFollowsEachFramesSmoothTerms) {
+  // staa's program is compiled for whether the frame's water needs the smooth terms
+  // (kernel/staa.glsl, staa_frame_terms; gl_engine/kernel_program.h): one engine that
+  // shades water with them, without them, and with them again switches its program each
+  // time, and each frame is byte for byte what an engine made for that water alone gives.
+  // A program kept across the switch would shade the plain water with the terms' code (or
+  // the Fresnel water without it).
+  Scene terms = load_scene(testing::source_dir() + "/tests/scenes/fresnel-sky.json");
+  set_image_size(terms, 64, 36);
+  Scene plain = terms;
+  plain.surface.fresnel = FresnelMode::none;
+  plain.sky = SkyDesc::constant(terms.sky.horizon);
+  const SceneModel mt(terms), mp(plain);
+  auto frame = [](gl_engine::GlEngine& e, const SceneModel& m) {
+    e.dispatch(FrameContext{m, frame_time(m.scene, 0), 0});
+    return e.read_weights();
+  };
+  const MethodOptions o = testing::with_tables({});
+  gl_engine::GlEngine alone_t("staa", o), alone_p("staa", o), both("staa", o);
+  const std::vector<float> ref_t = frame(alone_t, mt), ref_p = frame(alone_p, mp);
+  ASSERT_NE(ref_t, ref_p);
+  EXPECT_EQ(frame(both, mt), ref_t);
+  EXPECT_EQ(frame(both, mp), ref_p);
+  EXPECT_EQ(frame(both, mt), ref_t);
 }
 
 TEST_F(GlEngineTest, EachFallbackIntegratorMatchesTheCpuEngine) {

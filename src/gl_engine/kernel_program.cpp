@@ -62,6 +62,8 @@ std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o) {
   if (entry == KernelEntry::staa) {
     h += "#define SG_SMOOTH_CELLS " + std::to_string(o.smooth_cells) + "\n";
     h += "#define SG_STAA_KERNELS " + std::to_string(o.kernels) + "\n";
+    if (o.smooth_terms >= 0)
+      h += "#define SG_SMOOTH_TERMS " + std::to_string(o.smooth_terms) + "\n";
     h += std::string("#define SG_STAA_FALLBACK_RIEMANN ") + (o.fallback_riemann ? "1" : "0") +
          "\n#define SG_STAA_FALLBACK_ALONG_PATH " + (o.fallback_along_path ? "1" : "0") + "\n";
   }

@@ -20,7 +20,9 @@ const char* entry_define(KernelEntry e);
 
 // What a program fixes in its text; every other option is a uniform. `staa`'s fallback
 // integrator selects code (kernel/staa.glsl, staa_fallback_share): a program holds the
-// one it runs, since code that never runs still costs a shader (docs/benchmarks.md).
+// one it runs, since code that never runs still costs a shader (docs/benchmarks.md; on
+// llvmpipe every branch's code runs, docs/gpu.md). So do the smooth terms: a scene
+// without Fresnel or a sky gradient gets a program without their code.
 // The path's sub-arcs: every entry but the reference is compiled for its frames' K
 // (SG_MAX_SEGMENTS = K and SG_EXACT_SEGMENTS: the per-wave terms then index their arrays by
 // a constant, kernel/wave_terms.glsl, path_segments); the reference's frames pick K up to
@@ -31,6 +33,12 @@ struct ProgramOptions {
   bool fallback_along_path = true;  // staa: SG_STAA_FALLBACK_ALONG_PATH
   int smooth_cells = 3;             // staa: SG_SMOOTH_CELLS, the smooth terms' cells a side
   int kernels = 9;                  // staa: SG_STAA_KERNELS, the RDF's kernels
+  // staa: SG_SMOOTH_TERMS, whether the frames' water needs the smooth terms (Fresnel or a
+  // sky gradient, kernel/staa.glsl, staa_frame_terms): 0 or 1, a program for those frames
+  // alone (the GL engine picks it per frame); -1, no #define: each frame decides.
+  int smooth_terms = -1;
+
+  bool operator==(const ProgramOptions&) const = default;
 };
 
 // The header of `entry`'s program: its #defines, before the kernel's sources (the web

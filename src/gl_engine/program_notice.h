@@ -1,5 +1,6 @@
 // Announcements of the GL engine's program preparation. A kernel program is compiled and
-// linked when an engine is made, and drivers such as Mesa's llvmpipe compile its machine
+// linked when an engine is made (staa's at its first frame, and again where a frame's smooth
+// terms differ: gl_engine/gl_engine.h), and drivers such as Mesa's llvmpipe compile its machine
 // code only at its first dispatch (up to a minute per program there); drivers keep what
 // they compiled in an on-disk shader cache (Mesa: ~/.cache/mesa_shader_cache; NVIDIA:
 // ~/.nv/GLCache), so a later process prepares the same program in a fraction of a second.

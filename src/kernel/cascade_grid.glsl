@@ -181,25 +181,6 @@ SG_FN vec2 cascade_grid_coord(IN(Cascade) c, vec2 xz) {
   return u - n * floor(u / n);
 }
 
-// Level l >= 1 at grid coordinate u, bilinearly (texel i's centre is sample
-// i 2^l + (2^l - 1) / 2).
-SG_FN CascadeTexel cascade_bilinear(IN(WaveBuffer) waves, IN(Cascade) c, IN(CascadeRead) rd, int l,
-                                    vec2 u) {
-  real s = real(1 << l);
-  vec2 t = (u - 0.5 * (s - 1.0)) / s;
-  vec2 i0 = floor(t);
-  vec2 w = t - i0;
-  int x = int(i0.x);
-  int y = int(i0.y);
-  CascadeLevel lv = cascade_level(c, rd, l);
-  CascadeTexel r = cascade_texel_zero();
-  cascade_texel_add_at(r, waves, lv, x, y, (1.0 - w.x) * (1.0 - w.y));
-  cascade_texel_add_at(r, waves, lv, x + 1, y, w.x * (1.0 - w.y));
-  cascade_texel_add_at(r, waves, lv, x, y + 1, (1.0 - w.x) * w.y);
-  cascade_texel_add_at(r, waves, lv, x + 1, y + 1, w.x * w.y);
-  return r;
-}
-
 // Catmull-Rom's weights for the four samples about fraction t.
 SG_FN vec4 catmull_rom_weights(real t) {
   real t2 = t * t;
@@ -208,21 +189,37 @@ SG_FN vec4 catmull_rom_weights(real t) {
               0.5 * (-3.0 * t3 + 4.0 * t2 + t), 0.5 * (t3 - t2));
 }
 
+// Level l at grid coordinate u: Catmull-Rom's bicubic at level 0 (16 texels), bilinear
+// above (4 texels; texel i's centre is sample i 2^l + (2^l - 1) / 2). One loop serves
+// both, its side (4 or 2) set by the level, rather than a branch for each: a SIMD group
+// of pixels that all read levels above 0 runs 4 texels' code, where two branches would
+// run both reads' 20 (llvmpipe runs every branch's code, taken or not; docs/gpu.md) and
+// a GPU's warp both where its pixels straddle level 0's edge.
+SG_FN CascadeTexel cascade_level_read(IN(WaveBuffer) waves, IN(Cascade) c, IN(CascadeRead) rd,
+                                      int l, vec2 u) {
+  bool cubic = l == 0;
+  real s = real(1 << l);
+  vec2 t = (u - 0.5 * (s - 1.0)) / s;
+  vec2 i0 = floor(t);
+  vec2 w = t - i0;
+  vec4 wx = cubic ? catmull_rom_weights(w.x) : vec4(1.0 - w.x, w.x, 0.0, 0.0);
+  vec4 wy = cubic ? catmull_rom_weights(w.y) : vec4(1.0 - w.y, w.y, 0.0, 0.0);
+  int side = cubic ? 4 : 2;
+  int x = int(i0.x) - (cubic ? 1 : 0);
+  int y = int(i0.y) - (cubic ? 1 : 0);
+  CascadeLevel lv = cascade_level(c, rd, l);
+  CascadeTexel r = cascade_texel_zero();
+  for (int b = 0; b < side; ++b) {
+    for (int a = 0; a < side; ++a)
+      cascade_texel_add_at(r, waves, lv, x + a, y + b, wx[a] * wy[b]);
+  }
+  return r;
+}
+
 // Level 0 at grid coordinate u, by Catmull-Rom's bicubic (16 texels).
 SG_FN CascadeTexel cascade_bicubic(IN(WaveBuffer) waves, IN(Cascade) c, IN(CascadeRead) rd,
                                    vec2 u) {
-  vec2 i0 = floor(u);
-  vec4 wx = catmull_rom_weights(u.x - i0.x);
-  vec4 wy = catmull_rom_weights(u.y - i0.y);
-  int x = int(i0.x);
-  int y = int(i0.y);
-  CascadeLevel lv = cascade_level(c, rd, 0);
-  CascadeTexel r = cascade_texel_zero();
-  for (int b = 0; b < 4; ++b) {
-    for (int a = 0; a < 4; ++a)
-      cascade_texel_add_at(r, waves, lv, x + a - 1, y + b - 1, wx[a] * wy[b]);
-  }
-  return r;
+  return cascade_level_read(waves, c, rd, 0, u);
 }
 
 // The chain at fractional level `level` (0 to levels - 1) and grid coordinate u: the two
@@ -231,17 +228,12 @@ SG_FN CascadeTexel cascade_filtered(IN(WaveBuffer) waves, IN(Cascade) c, IN(Casc
                                     real level, vec2 u) {
   int l0 = int(floor(level));
   real t = level - real(l0);
-  CascadeTexel r;
-  if (l0 == 0) {
-    r = cascade_bicubic(waves, c, rd, u);
-    // A grid point has no spread of its own: level 0's second moments are its mean's
-    // square (an interpolated s s^T would add the blend's spread between samples).
-    r.b = vec4(r.b.x, r.a.x * r.a.x, r.a.x * r.a.y, r.a.y * r.a.y);
-  } else {
-    r = cascade_bilinear(waves, c, rd, l0, u);
-  }
+  CascadeTexel r = cascade_level_read(waves, c, rd, l0, u);
+  // A grid point has no spread of its own: level 0's second moments are its mean's
+  // square (an interpolated s s^T would add the blend's spread between samples).
+  if (l0 == 0) r.b = vec4(r.b.x, r.a.x * r.a.x, r.a.x * r.a.y, r.a.y * r.a.y);
   if (t > 0.0 && l0 + 1 < c.levels) {
-    CascadeTexel r1 = cascade_bilinear(waves, c, rd, l0 + 1, u);
+    CascadeTexel r1 = cascade_level_read(waves, c, rd, l0 + 1, u);
     r.a = mix(r.a, r1.a, t);
     r.b = mix(r.b, r1.b, t);
     r.start = mix(r.start, r1.start, t);

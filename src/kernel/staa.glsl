@@ -135,12 +135,26 @@ SG_FN int staa_smooth_cells(IN(StaaParams) p) {
 #endif
 }
 
+// Whether the frame's water needs the smooth terms: F != 1 or a sky gradient (where F = 1
+// and the sky is constant the water is the sky or the sea, and only the horizon's share is
+// at stake: the RDF's mass beyond the horizon's line on the light plane serves, at no
+// cost). A GLSL program may be compiled for one answer (SG_SMOOTH_TERMS 0 or 1,
+// gl_engine/kernel_program.h), which the engine runs on the frames that give it: the terms'
+// code (the cells' sums in every wave's terms, the cells' evaluations per pixel) then
+// leaves the programs of scenes without them. Code that never runs still costs a shader:
+// llvmpipe runs both sides of every branch, taken or not (docs/gpu.md).
+SG_FN bool staa_frame_terms(IN(Frame) f) {
+#ifndef SG_SMOOTH_TERMS
+  return f.fresnel != 0 || f.sky_gradient;
+#else
+  return SG_SMOOTH_TERMS != 0;
+#endif
+}
+
 // The smooth terms' cells per side for this frame: none with --smooth-terms mean, and
-// none where F = 1 and the sky is constant (the water is then the sky or the sea, and
-// only the horizon's share is at stake: the RDF's mass beyond the horizon's line on the
-// light plane serves, at no cost); else the option's.
+// none where the frame needs no terms (staa_frame_terms); else the option's.
 SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
-  if (staa_smooth_cells(p) <= 0 || (f.fresnel == 0 && !f.sky_gradient)) return 0;
+  if (staa_smooth_cells(p) <= 0 || !staa_frame_terms(f)) return 0;
   return staa_smooth_cells(p);
 }
 
