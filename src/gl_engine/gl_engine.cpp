@@ -9,6 +9,7 @@
 #include "gl/check.h"
 #include "gl/dispatch.h"
 #include "gl_engine/uniforms.h"
+#include "kernel/kernel_float.h"
 #include "methods/reference.h"
 #include "methods/staa.h"
 #include "methods/supersample.h"
@@ -122,9 +123,10 @@ std::unique_ptr<ProgramWatch> started_watch(const std::string& method) {
 GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
     : method_(method), v_(gl_variant(method, o)) {
   // Every program but staa's fixes nothing a frame decides: compiled now. staa's is
-  // compiled at the first frame, for whether its water needs the smooth terms.
-  if (v_.entry != KernelEntry::staa) use_program(program_options(v_));
-  if (v_.entry == KernelEntry::staa) {
+  // compiled at the first frame, for whether its water needs the smooth terms (upload).
+  if (v_.entry != KernelEntry::staa) {
+    use_program(program_options(v_));
+  } else {
     const PathTables& t = required_path_tables(o, method);
     const kernel_tables::R32Texture2D f = t.f_texture();
     const kernel_tables::R32Texture3D s = t.s_texture();
@@ -171,7 +173,7 @@ void GlEngine::upload(const FrameContext& ctx) {
   if (v_.entry == KernelEntry::staa) {
     // The program for this frame's smooth terms (kernel/staa.glsl, staa_frame_terms).
     ProgramOptions o = program_options(v_);
-    o.smooth_terms = inputs_->frame.fresnel != 0 || inputs_->frame.sky_gradient ? 1 : 0;
+    o.smooth_terms = kf::float_staa_frame_terms(inputs_->frame) ? 1 : 0;
     use_program(o);
   }
   const int w = ctx.model.width(), h = ctx.model.height();

@@ -21,6 +21,9 @@ StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f
                             const StaaParams& p, int i, int j, StaaPath& path);
 StaaResult float_staa_exact_result(const Frame& f, const StaaPath& path, const StaaResult& r,
                                    real in_light);
+// Whether frame f's water needs staa's smooth terms (kernel/staa.glsl, staa_frame_terms):
+// the GL engine compiles staa's program for the answer (gl_engine/kernel_program.h).
+bool float_staa_frame_terms(const Frame& f);
 // For the tests: the replacements of functions GLSL lacks, and the sums over the waves
 // (vectorised when the buffer carries arrays, else the kernel's loops).
 real float_erfc(real x);

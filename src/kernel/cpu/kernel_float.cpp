@@ -38,6 +38,9 @@ StaaResult float_staa_exact_result(const Frame& f, const StaaPath& path, const S
                                    real in_light) {
   return staa_exact_result(f, path, r, in_light);
 }
+bool float_staa_frame_terms(const Frame& f) {
+  return staa_frame_terms(f);
+}
 real float_erfc(real x) {
   return erfc(x);
 }
