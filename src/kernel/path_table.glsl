@@ -192,8 +192,12 @@ SG_FN real path_integral(IN(R32Texture2D) F, IN(R32Texture3D) S, IN(PathTableInf
   int k = 0;
   real w = 0.0;
   locate_sigma(t, sigma, k, w);
-  real a = path_slice(F, S, t, k, u0, u1, v);
-  return w == 0.0 ? a : (1.0 - w) * a + w * path_slice(F, S, t, k + 1, u0, u1, v);
+  // The two slices about sigma (one where it falls on a slice) by one call in a loop: a GL
+  // program holds path_slice's code once (docs/gpu.md).
+  real a = 0.0;
+  for (int j = 0; j < (w == 0.0 ? 1 : 2); ++j)
+    a += (j == 0 ? 1.0 - w : w) * path_slice(F, S, t, k + j, u0, u1, v);
+  return a;
 }
 
 // The time average over the straight segment p0 -> p1 of the light plane of the mass of

@@ -163,15 +163,20 @@ SG_FN SmoothTerms smooth_terms(IN(Frame) f, vec2 mu, mat2 cov, vec3 v) {
       t.y += wq * g.y;
       t.z += wq * g.z;
     }
-  } else if (cut_lo && cut_hi) {
-    // Both ends cut: split at the middle, each half with its cut at one end.
-    real mid = 0.5 * (lo + hi);
-    t = smooth_cut_piece(f, l, 1.0, v, lo, mid) + smooth_cut_piece(f, l, -1.0, v, -hi, -mid);
-  } else if (cut_lo) {
-    t = smooth_cut_piece(f, l, 1.0, v, lo, hi);
   } else {
-    // The cut at the upper end: u -> -u puts it at the lower end.
-    t = smooth_cut_piece(f, l, -1.0, v, -hi, -lo);
+    // One piece with its cut at the lower end (the cut at the upper end turned there by
+    // u -> -u), or, both ends cut, two split at the middle, each with its cut at one end.
+    // One call in a loop rather than a call for each case: a GL program holds the
+    // piece's code once, which llvmpipe runs whether taken or not (docs/gpu.md).
+    bool both = cut_lo && cut_hi;
+    real mid = 0.5 * (lo + hi);
+    t = vec4(0.0);
+    for (int piece = 0; piece < (both ? 2 : 1); ++piece) {
+      bool upper = piece == 1 || !cut_lo;
+      real c = upper ? -hi : lo;
+      real e = both ? (upper ? -mid : mid) : (upper ? -lo : hi);
+      t += smooth_cut_piece(f, l, upper ? -1.0 : 1.0, v, c, e);
+    }
   }
   res.f_above = clamp(t.x, 0.0, t.w);
   res.f_zenith = clamp(t.y, 0.0, res.f_above);

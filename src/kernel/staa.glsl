@@ -306,21 +306,24 @@ SG_FN SmoothTerms staa_smooth_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) 
   }
   real tw = w_bar[0][0] + w_bar[1][1] + shared_cov[0][0] + shared_cov[1][1];
   real tb = b_bar[0][0] + b_bar[1][1];
-  if (n == 1 || tb <= 0.1 * tw || tb + tw < 0.02 * 0.02) {
-    return smooth_terms(f, m_bar + shift, w_bar + b_bar + shared_cov, view);
-  }
+  bool one = n == 1 || tb <= 0.1 * tw || tb + tw < 0.02 * 0.02;
+  // One evaluation of the moment-matched Gaussian, or one per cell: one call in a loop
+  // (a GL program then holds smooth_terms' code once; llvmpipe runs every copy, taken or
+  // not: docs/gpu.md).
+  real weight = one ? 1.0 : inv_cells;
   SmoothTerms res;
   res.f_above = 0.0;
   res.f_zenith = 0.0;
   res.f_horizon = 0.0;
   res.above = 0.0;
-  for (int c = 0; c < n * n; ++c) {
-    SmoothTerms t =
-        smooth_terms(f, sums.cells.m[c].mean + shift, sym2(sums.cells.m[c].cov) + shared_cov, view);
-    res.f_above += t.f_above * inv_cells;
-    res.f_zenith += t.f_zenith * inv_cells;
-    res.f_horizon += t.f_horizon * inv_cells;
-    res.above += t.above * inv_cells;
+  for (int c = 0; c < (one ? 1 : n * n); ++c) {
+    vec2 mean = one ? m_bar : sums.cells.m[c].mean;
+    mat2 cov = one ? w_bar + b_bar : sym2(sums.cells.m[c].cov);
+    SmoothTerms t = smooth_terms(f, mean + shift, cov + shared_cov, view);
+    res.f_above += t.f_above * weight;
+    res.f_zenith += t.f_zenith * weight;
+    res.f_horizon += t.f_horizon * weight;
+    res.above += t.above * weight;
   }
   return res;
 }
@@ -549,18 +552,6 @@ SG_FN int staa_integrator(IN(StaaParams) p, IN(PrincipalAxes) ax, real R) {
                                                      : kStaaKernels;
 }
 
-// A vanishing RDF: the fraction of the path inside the disk (the path tables at sigma 0).
-SG_FN real staa_vanishing_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
-                                IN(PathTableInfo) tinfo, IN(StaaPath) path, int K, real R) {
-  real in_light = 0.0;
-  for (int k = 0; k < K; ++k) {
-    if (path.valid[k] && path.valid[k + 1]) {
-      in_light += path_average(table_f, table_s, tinfo, path.centre[k], path.centre[k + 1], 0.0, R);
-    }
-  }
-  return in_light * (1.0 / real(K));
-}
-
 // The fallback (Sec. 3.6): the RDF's mass in the disk at the display time, or averaged
 // along the path. `--fallback quadrature` takes each sub-segment's time average in closed
 // form in time (gaussian.glsl, gaussian_disk_mass_along): the cost of one instant's mass
@@ -616,18 +607,38 @@ SG_FN real staa_fallback_share(IN(StaaParams) p, IN(StaaPath) path, int K, mat2 
 // along its major axis, each integrated along the path offset by its centre (Fig. 10) with
 // the path tables (Eqs. 18-19). The principal-frame cull of staa_light_share, for circles
 // of at most the largest kernel's deviation offset by at most the largest offset.
+// A vanishing RDF is one kernel of deviation 0 at the centre, uncut: the fraction of the
+// path inside the disk (the path tables at sigma 0). Both integrators share this one call
+// of path_average: a GL program holds its code once (llvmpipe runs every copy of a
+// function's code, taken or not: docs/gpu.md).
 SG_FN real staa_kernels_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
                               IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
                               IN(KernelFitInfo) finfo, IN(StaaParams) p, IN(StaaPath) path, int K,
-                              IN(PrincipalAxes) ax, real R, real min_minor, real min_major) {
-  KernelSet ks = elliptical_kernels(fits, finfo, staa_kernel_count(p), ax.s2, ax.s1);
+                              IN(PrincipalAxes) ax, real R, real min_minor, real min_major,
+                              bool vanishing) {
+  KernelSet ks;
+  if (vanishing) {
+    ks.count = 1;
+    for (int i = 0; i < kMaxKernels; ++i) {
+      ks.offset[i] = 0.0;
+      ks.sigma[i] = 0.0;
+      ks.weight[i] = 0.0;
+    }
+    ks.weight[0] = 1.0;
+    ks.ratio = 1.0;
+    ks.past_threshold = false;
+    ks.beyond_table = false;
+  } else {
+    ks = elliptical_kernels(fits, finfo, staa_kernel_count(p), ax.s2, ax.s1);
+  }
   real sigma_max = 0.0;
   real offset_max = 0.0;
   for (int q = 0; q < ks.count; ++q) {
     sigma_max = max(sigma_max, ks.sigma[q]);
     offset_max = max(offset_max, abs(ks.offset[q]));
   }
-  bool culled = min_minor > R + 12.0 * sigma_max || min_major > R + offset_max + 12.0 * sigma_max;
+  bool culled = !vanishing &&
+                (min_minor > R + 12.0 * sigma_max || min_major > R + offset_max + 12.0 * sigma_max);
   real in_light = 0.0;
   real inv_k = 1.0 / real(K);
   for (int q = 0; q < ks.count && !culled; ++q) {
@@ -675,14 +686,12 @@ SG_FN StaaLightShare staa_light_share(IN(R32Texture2D) table_f, IN(R32Texture3D)
     real min_minor = path_min_abs_projection(path, K, vec2(-ax.u.y, ax.u.x));
     real min_major = path_min_abs_projection(path, K, ax.u);
     s.fallback = integrator == kStaaFallback;
-    if (integrator == kStaaVanishing) {
-      s.in_light = staa_vanishing_share(table_f, table_s, tinfo, path, K, R);
-    } else if (integrator == kStaaFallback) {
+    if (integrator == kStaaFallback) {
       bool culled = min_minor > R + 12.0 * ax.s2 || min_major > R + 12.0 * ax.s1;
       if (!culled) s.in_light = staa_fallback_share(p, path, K, cov_r, R);
     } else {
       s.in_light = staa_kernels_share(table_f, table_s, tinfo, fits, finfo, p, path, K, ax, R,
-                                      min_minor, min_major);
+                                      min_minor, min_major, integrator == kStaaVanishing);
     }
   }
   return s;
