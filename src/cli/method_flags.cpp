@@ -18,6 +18,8 @@ namespace sg {
 void MethodFlags::finish(const std::string& context) {
   options.path_tables = &cli_path_tables();
   options.samples_given = !samples.empty();
+  options.intersect_tolerance_given =
+      intersect_tolerance_option != nullptr && intersect_tolerance_option->count() > 0;
   options.samples =
       samples.empty() ? SampleCounts{} : parse_sample_counts(samples, context + "--samples");
   engine = parse_engine(engine_name, context + "--engine");
@@ -116,12 +118,14 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
          {{"double", Precision::float64}, {"float", Precision::float32}},
          "point, supersample, reference, staa-temporal, staa: the shading kernel's precision on "
          "the CPU (float is what a GPU computes)");
-  app.add_option("--intersect-tolerance", o.intersect_tolerance,
-                 "point, supersample, reference, staa-temporal, staa on displaced water: leave "
-                 "out of the intersection the shortest waves whose amplitudes sum to at most "
-                 "this many pixels of the ray's footprint (0: every wave)")
-      ->capture_default_str()
-      ->check(number_in(0, 16));
+  f.intersect_tolerance_option =
+      app.add_option("--intersect-tolerance", o.intersect_tolerance,
+                     "point, supersample, reference, staa-temporal, staa on displaced water: "
+                     "leave out of the intersection the shortest waves whose amplitudes sum to "
+                     "at most this many pixels of the ray's footprint (0: every wave; the "
+                     "reference's default is 0, the others' this)")
+          ->capture_default_str()
+          ->check(number_in(0, 16));
   choice(app, "--cascades", o.cascade_fields, {{"fields", true}, {"waves", false}},
          "point, supersample with T = 1, staa-temporal, staa (flat and displaced water), lean, "
          "specaa, bruneton (flat water): shade lattice cascades from their FFT fields (a cost "

@@ -14,9 +14,10 @@ namespace sg {
 
 // Storage for the flags' values; `finish` checks them and converts the few that need it.
 struct MethodFlags {
-  std::string samples;              // empty: the method's default
-  std::string engine_name = "cpu";  // --engine
-  Engine engine = Engine::cpu;      // set by finish()
+  std::string samples;                                      // empty: the method's default
+  std::string engine_name = "cpu";                          // --engine
+  const CLI::Option* intersect_tolerance_option = nullptr;  // --intersect-tolerance
+  Engine engine = Engine::cpu;                              // set by finish()
   MethodOptions options;
   // The flags that configure some methods only, with those methods (add_method_flags
   // fills it; --engine configures every method and is not listed).

@@ -73,7 +73,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     v.reference.quiet_sx = v.reference.quiet_sy = rs.quiet;
     v.reference.margin = static_cast<float>(rs.margin);
     v.intersect_tolerance =  // per sample cell, as on the CPU (methods/reference.h)
-        o.intersect_tolerance / std::max({rs.samples.sx, rs.samples.sy, 1});
+        rs.intersect_tolerance / std::max({rs.samples.sx, rs.samples.sy, 1});
   } else if (method == "supersample") {
     v.entry = KernelEntry::stratified;
     v.counts.sx = o.samples.sx;

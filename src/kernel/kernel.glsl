@@ -21,6 +21,7 @@
 #include "kernel/footprint.glsl"
 #include "kernel/aliasing.glsl"
 #include "kernel/ndf.glsl"
+#include "kernel/visible_normals.glsl"
 #include "kernel/rdf.glsl"
 #include "kernel/gaussian.glsl"
 #include "kernel/arc.glsl"

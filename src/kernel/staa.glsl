@@ -317,9 +317,20 @@ SG_FN SmoothTerms staa_smooth_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) 
   res.f_horizon = 0.0;
   res.above = 0.0;
   for (int c = 0; c < (one ? 1 : n * n); ++c) {
-    vec2 mean = one ? m_bar : sums.cells.m[c].mean;
-    mat2 cov = one ? w_bar + b_bar : sym2(sums.cells.m[c].cov);
-    SmoothTerms t = smooth_terms(f, mean + shift, cov + shared_cov, view);
+    vec2 mean = (one ? m_bar : sums.cells.m[c].mean) + shift;
+    mat2 cov = (one ? w_bar : sym2(sums.cells.m[c].cov)) + shared_cov;
+    // On displaced water the normals within a cell as the view sees them
+    // (visible_normals.glsl). The cells themselves stay equal shares: they are the pixel
+    // square mapped through the tangent plane at the centre's hit, which already places
+    // the pixel's rays on the water to first order (weighting them by their projected
+    // area as well moved `staa`'s far water away from the reference: docs/method.md).
+    if (f.displaced) {
+      VisibleNormals vn = visible_normals(mean, cov, view);
+      mean = vn.mean;
+      cov = vn.cov;
+    }
+    if (one) cov += b_bar;
+    SmoothTerms t = smooth_terms(f, mean, cov, view);
     res.f_above += t.f_above * weight;
     res.f_zenith += t.f_zenith * weight;
     res.f_horizon += t.f_horizon * weight;
@@ -421,6 +432,12 @@ SG_FN StaaNdf staa_ndf_along_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v
   StaaNdf ndf;
   ndf.mean = (sums.any_alias && p.per_pixel_ndf && p.ndf_mean_shift) ? sums.ndf.mean : vec2(0.0);
   ndf.cov = sums.any_alias ? sym2(sums.ndf.cov) : mat2(0.0);
+  if (f.displaced && sums.any_alias) {
+    vec2 centre = -sums.path.g[K] + ndf.mean;
+    VisibleNormals vn = visible_normals(centre, ndf.cov, v.view[K]);
+    ndf.mean += vn.mean - centre;
+    ndf.cov = vn.cov;
+  }
   for (int k = 0; k <= K; ++k) {
     vec3 r = reflect_about_ndf_point(-sums.path.g[k] + ndf.mean, v.view[k]);
     path.valid[k] = dot(r, f.light.L) > kMinCosToLight * length(r);

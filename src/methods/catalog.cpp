@@ -64,8 +64,7 @@ const PathTables& required_path_tables(const MethodOptions& o, const std::string
 std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions& o) {
   validate(o);
   if (name == "reference") {
-    return std::make_unique<ReferenceMethod>(reference_settings(o), o.precision,
-                                             o.intersect_tolerance);
+    return std::make_unique<ReferenceMethod>(reference_settings(o), o.precision);
   }
   if (name == "supersample") {
     return std::make_unique<StratifiedMethod>(

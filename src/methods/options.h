@@ -189,8 +189,10 @@ struct MethodOptions {
   // --intersect-tolerance X: displaced water, the kernel methods' intersection leaves out
   // the shortest waves whose amplitudes sum to at most X pixels of the ray's footprint
   // (kernel/intersect.glsl; the default is kDefaultIntersectTolerance of
-  // shading/kernel_frame.h); 0: every wave.
+  // shading/kernel_frame.h); 0: every wave. The reference takes it only when given
+  // (`intersect_tolerance_given`); else every wave (methods/reference.h).
   double intersect_tolerance = 0.25;
+  bool intersect_tolerance_given = false;
   // --cascades fields|waves: point, supersample with T = 1, staa-temporal and staa (flat
   // and displaced water), lean, specaa and bruneton (flat water) shade a scene's lattice
   // cascades from their FFT fields (kernel/cascade_grid.glsl, cascade_fields.glsl; a cost

@@ -46,6 +46,7 @@ ReferenceSettings reference_settings(const MethodOptions& o) {
   rs.only_batch = o.only_batch;
   rs.adaptive = o.adaptive;
   rs.quiet = o.quiet_samples;
+  if (o.intersect_tolerance_given) rs.intersect_tolerance = o.intersect_tolerance;
   return rs;
 }
 
@@ -59,9 +60,8 @@ double ReferencePixel::variance(const Radiances& r, int c) const {
   return sum / (double(b) * double(b - 1));
 }
 
-ReferenceMethod::ReferenceMethod(ReferenceSettings settings, Precision precision,
-                                 double intersect_tolerance)
-    : settings_(settings), precision_(precision), intersect_tolerance_(intersect_tolerance) {
+ReferenceMethod::ReferenceMethod(ReferenceSettings settings, Precision precision)
+    : settings_(settings), precision_(precision) {
   if (settings_.batches < 2 || settings_.batches > kd::kMaxBatches) {
     throw Error("--batches: must be in [2, " + std::to_string(kd::kMaxBatches) + "]");
   }
@@ -77,7 +77,7 @@ void ReferenceMethod::begin_frame(const FrameContext& ctx) {
   if (!inputs_ || k.segments != split_.segments || k.windows != split_.windows) {
     inputs_ = std::make_unique<KernelFrameInputs>(
         k.segments, precision_,
-        intersect_tolerance_ / std::max({settings_.samples.sx, settings_.samples.sy, 1}),
+        settings_.intersect_tolerance / std::max({settings_.samples.sx, settings_.samples.sy, 1}),
         k.windows);
     split_ = k;
   }

@@ -214,9 +214,13 @@ done
 expect_rc "displaced cascades" 0 "2 cascades of 32 x 32" "$bin" ocean -o "$work/lat/disp.json" \
   --cascades 2 --lattice 32 --patch-sizes 40,20 --wind-speed 8 --geometry displaced \
   --template "$src/scenes/smooth.json"
-# Its batches find no glint, agree in every pixel, and the render says what that means.
+# With the intersection's tolerance given (the reference's default is every wave), its
+# batches find no glint, agree in every pixel, and the render says what that means. With
+# every wave intersected the same reference finds a glint (standard error 8.7e-4): the
+# tolerance left a small steep wave out of the march.
 expect_rc "reference batches agree" 0 "the batches agree in every pixel" "$bin" render \
-  "$work/lat/disp.json" -m reference --samples 4x4x1 --width 48 --height 27 -f 2 -o "$work/lat/dr.pfm"
+  "$work/lat/disp.json" -m reference --samples 4x4x1 --intersect-tolerance 0.25 --width 48 \
+  --height 27 -f 2 -o "$work/lat/dr.pfm"
 "$bin" render "$work/lat/disp.json" -m staa --width 48 --height 27 -f 2 -o "$work/lat/df.pfm" >/dev/null 2>&1
 "$bin" render "$work/lat/disp.json" -m staa --cascades waves --width 48 --height 27 -f 2 \
   -o "$work/lat/dw.pfm" >/dev/null 2>&1
@@ -224,8 +228,9 @@ d=$("$bin" diff "$work/lat/df.pfm" "$work/lat/dw.pfm" | awk '$1 == "max_abs" {pr
 rf=$("$bin" diff "$work/lat/df.pfm" "$work/lat/dr.pfm" | awk '$1 == "rmse" {print $2}')
 rx=$("$bin" diff "$work/lat/dw.pfm" "$work/lat/dr.pfm" | awk '$1 == "rmse" {print $2}')
 echo "  displaced staa: fields rmse $rf, sines rmse $rx, max |fields - sines| $d"
-# The bound is 1.35x: this 4x4x1 reference misses glints (its batches agree: standard error
-# 0). Against a 48x48x1 x 4 reference (standard error 4.6e-5) the fields are 1.13 times
+# The bound is 1.35x: this 4x4x1 reference of the 0.25-pixel tolerance misses glints (its
+# batches agree: standard error 0; against the same reference with every wave intersected
+# the fields measure 1.02 times the sines). Against a 48x48x1 x 4 reference (standard error 4.6e-5) the fields are 1.13 times
 # the sines (1.11 before the chain's filter was matched to Eq. 20's ramp); against this one
 # 1.29 (0.98 before).
 awk -v f="$rf" -v x="$rx" -v d="$d" 'BEGIN {exit !(d > 0 && f > 0 && f <= 1.35 * x)}' && ok ||
