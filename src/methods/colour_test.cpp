@@ -86,6 +86,32 @@ TEST(Colour, GreySceneRendersOneChannel) {
   EXPECT_EQ(render(s, "point", 0, 0)[0].channels, 3);
 }
 
+// Frame 0 of a scene against a 12x12x1 reference of 4 batches, rendered once; each
+// method's RMSE against it (the Fresnel-and-sky tests).
+struct FrameZeroAgainstReference {
+  const SceneModel& m;
+  Image ref;
+  explicit FrameZeroAgainstReference(const SceneModel& model) : m(model) {
+    MethodOptions o;
+    o.samples = {12, 12, 1};
+    o.samples_given = true;
+    o.batches = 4;
+    ref = render_frame(m, *make_method("reference", testing::with_tables(o)), 0, {});
+  }
+  double rmse(const std::string& method, const MethodOptions& o) const {
+    return compare_images(render_frame(m, *make_method(method, testing::with_tables(o)), 0, {}),
+                          ref)
+        .rmse;
+  }
+};
+
+MethodOptions supersample_6x6x1() {
+  MethodOptions o;
+  o.samples = {6, 6, 1};
+  o.samples_given = true;
+  return o;
+}
+
 // Far displaced water under Fresnel and a sky gradient (tests/scenes/displaced-far-sky.json:
 // three waves, two swells of 0.2 and 0.3 m and a 0.37 m wave of slope 0.043, a camera 2.4 m
 // up whose top rows graze the water at under a degree, the light's radiance 0). A displaced
@@ -97,23 +123,11 @@ TEST(Colour, GreySceneRendersOneChannel) {
 // with the default tolerance, which leaves the small wave out of the intersection, 9.44e-4.
 TEST(Colour, DisplacedFarWaterShowsTheNormalsTurnedTowardsTheView) {
   const SceneModel m(load_scene(testing::source_dir() + "/tests/scenes/displaced-far-sky.json"));
-  RenderSettings rs;
-  MethodOptions ro;
-  ro.samples = {12, 12, 1};
-  ro.samples_given = true;
-  ro.batches = 4;
-  const Image ref = render_frame(m, *make_method("reference", testing::with_tables(ro)), 0, rs);
-  MethodOptions ss;
-  ss.samples = {6, 6, 1};
-  ss.samples_given = true;
+  const FrameZeroAgainstReference r(m);
+  MethodOptions ss = supersample_6x6x1();
   ss.intersect_tolerance = 0;
-  const double super =
-      compare_images(render_frame(m, *make_method("supersample", testing::with_tables(ss)), 0, rs),
-                     ref)
-          .rmse;
-  const double staa =
-      compare_images(render_frame(m, *make_method("staa", testing::with_tables({})), 0, rs), ref)
-          .rmse;
+  const double super = r.rmse("supersample", ss);
+  const double staa = r.rmse("staa", {});
   std::printf("displaced-far-sky 96x54: staa %.3g, supersample 6x6x1 (every wave) %.3g\n", staa,
               super);
   EXPECT_LT(staa, 1.3 * super);
@@ -159,27 +173,12 @@ TEST(Colour, FresnelSkyAndSeaOverTheNormalsBeatSupersampling) {
   Scene s = load_scene(testing::source_dir() + "/tests/scenes/fresnel-sky.json");
   set_image_size(s, 160, 90);
   const SceneModel m(s);
-  RenderSettings rs;
-  MethodOptions ro;
-  ro.samples = {12, 12, 1};
-  ro.samples_given = true;
-  ro.batches = 4;
-  const Image ref = render_frame(m, *make_method("reference", testing::with_tables(ro)), 0, rs);
-  MethodOptions ss;
-  ss.samples = {6, 6, 1};
-  ss.samples_given = true;
-  const double super =
-      compare_images(render_frame(m, *make_method("supersample", testing::with_tables(ss)), 0, rs),
-                     ref)
-          .rmse;
-  const double staa =
-      compare_images(render_frame(m, *make_method("staa", testing::with_tables({})), 0, rs), ref)
-          .rmse;
+  const FrameZeroAgainstReference r(m);
+  const double super = r.rmse("supersample", supersample_6x6x1());
+  const double staa = r.rmse("staa", {});
   MethodOptions mean;
   mean.staa.smooth_over_normals = false;
-  const double at_mean =
-      compare_images(render_frame(m, *make_method("staa", testing::with_tables(mean)), 0, rs), ref)
-          .rmse;
+  const double at_mean = r.rmse("staa", mean);
   std::printf("fresnel-sky 160x90: staa %.3g, --smooth-terms mean %.3g, supersample 6x6x1 %.3g\n",
               staa, at_mean, super);
   EXPECT_LT(staa, super);
