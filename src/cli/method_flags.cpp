@@ -122,9 +122,8 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       app.add_option("--intersect-tolerance", o.intersect_tolerance,
                      "point, supersample, reference, staa-temporal, staa on displaced water: "
                      "leave out of the intersection the shortest waves whose amplitudes sum to "
-                     "at most this many pixels of the ray's footprint (0: every wave; the "
-                     "reference's default is 0, the others' this)")
-          ->capture_default_str()
+                     "at most this many pixels of the ray's footprint (0: every wave, the "
+                     "default of all but staa, whose default is 0.25)")
           ->check(number_in(0, 16));
   choice(app, "--cascades", o.cascade_fields, {{"fields", true}, {"waves", false}},
          "point, supersample with T = 1, staa-temporal, staa (flat and displaced water), lean, "

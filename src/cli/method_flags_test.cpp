@@ -8,6 +8,7 @@
 #include "base/error.h"
 #include "cli/args.h"
 #include "methods/method.h"
+#include "methods/supersample.h"
 
 namespace sg {
 namespace {
@@ -66,6 +67,25 @@ TEST(MethodVariant, FlagsOfOtherMethodsAreRefused) {
         "bruneton --bruneton-nmin 2", "point --engine gl"}) {
     EXPECT_NO_THROW(parse_method_variant(text)) << text;
   }
+}
+
+// The displaced intersection's tolerance: every wave for the methods whose samples are
+// radiances along rays, 0.25 pixel for staa, the flag's value for each when given (even
+// when it is the default's own value).
+TEST(MethodVariant, IntersectToleranceByMethodUnlessGiven) {
+  const MethodOptions none = parse_method_variant("point").options;
+  for (const char* m : {"reference", "supersample", "point", "staa-temporal"})
+    EXPECT_EQ(intersect_tolerance_for(none, m), 0.0) << m;
+  EXPECT_EQ(intersect_tolerance_for(none, "staa"), 0.25);
+  for (const char* text : {"point --intersect-tolerance 0.25", "staa --intersect-tolerance 0.25"}) {
+    const MethodVariant v = parse_method_variant(text);
+    EXPECT_EQ(intersect_tolerance_for(v.options, v.name), 0.25) << text;
+  }
+  const MethodVariant s = parse_method_variant("staa --intersect-tolerance 0");
+  EXPECT_EQ(intersect_tolerance_for(s.options, "staa"), 0.0);
+  const MethodVariant ss =
+      parse_method_variant("supersample --samples 4x4x1 --intersect-tolerance 1");
+  EXPECT_EQ(stratified_intersect_tolerance(ss.options), 0.25);  // per sample cell
 }
 
 TEST(MethodFlags, EveryFlagNamesTheMethodsItConfigures) {

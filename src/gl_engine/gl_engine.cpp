@@ -52,7 +52,7 @@ const char* gl_methods() {
 GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   validate(o);
   GlVariant v;
-  v.intersect_tolerance = o.intersect_tolerance;
+  v.intersect_tolerance = intersect_tolerance_for(o, method);
   v.cascade_fields =
       o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa" ||
                            (method == "supersample" && o.samples.st == 1));

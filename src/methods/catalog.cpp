@@ -72,14 +72,15 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
         stratified_intersect_tolerance(o), o.cascade_fields && o.samples.st == 1);
   }
   if (name == "point")
-    return std::make_unique<PointMethod>(o.precision, o.intersect_tolerance, o.cascade_fields);
+    return std::make_unique<PointMethod>(o.precision, intersect_tolerance_for(o, name),
+                                         o.cascade_fields);
   if (name == "staa-temporal") {
-    return std::make_unique<StaaTemporalMethod>(o.staa.segments, o.precision, o.intersect_tolerance,
-                                                o.cascade_fields);
+    return std::make_unique<StaaTemporalMethod>(o.staa.segments, o.precision,
+                                                intersect_tolerance_for(o, name), o.cascade_fields);
   }
   if (name == "staa") {
     return std::make_unique<StaaMethod>(o.staa, required_path_tables(o, name), o.precision,
-                                        o.intersect_tolerance, o.cascade_fields);
+                                        intersect_tolerance_for(o, name), o.cascade_fields);
   }
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean, o.cascade_fields);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);

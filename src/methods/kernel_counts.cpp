@@ -74,9 +74,9 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
   const bool super = method == "supersample";
   const int segments = method == "staa" || method == "staa-temporal" ? o.staa.segments : 1;
   const bool fields = o.cascade_fields && (!super || o.samples.st == 1);
-  KernelFrameInputs inputs(segments, Precision::float64,
-                           super ? stratified_intersect_tolerance(o) : o.intersect_tolerance, 1,
-                           fields);
+  KernelFrameInputs inputs(
+      segments, Precision::float64,
+      super ? stratified_intersect_tolerance(o) : intersect_tolerance_for(o, method), 1, fields);
   const FrameContext ctx{m, frame_time(m.scene, frame), o.seed};
   inputs.build(ctx);
   const KernelInputsD& in = inputs.d();

@@ -37,6 +37,11 @@ std::string to_string(const SampleCounts& s) {
   return std::to_string(s.sx) + "x" + std::to_string(s.sy) + "x" + std::to_string(s.st);
 }
 
+double intersect_tolerance_for(const MethodOptions& o, const std::string& method) {
+  if (o.intersect_tolerance_given) return o.intersect_tolerance;
+  return method == "staa" ? MethodOptions{}.intersect_tolerance : 0.0;
+}
+
 void validate(const MethodOptions& o) {
   auto require = [](bool ok, const std::string& flag, const std::string& rule) {
     if (!ok) throw Error(flag + ": " + rule);

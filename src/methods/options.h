@@ -188,10 +188,9 @@ struct MethodOptions {
   Precision precision = Precision::float64;  // --precision, for the kernel methods
   // --intersect-tolerance X: displaced water, the kernel methods' intersection leaves out
   // the shortest waves whose amplitudes sum to at most X pixels of the ray's footprint
-  // (kernel/intersect.glsl; the default is kDefaultIntersectTolerance of
-  // shading/kernel_frame.h); 0: every wave. The reference takes it only when given
-  // (`intersect_tolerance_given`); else every wave (methods/reference.h).
-  double intersect_tolerance = 0.25;
+  // (kernel/intersect.glsl); 0: every wave. Taken only when given
+  // (`intersect_tolerance_given`); else each method's own (intersect_tolerance_for).
+  double intersect_tolerance = 0.25;  // staa's: kDefaultIntersectTolerance (catalog.cpp)
   bool intersect_tolerance_given = false;
   // --cascades fields|waves: point, supersample with T = 1, staa-temporal and staa (flat
   // and displaced water), lean, specaa and bruneton (flat water) shade a scene's lattice
@@ -212,6 +211,18 @@ struct MethodOptions {
   SpecaaOptions specaa;
   BrunetonOptions bruneton;
 };
+
+// The intersection tolerance `method` takes on displaced water (pixels; kernel/intersect.glsl),
+// per pixel (`supersample` and `reference` divide it per sample cell): --intersect-tolerance
+// where given, else 0 (every wave) for the methods whose samples are the scene's radiance
+// along a ray (reference, supersample, point, staa-temporal) and kDefaultIntersectTolerance
+// for `staa`, whose one hit per pixel is its filter's centre. A wave left out of a
+// sample's intersection loses the weighting by projected area that a displaced surface
+// gives its slopes in a grazing view (kernel/visible_normals.glsl), whatever its
+// amplitude: `point` with 0.25 was 2.6% dark on tests/scenes/displaced-far-sky.json
+// (docs/ocean.md); in `staa` the aliasing normals carry that weight, and its centre hit
+// moves by at most the tolerance's share of the footprint.
+double intersect_tolerance_for(const MethodOptions& o, const std::string& method);
 
 // Checks the values of the method flags; throws sg::Error naming the flag
 // ("--specaa-sigma2: must be > 0").

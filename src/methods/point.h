@@ -13,7 +13,7 @@ namespace sg {
 class PointMethod final : public Method {
  public:
   explicit PointMethod(Precision precision = Precision::float64,
-                       double intersect_tolerance = kDefaultIntersectTolerance,
+                       double intersect_tolerance = 0.0,  // every wave (intersect_tolerance_for)
                        bool cascade_fields = true)
       : inputs_(1, precision, intersect_tolerance, 1, cascade_fields, cascade_reads_of("point")) {}
   std::string name() const override { return "point"; }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/error.h"
+#include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
 
 namespace sg {
@@ -46,7 +47,7 @@ ReferenceSettings reference_settings(const MethodOptions& o) {
   rs.only_batch = o.only_batch;
   rs.adaptive = o.adaptive;
   rs.quiet = o.quiet_samples;
-  if (o.intersect_tolerance_given) rs.intersect_tolerance = o.intersect_tolerance;
+  rs.intersect_tolerance = intersect_tolerance_for(o, "reference");
   return rs;
 }
 

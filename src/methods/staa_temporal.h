@@ -17,9 +17,10 @@ namespace sg {
 
 class StaaTemporalMethod final : public Method {
  public:
-  explicit StaaTemporalMethod(int segments, Precision precision = Precision::float64,
-                              double intersect_tolerance = kDefaultIntersectTolerance,
-                              bool cascade_fields = true)
+  explicit StaaTemporalMethod(
+      int segments, Precision precision = Precision::float64,
+      double intersect_tolerance = 0.0,  // every wave (intersect_tolerance_for)
+      bool cascade_fields = true)
       : inputs_(segments, precision, intersect_tolerance, 1, cascade_fields,
                 cascade_reads_of("staa-temporal")) {}
   std::string name() const override { return "staa-temporal"; }

@@ -6,8 +6,9 @@
 //                is the display time t_f, so `--samples 6x6x1` is spatial-only
 //                supersampling with 36 samples, the paper's "32x MSAA"-like baseline;
 //                with T > 1 it samples the shutter like the reference.
-// Their samples see every wave; on displaced water the intersection leaves out the
-// shortest waves as kernel/intersect.glsl allows, with --intersect-tolerance taken per
+// Their samples see every wave, and on displaced water they intersect every wave by
+// default (the scene's exact surface). With --intersect-tolerance given, the intersection
+// leaves out the shortest waves as kernel/intersect.glsl allows, the tolerance taken per
 // sample cell (divided by the larger of S_x, S_y: stratified_intersect_tolerance), so that
 // a hit moves by at most that fraction of the cell its sample stands for.
 // `supersample` with T = 1 reads a scene's lattice cascades from their FFT fields at the
@@ -24,16 +25,17 @@
 
 namespace sg {
 
-// --intersect-tolerance of `o` for one sample of its S_x x S_y x T (pixels).
+// `supersample`'s intersection tolerance under `o` for one sample of its S_x x S_y x T
+// (pixels; 0, every wave, unless --intersect-tolerance is given: intersect_tolerance_for).
 inline double stratified_intersect_tolerance(const MethodOptions& o) {
-  return o.intersect_tolerance / std::max({o.samples.sx, o.samples.sy, 1});
+  return intersect_tolerance_for(o, "supersample") / std::max({o.samples.sx, o.samples.sy, 1});
 }
 
 class StratifiedMethod final : public Method {
  public:
   StratifiedMethod(std::string name, StratifiedSettings settings,
                    Precision precision = Precision::float64,
-                   double intersect_tolerance = kDefaultIntersectTolerance,
+                   double intersect_tolerance = 0.0,  // every wave (intersect_tolerance_for)
                    bool cascade_fields = false)
       : name_(std::move(name)),
         settings_(settings),

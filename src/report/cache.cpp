@@ -19,7 +19,9 @@ namespace {
 // specaa, bruneton, the exact footprint's host finish, the cascades' fields of
 // shading/cascade_fields.h) and the methods' default options (methods/options.h): raise it
 // when a change alters their pictures, so that the frame cache renders them again.
-constexpr int kHostMethodsRevision = 5;
+// 6: point, supersample and staa-temporal intersect displaced water with every wave by
+// default (methods/options.h, intersect_tolerance_for).
+constexpr int kHostMethodsRevision = 6;
 }  // namespace
 
 std::string canonical_label(const std::string& label) {
