@@ -18,6 +18,7 @@
 #include "testing/testing.h"
 
 #include "gl/dispatch.h"
+#include "kernel/kernel_double.h"
 #include "math/rng.h"
 #include "testing/gl_context.h"
 

@@ -44,21 +44,36 @@ SG_FN real fit_beyond(IN(R32Texture2D) table, int base, int first, int n, int a,
   return 2.0 * fit_value(table, base, a, col) - fit_value(table, base, a + step, col);
 }
 
-// The kernels of `count` (1, 3, 5 or 9) for an RDF with standard deviations
-// 0 < sigma_minor <= sigma_major (a ratio within rounding below 1 is taken as 1).
-SG_FN KernelSet elliptical_kernels(IN(R32Texture2D) table, IN(KernelFitInfo) info, int count,
-                                   real sigma_minor, real sigma_major) {
+// `count` kernels of an RDF of axis ratio `ratio`, not yet filled in: offsets and weights
+// 0 (deviations 1, never read past `count`).
+SG_FN KernelSet kernel_set_blank(int count, real ratio) {
   KernelSet set;
   for (int i = 0; i < kMaxKernels; ++i) {
     set.offset[i] = 0.0;
     set.sigma[i] = 1.0;
     set.weight[i] = 0.0;
   }
-  real ratio = max(1.0, sigma_major / sigma_minor);
   set.count = count;
   set.ratio = ratio;
   set.past_threshold = ratio > real(count);
   set.beyond_table = false;
+  return set;
+}
+
+// A vanishing RDF (a point): one kernel of deviation 0 at the centre.
+SG_FN KernelSet point_kernel() {
+  KernelSet set = kernel_set_blank(1, 1.0);
+  set.sigma[0] = 0.0;
+  set.weight[0] = 1.0;
+  return set;
+}
+
+// The kernels of `count` (1, 3, 5 or 9) for an RDF with standard deviations
+// 0 < sigma_minor <= sigma_major (a ratio within rounding below 1 is taken as 1).
+SG_FN KernelSet elliptical_kernels(IN(R32Texture2D) table, IN(KernelFitInfo) info, int count,
+                                   real sigma_minor, real sigma_major) {
+  real ratio = max(1.0, sigma_major / sigma_minor);
+  KernelSet set = kernel_set_blank(count, ratio);
   if (count == 1) {
     set.sigma[0] = sqrt(ratio) * sigma_minor;
     set.weight[0] = 1.0;

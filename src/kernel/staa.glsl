@@ -433,6 +433,10 @@ SG_FN StaaNdf staa_ndf_along_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v
   ndf.mean = (sums.any_alias && p.per_pixel_ndf && p.ndf_mean_shift) ? sums.ndf.mean : vec2(0.0);
   ndf.cov = sums.any_alias ? sym2(sums.ndf.cov) : mat2(0.0);
   if (f.displaced && sums.any_alias) {
+    // On displaced water the aliasing normals as the view sees them at the display time
+    // (visible_normals.glsl, Heitz 2014 Eq. 3): the slopes (m . v)+ weights, about the
+    // pixel's resolved slope -g[K]. Its mean shift moves the whole path, as the per-pixel
+    // NDF's mean does (every instant's view is near the display time's).
     vec2 centre = -sums.path.g[K] + ndf.mean;
     VisibleNormals vn = visible_normals(centre, ndf.cov, v.view[K]);
     ndf.mean += vn.mean - centre;
@@ -635,16 +639,7 @@ SG_FN real staa_kernels_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s
                               bool vanishing) {
   KernelSet ks;
   if (vanishing) {
-    ks.count = 1;
-    for (int i = 0; i < kMaxKernels; ++i) {
-      ks.offset[i] = 0.0;
-      ks.sigma[i] = 0.0;
-      ks.weight[i] = 0.0;
-    }
-    ks.weight[0] = 1.0;
-    ks.ratio = 1.0;
-    ks.past_threshold = false;
-    ks.beyond_table = false;
+    ks = point_kernel();
   } else {
     ks = elliptical_kernels(fits, finfo, staa_kernel_count(p), ax.s2, ax.s1);
   }

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
 #include "math/rng.h"
 #include "shading/kernel_frame.h"

@@ -1,5 +1,6 @@
 #include "methods/host_cascades.h"
 
+#include "kernel/kernel_double.h"
 #include "shading/cascade_fields.h"
 
 namespace sg {

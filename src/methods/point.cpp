@@ -1,5 +1,6 @@
 #include "methods/point.h"
 
+#include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
 
 namespace sg {

@@ -19,6 +19,7 @@
 
 #include "base/error.h"
 #include "engine/render.h"
+#include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
 #include "math/rng.h"
 #include "methods/kernel_inputs.h"

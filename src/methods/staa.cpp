@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
 #include "shading/kernel_table.h"
 #include "shading/path_table.h"

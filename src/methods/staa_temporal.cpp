@@ -1,5 +1,6 @@
 #include "methods/staa_temporal.h"
 
+#include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
 
 namespace sg {

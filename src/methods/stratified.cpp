@@ -1,5 +1,6 @@
 #include "methods/stratified.h"
 
+#include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
 #include "shading/water_geometry.h"
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 
+#include "kernel/kernel_double.h"
 #include "shading/kernel_frame.h"
 
 namespace sg {

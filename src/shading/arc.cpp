@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "kernel/kernel_double.h"
 #include "shading/kernel_frame.h"
 
 namespace sg {

@@ -6,9 +6,14 @@
 
 #include "base/error.h"
 #include "kernel/cpu/wave_sums.h"
+#include "kernel/kernel_double.h"
 #include "scene/camera_path.h"
 
 namespace sg {
+
+int wave_stride(int segments) {
+  return kd::wave_stride_for(segments);
+}
 namespace {
 
 // The wave buffer's sums after its n waves (kernel/waves.glsl): from each position q on,

@@ -23,11 +23,14 @@
 #include <span>
 #include <vector>
 
-#include "kernel/kernel_double.h"
 #include "kernel/kernel_types.h"
 #include "scene/footprint.h"
 #include "scene/model.h"
 #include "shading/cascade_fields.h"
+
+namespace sg::kd {
+struct Footprint;  // kernel/footprint.glsl (kernel/kernel_double.h)
+}  // namespace sg::kd
 
 namespace sg {
 
@@ -66,9 +69,7 @@ using KernelInputsD = KernelInputs<kd::Frame, kd::vec4>;
 using KernelInputsF = KernelInputs<kf::Frame, kf::vec4>;
 
 // Texels per wave for K path segments (kernel/waves.glsl, wave_stride_for: the layout).
-inline int wave_stride(int segments) {
-  return kd::wave_stride_for(segments);
-}
+int wave_stride(int segments);
 
 // The wave buffer's sums (kernel/waves.glsl) for its first n = A.size() waves, of amplitudes
 // A[q] and wave vectors (a[q], b[q]) in buffer order, each `stride` texels: `texels` is

@@ -19,7 +19,6 @@
 #include <span>
 #include <vector>
 
-#include "kernel/kernel_double.h"
 #include "kernel/kernel_types.h"
 #include "shading/kernel_fit.h"
 

@@ -19,9 +19,17 @@
 #include "base/error.h"
 #include "base/fnv1a.h"
 #include "embedded/path_table_sources.h"
+#include "kernel/kernel_double.h"
 #include "shading/disk_gaussian.h"
 
 namespace sg {
+
+double PathTables::distance_node(int i, int k) const {
+  return kd::table_radial_node(extent_[k], double(i) / (p_.n_distance - 1));
+}
+double PathTables::v_node(int j, int k) const {
+  return kd::table_radial_node(extent_[k], double(j) / (p_.n_v - 1));
+}
 namespace {
 
 namespace fs = std::filesystem;

@@ -66,7 +66,6 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/kernel_double.h"
 #include "kernel/kernel_types.h"
 #include "math/vec.h"
 
@@ -154,14 +153,10 @@ class PathTables {
   const PathTableParams& params() const { return p_; }
   double slice_sigma(int k) const { return sigma_[k]; }
   double extent(int k) const { return extent_[k]; }
-  double distance_node(int i, int k) const {
-    return kd::table_radial_node(extent_[k], double(i) / (p_.n_distance - 1));
-  }
+  double distance_node(int i, int k) const;
   double u_node(int i, int k) const { return -extent_[k] * (p_.n_u - 1 - i) / (p_.n_u - 1); }
   double u_cell(int k) const { return extent_[k] / (p_.n_u - 1); }  // the u step of slice k
-  double v_node(int j, int k) const {
-    return kd::table_radial_node(extent_[k], double(j) / (p_.n_v - 1));
-  }
+  double v_node(int j, int k) const;
   float f_node(int i, int k) const { return f_[size_t(k) * p_.n_distance + i]; }
   float s_node(int iu, int iv, int k) const { return s_[(size_t(k) * p_.n_v + iv) * p_.n_u + iu]; }
   size_t bytes() const { return (f_.size() + s_.size()) * sizeof(float); }

@@ -21,6 +21,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "kernel/kernel_double.h"
 #include "math/rng.h"
 #include "scene/light.h"
 #include "shading/arc.h"

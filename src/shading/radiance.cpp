@@ -1,5 +1,6 @@
 #include "shading/radiance.h"
 
+#include "kernel/kernel_double.h"
 #include "shading/kernel_frame.h"
 #include "shading/water_geometry.h"
 

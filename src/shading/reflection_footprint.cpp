@@ -2,6 +2,7 @@
 // resolved waves' gradient and Hessian summed on the host, the derivatives in the kernel.
 #include "shading/reflection_footprint.h"
 
+#include "kernel/kernel_double.h"
 #include "shading/kernel_frame.h"
 
 namespace sg {

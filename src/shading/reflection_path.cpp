@@ -1,5 +1,6 @@
 #include "shading/reflection_path.h"
 
+#include "kernel/kernel_double.h"
 #include "shading/radiance.h"
 
 namespace sg {

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "kernel/kernel_double.h"
 #include "math/vec.h"
 #include "scene/footprint.h"
 #include "scene/model.h"

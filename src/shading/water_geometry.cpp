@@ -4,6 +4,7 @@
 
 #include "base/error.h"
 #include "kernel/cpu/wave_sums.h"
+#include "kernel/kernel_double.h"
 #include "shading/kernel_frame.h"
 
 namespace sg {
