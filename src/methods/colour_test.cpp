@@ -148,7 +148,9 @@ TEST(Colour, SamplingBaselinesSeeTheDisplacedSurfaceWhole) {
     std::printf("displaced-far-sky 96x54: %s mean %.4g (reference %.4g), RMSE %.3g\n", name,
                 e.mean_a, e.mean_b, e.rmse);
     EXPECT_NEAR(e.mean_a / e.mean_b, 1.0, 0.005) << name;
-    if (std::string(name) == "supersample") EXPECT_LT(e.rmse, 5e-4);
+    if (std::string(name) == "supersample") {
+      EXPECT_LT(e.rmse, 5e-4);
+    }
   }
 }
 
