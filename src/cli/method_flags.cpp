@@ -149,8 +149,8 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
          "not (none)");
   app.add_option("--kernels", s.kernels,
                  "staa: circular Gaussians approximating the RDF: 1 (equal-area circle, Sec. "
-                 "3.5), 3, 5 or 9 (Sec. 3.6)")
-      ->capture_default_str()
+                 "3.5), 3, 5 or 9 (Sec. 3.6); default: 3 with a footprint term, 9 (the "
+                 "paper's) with --footprint none")
       ->check(CLI::IsMember({1, 3, 5, 9}));
   app.add_option("--elongation-threshold", s.elongation_threshold,
                  "staa: RDF axis ratio past which the fallback renders (0: the kernel count, "

@@ -8,6 +8,7 @@
 #include "base/error.h"
 #include "cli/args.h"
 #include "methods/method.h"
+#include "methods/staa.h"
 #include "methods/supersample.h"
 
 namespace sg {
@@ -86,6 +87,28 @@ TEST(MethodVariant, IntersectToleranceByMethodUnlessGiven) {
   const MethodVariant ss =
       parse_method_variant("supersample --samples 4x4x1 --intersect-tolerance 1");
   EXPECT_EQ(stratified_intersect_tolerance(ss.options), 0.25);  // per sample cell
+}
+
+TEST(MethodVariant, RdfKernelsByFootprintUnlessGiven) {
+  // Three with a footprint term, the paper's nine with --footprint none (its method), the
+  // flag's count when given; as the kernel's parameters take it, in both precisions.
+  const struct {
+    const char* text;
+    int kernels;
+  } cases[] = {{"staa", 3},
+               {"staa --footprint none", 9},
+               {"staa --footprint exact", 3},
+               {"staa --kernels 9", 9},
+               {"staa --kernels 5", 5},
+               {"staa --footprint none --kernels 3", 3},
+               {"staa --footprint none --kernels 1", 1}};
+  for (const auto& c : cases) {
+    const MethodVariant v = parse_method_variant(c.text);
+    EXPECT_EQ(rdf_kernels(v.options.staa), c.kernels) << c.text;
+    EXPECT_EQ(staa_kernel_params<kd::StaaParams>(v.options.staa).kernels, c.kernels) << c.text;
+    EXPECT_EQ(staa_kernel_params<kf::StaaParams>(v.options.staa).kernels, c.kernels) << c.text;
+  }
+  EXPECT_THROW(parse_method_variant("staa --kernels 0"), Error);
 }
 
 TEST(MethodFlags, EveryFlagNamesTheMethodsItConfigures) {

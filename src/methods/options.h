@@ -47,7 +47,9 @@ struct StaaOptions {
   // --ndf-mean shift|none: whether the per-pixel mean slope of the aliasing waves (B)
   // shifts the NDF's centre.
   bool ndf_mean_shift = true;
-  int kernels = 9;  // --kernels 1|3|5|9: circular Gaussians for the RDF (Sec. 3.5, 3.6)
+  // --kernels 1|3|5|9: circular Gaussians for the RDF (Sec. 3.5, 3.6); 0: the default of
+  // the footprint mode (rdf_kernels below).
+  int kernels = 0;
   // --elongation-threshold X: ratio of the RDF's axes past which the fallback renders
   // (0: the paper's threshold, the kernel count, for 3, 5 or 9 kernels; none for the
   // circular approximation of Sec. 3.5, which the paper uses at any elongation).
@@ -95,6 +97,17 @@ inline constexpr AliasRange kFootprintAliasRange{0.3, 0.8};
 inline AliasRange alias_range(const StaaOptions& o) {
   const AliasRange d = o.footprint == FootprintMode::none ? kPaperAliasRange : kFootprintAliasRange;
   return {o.alias_start >= 0 ? o.alias_start : d.start, o.alias_end >= 0 ? o.alias_end : d.end};
+}
+
+// The RDF's circular kernels that a `staa` variant uses (docs/method.md, "Defaults"): the
+// paper's nine (Sec. 3.6) for `--footprint none`, which is the paper's method; three with a
+// footprint term, whose images are within 0.4% of nine's and whose GL programs run a third
+// of the path integrals (docs/benchmarks.md, "Three kernels by default").
+inline constexpr int kPaperKernels = 9;
+inline constexpr int kFootprintKernels = 3;
+inline int rdf_kernels(const StaaOptions& o) {
+  if (o.kernels > 0) return o.kernels;
+  return o.footprint == FootprintMode::none ? kPaperKernels : kFootprintKernels;
 }
 
 // Whether a `staa` variant takes the per-pixel NDF (docs/method.md, "Defaults").

@@ -18,7 +18,7 @@ P staa_kernel_params(const StaaOptions& o) {
   P p{};
   p.per_pixel_ndf = per_pixel_ndf(o);
   p.ndf_mean_shift = o.ndf_mean_shift;
-  p.kernels = o.kernels;
+  p.kernels = rdf_kernels(o);
   p.elongation_threshold = R(o.elongation_threshold);
   p.fallback_riemann = o.fallback == FallbackMode::riemann;
   p.fallback_along_path = o.fallback_along_path;

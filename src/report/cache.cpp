@@ -21,7 +21,9 @@ namespace {
 // when a change alters their pictures, so that the frame cache renders them again.
 // 6: point, supersample and staa-temporal intersect displaced water with every wave by
 // default (methods/options.h, intersect_tolerance_for).
-constexpr int kHostMethodsRevision = 6;
+// 7: staa's RDF takes three kernels by default with a footprint term (methods/options.h,
+// rdf_kernels).
+constexpr int kHostMethodsRevision = 7;
 }  // namespace
 
 std::string canonical_label(const std::string& label) {
