@@ -79,23 +79,34 @@ SG_FN ReflectionFootprint reflection_footprint(IN(Light) l, IN(Footprint) fp, ve
   return res;
 }
 
-// The same under Phi linearised at the light (rdf.glsl, light_anchor; a valid anchor of
-// the view fp.view): P = J_L (n - n_L), and D's derivatives taken at n_L, where the
-// reflection is the light's centre. Defined whatever the centre normal reflects to.
-SG_FN ReflectionFootprint reflection_footprint_anchored(IN(Light) l, IN(Footprint) fp, vec2 g,
-                                                        vec3 hess, vec2 shift, IN(LightAnchor) a) {
-  ReflectionFootprint res;
-  res.valid = true;
-  res.P = anchored_light_plane(a, -g + shift);
-  res.D = reflection_footprint_through(l, fp, hess, vec3(a.n.x, 1.0, a.n.y));
-  return res;
+// The normal at which reflection_footprint_at takes the chain rule's factors: the light's
+// anchor n_L where `a` is valid (rdf.glsl, light_anchor; a valid anchor of the view
+// fp.view), else the centre normal -g + shift.
+SG_FN vec3 reflection_footprint_normal(vec2 g, vec2 shift, IN(LightAnchor) a) {
+  vec2 n = a.valid ? a.n : -g + shift;
+  return vec3(n.x, 1.0, n.y);
 }
 
-// The anchored footprint where the anchor is valid, else the centre's.
-SG_FN ReflectionFootprint reflection_footprint_at(IN(Light) l, IN(Footprint) fp, vec2 g, vec3 hess,
+// The footprint with D from the chain rule's factors `c`, taken at
+// reflection_footprint_normal(g, shift, a) by the caller (`staa` reads them again along the
+// shutter: one evaluation serves both). Under Phi linearised at the light (a valid) P =
+// J_L (n - n_L) and D's derivatives are n_L's, where the reflection is the light's centre:
+// defined whatever the centre normal reflects to. Otherwise reflection_footprint's, valid
+// where the centre normal reflects toward the light.
+SG_FN ReflectionFootprint reflection_footprint_at(IN(Light) l, IN(Footprint) fp,
+                                                  IN(ReflectionChain) c, vec2 g, vec3 hess,
                                                   vec2 shift, IN(LightAnchor) a) {
-  if (a.valid) return reflection_footprint_anchored(l, fp, g, hess, shift, a);
-  return reflection_footprint(l, fp, g, hess, shift);
+  vec2 n = -g + shift;
+  vec3 r = reflect_view(vec3(n.x, 1.0, n.y), fp.view);
+  ReflectionFootprint res;
+  res.valid = a.valid || dot(r, l.L) > 0.0;
+  res.P = vec2(0.0);
+  res.D = mat2(0.0);
+  if (res.valid) {
+    res.P = a.valid ? anchored_light_plane(a, n) : light_to_plane(l, r);
+    res.D = reflection_chain_d(c, fp, hess);
+  }
+  return res;
 }
 
 // The share of N(p, cov) (light-plane coordinates) whose direction lies below the

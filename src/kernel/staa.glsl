@@ -319,12 +319,15 @@ SG_FN SmoothTerms staa_smooth_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) 
   // the slope across the view only through its square beside 1 + a^2 (smooth_terms.glsl),
   // which a group's moment-matched covariance keeps, so the mixture's shape that matters
   // is its spread along e: the groups cut it at -+0.43 of its deviation (a normal's
-  // terciles). Three evaluations where nine cells took nine; `staa`'s images moved by
-  // about 0.1% of their RMSE against the reference (docs/method.md, "The smooth terms").
+  // terciles). Three evaluations at most, one where the cells agree (every cell then in
+  // group 0, whose moments are the mixture's); `staa`'s images moved by about 0.1% of
+  // their RMSE against the reference when the nine cells' evaluations became the groups'
+  // (docs/method.md, "The smooth terms").
   vec2 vh = vec2(view.x, view.z);
   real vh2 = dot(vh, vh);
   vec2 e = vh2 > 0.0 ? vh * inversesqrt(vh2) : vec2(1.0, 0.0);
   real cut = 0.43 * sqrt(max(dot(e, b_bar * e), 0.0));
+  int group[kMaxBoxCells];
   real count[3];
   vec2 g_m[3];
   mat2 g_w[3];
@@ -335,28 +338,22 @@ SG_FN SmoothTerms staa_smooth_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) 
     g_w[g] = mat2(0.0);
     g_b[g] = mat2(0.0);
   }
-  if (one) {
-    count[0] = real(n * n);
-    g_m[0] = m_bar;
-    g_w[0] = w_bar;
-    g_b[0] = b_bar;
-  } else {
-    for (int c = 0; c < n * n; ++c) {
-      int g = smooth_cell_group(dot(sums.cells.m[c].mean - m_bar, e), cut);
-      count[g] += 1.0;
-      g_m[g] += sums.cells.m[c].mean;
-      g_w[g] += sym2(sums.cells.m[c].cov);
-    }
-    for (int g = 0; g < 3; ++g) {
-      real inv = count[g] > 0.0 ? 1.0 / count[g] : 0.0;
-      g_m[g] *= inv;
-      g_w[g] *= inv;
-    }
-    for (int c = 0; c < n * n; ++c) {
-      int g = smooth_cell_group(dot(sums.cells.m[c].mean - m_bar, e), cut);
-      vec2 dm = sums.cells.m[c].mean - g_m[g];
-      g_b[g] += outerProduct(dm, dm) / count[g];
-    }
+  for (int c = 0; c < n * n; ++c) {
+    int g = one ? 0 : smooth_cell_group(dot(sums.cells.m[c].mean - m_bar, e), cut);
+    group[c] = g;
+    count[g] += 1.0;
+    g_m[g] += sums.cells.m[c].mean;
+    g_w[g] += sym2(sums.cells.m[c].cov);
+  }
+  for (int g = 0; g < 3; ++g) {
+    real inv = count[g] > 0.0 ? 1.0 / count[g] : 0.0;
+    g_m[g] *= inv;
+    g_w[g] *= inv;
+  }
+  for (int c = 0; c < n * n; ++c) {
+    int g = group[c];
+    vec2 dm = sums.cells.m[c].mean - g_m[g];
+    g_b[g] += outerProduct(dm, dm) / count[g];
   }
   // One evaluation a group: one call in a loop (a GL program then holds smooth_terms' code
   // once; llvmpipe runs every copy, taken or not: docs/gpu.md).
@@ -414,16 +411,15 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
 // shutter, the display time's alone. On displaced water under a still camera the instants'
 // points move along the one ray (path_views) and the view stays: their own Hessians.
 SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews) v,
-                                     IN(StaaSums) sums, vec2 mean, mat2 display,
-                                     IN(LightAnchor) a) {
+                                     IN(StaaSums) sums, vec2 mean, mat2 display, IN(LightAnchor) a,
+                                     IN(ReflectionChain) chain) {
   int K = frame_segments(f);
   mat2 cov = display;
   if (!v.camera_moves && f.duration > 0.0) {
     mat2 sum = 0.5 * display;
     // At the light's anchor the chain rule's factors are the display time's at every
-    // instant (the view and n_L do not move): only the Hessian changes.
-    ReflectionChain chain;
-    if (a.valid) chain = reflection_chain(f.light, fp, vec3(a.n.x, 1.0, a.n.y));
+    // instant (the view and n_L do not move): `chain`, the display time's (staa_rdf); only
+    // the Hessian changes.
     for (int k = 0; k < K; ++k) {
       mat2 ck = display;
       if (a.valid) {
@@ -565,14 +561,18 @@ SG_FN StaaRdf staa_rdf(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp, IN(PathV
   rdf.exact = false;
   rdf.D = mat2(0.0);
   if (p.footprint != 0) {
+    // The chain rule's factors once: the display time's D, and at the light's anchor every
+    // instant's along the shutter (staa_footprint_covariance).
+    ReflectionChain chain =
+        reflection_chain(f.light, fp, reflection_footprint_normal(sums.path.g[K], ndf.mean, a));
     ReflectionFootprint rf =
-        reflection_footprint_at(f.light, fp, sums.path.g[K], sums.hess[K], ndf.mean, a);
+        reflection_footprint_at(f.light, fp, chain, sums.path.g[K], sums.hess[K], ndf.mean, a);
     if (rf.valid && p.footprint == 2 && !sums.any_alias) {
       rdf.exact = true;
       rdf.D = rf.D;
     } else if (rf.valid) {
-      rdf.cov +=
-          staa_footprint_covariance(f, fp, v, sums, ndf.mean, rf.D * transpose(rf.D) / 12.0, a);
+      rdf.cov += staa_footprint_covariance(f, fp, v, sums, ndf.mean, rf.D * transpose(rf.D) / 12.0,
+                                           a, chain);
     }
   }
   return rdf;
