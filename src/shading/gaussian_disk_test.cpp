@@ -224,6 +224,58 @@ TEST(GaussianDisk, MassAlongASegmentEqualsTheMeanOverItsInstants) {
   }
 }
 
+TEST(GaussianDisk, MahalanobisCullBoundsEveryInstantsMass) {
+  // staa_light_share's Mahalanobis cull (kernel/staa.glsl): with d the least Mahalanobis
+  // distance of the path of the RDF's centres from the disk's centre, each instant's mass
+  // in the disk is at most exp(-(d - R / s2)^2 / 2). Random elongated covariances (1:1 to
+  // 300:1), segments placed in the whitened frame at a margin d - R / s2 of 0.3 to 6:
+  // kd::path_min_distance through kd::staa_whitening against the whitened segment's own
+  // distance, and the bound against five instants' masses (gaussian_disk_mass, and on
+  // every tenth path adaptive quadrature, chord_mass). Some paths are culled by it where
+  // the axis-wise culls keep them.
+  Pcg32 rng(29, 7);
+  const double R = 0.0047;
+  double tightest = 0;
+  int culled_only_here = 0;
+  for (int q = 0; q < 150; ++q) {
+    const RandomCovariance rc = random_covariance(rng, R, false, 2.5);
+    const kd::PrincipalAxes ax = kd::principal_axes(rc.cov);
+    const vec2 u = ax.u, w(-u.y, u.x);
+    // Whitened endpoints: the nearest point of the segment at distance D from the origin.
+    const double margin =
+        q % 5 == 0 ? kd::kStaaCullTail + 1.0 + 2.0 * rng.uniform() : 0.3 + 5.7 * rng.uniform();
+    const double D = R / ax.s2 + margin;
+    const double phi = kTwoPi * rng.uniform();
+    const vec2 n(std::cos(phi), std::sin(phi)), along(-n.y, n.x);
+    const double t0 = -4.0 * rng.uniform(), t1 = 4.0 * rng.uniform();
+    auto plane = [&](vec2 wp) { return ax.s1 * wp.x * u + ax.s2 * wp.y * w; };
+    kd::StaaPath path;
+    path.centre[0] = plane(D * n + t0 * along);
+    path.centre[1] = plane(D * n + t1 * along);
+    path.valid[0] = path.valid[1] = true;
+    const double d = kd::path_min_distance(path, 1, kd::staa_whitening(ax));
+    ASSERT_NEAR(d, D, 1e-9 * D) << q;
+    const double bound = std::exp(-0.5 * sqr(d - R / ax.s2));
+    for (int k = 0; k < 5; ++k) {
+      const vec2 c = path.centre[0] + (k / 4.0) * (path.centre[1] - path.centre[0]);
+      const double mass =
+          q % 10 == 0 ? chord_mass(c, rc.cov, R) : kd::gaussian_disk_mass(c, rc.cov, R);
+      EXPECT_LE(mass, bound) << q << " k " << k << " margin " << margin;
+      tightest = std::max(tightest, mass / bound);
+    }
+    const double min_minor = kd::path_min_abs_projection(path, 1, w);
+    const double min_major = kd::path_min_abs_projection(path, 1, u);
+    const bool axis_culled = min_minor > R + 12.0 * ax.s2 || min_major > R + 12.0 * ax.s1;
+    if (margin > kd::kStaaCullTail && !axis_culled) ++culled_only_here;
+  }
+  std::printf(
+      "Mahalanobis cull: largest mass / bound %.3g; %d of 30 culled paths kept by the "
+      "axis-wise culls\n",
+      tightest, culled_only_here);
+  EXPECT_GT(tightest, 1e-3);  // the bound is not vacuous on these paths
+  EXPECT_GT(culled_only_here, 0);
+}
+
 TEST(GaussianDisk, MassAlongASegmentOfLengthZeroIsTheInstantsMass) {
   // A segment of length 0 (a pixel whose path stands still) takes the closed form's own
   // limit (segment_chord_average), not the instant's quadrature; so do segments far
