@@ -84,6 +84,15 @@ SG_FN LightAnchor light_anchor(vec3 v, IN(Light) l) {
   return a;
 }
 
+// No anchor: the paper's linearisation at the NDF's centre wherever it is read.
+SG_FN LightAnchor light_anchor_none() {
+  LightAnchor a;
+  a.valid = false;
+  a.n = vec2(0.0);
+  a.J = mat2(0.0);
+  return a;
+}
+
 // The light-plane point of NDF-plane point n under the linearisation at the light.
 SG_FN vec2 anchored_light_plane(IN(LightAnchor) a, vec2 n) {
   return a.J * (n - a.n);

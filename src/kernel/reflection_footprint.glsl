@@ -57,28 +57,6 @@ SG_FN mat2 reflection_chain_d(IN(ReflectionChain) c, IN(Footprint) fp, vec3 hess
                        c.dPdm * reflection_footprint_dm(hess, fp.dp_dpy));
 }
 
-// D with the chain rule's derivatives taken at normal nm (the reflection r of v about it).
-SG_FN mat2 reflection_footprint_through(IN(Light) l, IN(Footprint) fp, vec3 hess, vec3 nm) {
-  return reflection_chain_d(reflection_chain(l, fp, nm), fp, hess);
-}
-
-// g, hess (xx, xz, zz): the resolved waves' gradient and Hessian at the point; shift: the
-// NDF's mean shift.
-SG_FN ReflectionFootprint reflection_footprint(IN(Light) l, IN(Footprint) fp, vec2 g, vec3 hess,
-                                               vec2 shift) {
-  ReflectionFootprint res;
-  res.valid = false;
-  res.P = vec2(0.0);
-  res.D = mat2(0.0);
-  vec3 nm = vec3(-g.x + shift.x, 1.0, -g.y + shift.y);
-  vec3 r = reflect_view(nm, fp.view);
-  if (dot(r, l.L) <= 0.0) return res;
-  res.valid = true;
-  res.P = light_to_plane(l, r);
-  res.D = reflection_footprint_through(l, fp, hess, nm);
-  return res;
-}
-
 // The normal at which reflection_footprint_at takes the chain rule's factors: the light's
 // anchor n_L where `a` is valid (rdf.glsl, light_anchor; a valid anchor of the view
 // fp.view), else the centre normal -g + shift.
@@ -91,8 +69,8 @@ SG_FN vec3 reflection_footprint_normal(vec2 g, vec2 shift, IN(LightAnchor) a) {
 // reflection_footprint_normal(g, shift, a) by the caller (`staa` reads them again along the
 // shutter: one evaluation serves both). Under Phi linearised at the light (a valid) P =
 // J_L (n - n_L) and D's derivatives are n_L's, where the reflection is the light's centre:
-// defined whatever the centre normal reflects to. Otherwise reflection_footprint's, valid
-// where the centre normal reflects toward the light.
+// defined whatever the centre normal reflects to. Without an anchor, the centre's: P the
+// exact light-plane point of its reflection, valid where that reflects toward the light.
 SG_FN ReflectionFootprint reflection_footprint_at(IN(Light) l, IN(Footprint) fp,
                                                   IN(ReflectionChain) c, vec2 g, vec3 hess,
                                                   vec2 shift, IN(LightAnchor) a) {
@@ -107,6 +85,15 @@ SG_FN ReflectionFootprint reflection_footprint_at(IN(Light) l, IN(Footprint) fp,
     res.D = reflection_chain_d(c, fp, hess);
   }
   return res;
+}
+
+// g, hess (xx, xz, zz): the resolved waves' gradient and Hessian at the point; shift: the
+// NDF's mean shift. The footprint at the centre normal, no anchor.
+SG_FN ReflectionFootprint reflection_footprint(IN(Light) l, IN(Footprint) fp, vec2 g, vec3 hess,
+                                               vec2 shift) {
+  LightAnchor none = light_anchor_none();
+  ReflectionChain c = reflection_chain(l, fp, reflection_footprint_normal(g, shift, none));
+  return reflection_footprint_at(l, fp, c, g, hess, shift, none);
 }
 
 // The share of N(p, cov) (light-plane coordinates) whose direction lies below the
