@@ -764,14 +764,9 @@ SG_FN StaaLightShare staa_light_share(IN(R32Texture2D) table_f, IN(R32Texture3D)
   PrincipalAxes ax = principal_axes(cov_r);
   StaaLightShare s;
   s.in_light = 0.0;
-  // The round cull, then the Mahalanobis cull: one call in a loop, so that a GL program
-  // holds path_min_distance's code once (llvmpipe runs every copy: docs/gpu.md).
-  s.culled = false;
-  for (int cull = 0; cull < 2; ++cull) {
-    if (s.culled || (cull == 1 && !(ax.s2 > 0.0))) break;
-    real d = path_min_distance(path, K, cull == 0 ? mat2(1.0) : staa_whitening(ax));
-    s.culled = cull == 0 ? d > R + 12.0 * ax.s1 : d - R / ax.s2 > kStaaCullTail;
-  }
+  s.culled = path_min_distance(path, K, mat2(1.0)) > R + 12.0 * ax.s1;
+  if (!s.culled && ax.s2 > 0.0)
+    s.culled = path_min_distance(path, K, staa_whitening(ax)) - R / ax.s2 > kStaaCullTail;
   s.fallback = false;
   if (!s.culled) {
     int integrator = staa_integrator(p, ax, R);
