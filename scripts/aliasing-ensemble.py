@@ -33,9 +33,12 @@ import json
 import math
 import os
 import random
-import struct
 import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import pfm  # noqa: E402
 
 SCENES = [
     ("simple", "scenes/simple.json"),
@@ -52,17 +55,11 @@ WIDTH, HEIGHT = 160, 90
 
 def read_pfm(path):
     """The first channel of a PFM image, as a flat list (the scenes are grey)."""
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = f.read()
-    channels = 3 if kind == b"PF" else 1
-    n = w * h * channels
-    if len(data) < 4 * n:
-        sys.exit(f"{path}: truncated PFM ({len(data)} bytes for {n} values)")
-    values = struct.unpack(("<" if scale < 0 else ">") + f"{n}f", data[: 4 * n])
-    return list(values[::channels])
+    try:
+        _, _, channels, values = pfm.read(path)
+    except ValueError as e:
+        sys.exit(str(e))
+    return values[::channels]
 
 
 def render(sunglint, scene, method, out, extra):

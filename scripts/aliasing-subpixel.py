@@ -24,9 +24,12 @@ import math
 import os
 import re
 import shlex
-import struct
 import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import pfm  # noqa: E402
 
 SCENES = ["scenes/simple.json", "scenes/smooth.json", "scenes/medium.json", "scenes/high.json",
           "tests/scenes/aliasing/cross-swell-side.json", "tests/scenes/aliasing/grazing-moon.json",
@@ -36,25 +39,6 @@ SCENES = ["scenes/simple.json", "scenes/smooth.json", "scenes/medium.json", "sce
 DEFAULT_VARIANTS = ("staa|1,2,4,8;lean|1,2,4,8;staa@0.3-0.8|2,4,8;staa@0.6-1.6|4,8;"
                     "staa@1.2-3.2|8")
 WIDTH, HEIGHT, FRAMES, REFERENCE = 160, 90, range(0, 10), "reference --samples 32x32x1"
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        ch = 3 if kind == b"PF" else 1
-        data = f.read(w * h * ch * 4)
-    vals = struct.unpack(("<" if scale < 0 else ">") + "f" * (w * h * ch), data)
-    return w, h, ch, list(vals)  # rows bottom to top, as the format stores them
-
-
-def write_pfm(path, w, h, ch, vals):
-    with open(path + ".tmp", "wb") as f:
-        f.write(b"PF\n" if ch == 3 else b"Pf\n")
-        f.write(f"{w} {h}\n-1.0\n".encode())
-        f.write(struct.pack("<" + "f" * len(vals), *vals))
-    os.replace(path + ".tmp", path)
 
 
 def box_down(img, s):
@@ -95,13 +79,13 @@ def reference_frames(cache, name, out):
     found = {}
     for j, key in newest:
         frame = int(re.search(r"\nframe=(\d+)", key).group(1))
-        pfm = os.path.join(out, "ref-" + os.path.basename(j)[:-len(".exr.json")] + ".pfm")
-        if not os.path.exists(pfm):
+        image = os.path.join(out, "ref-" + os.path.basename(j)[:-len(".exr.json")] + ".pfm")
+        if not os.path.exists(image):
             # The format stores rows bottom to top; ffmpeg writes them as they come.
             subprocess.run(["ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-i",
                             j[:-len(".json")], "-vf", "vflip", "-c:v", "pfm", "-f", "image2",
-                            pfm], check=True)
-        found.setdefault(frame, []).append(grey(read_pfm(pfm)))
+                            image], check=True)
+        found.setdefault(frame, []).append(grey(pfm.read(image)))
     return found
 
 
@@ -168,7 +152,7 @@ def main():
                             f"{FRAMES[0]}-{FRAMES[-1]}", "--width", str(WIDTH * s), "--height",
                             str(HEIGHT * s), "-o", pattern, "-q"], check=True,
                            stdout=subprocess.DEVNULL)
-            frames = {f: grey(box_down(read_pfm(pattern % f), s)) for f in FRAMES}
+            frames = {f: grey(box_down(pfm.read(pattern % f), s)) for f in FRAMES}
             r, t, se = metrics(frames, ref, noise)
             rows.append((name, method, s, r, t, se))
             print(f"aliasing-subpixel: {name} {method} x{s}: RMSE {r:.3e} temporal {t:.3e}",

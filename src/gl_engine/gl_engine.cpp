@@ -171,9 +171,11 @@ void GlEngine::upload(const FrameContext& ctx) {
                       split.windows, v_.cascade_fields,
                       gpu_fields ? CascadeData::layout : CascadeData::host, v_.cascade_reads);
   if (v_.entry == KernelEntry::staa) {
-    // The program for this frame's smooth terms (kernel/staa.glsl, staa_frame_terms).
+    // The program for this frame's smooth terms and light (kernel/staa.glsl,
+    // staa_frame_terms, staa_frame_light_sets).
     ProgramOptions o = program_options(v_);
     o.smooth_terms = kf::float_staa_frame_terms(inputs_->frame) ? 1 : 0;
+    o.light_sets = kf::float_staa_frame_light_sets(inputs_->frame) ? 1 : 0;
     use_program(o);
   }
   const int w = ctx.model.width(), h = ctx.model.height();

@@ -37,6 +37,9 @@ struct ProgramOptions {
   // sky gradient, kernel/staa.glsl, staa_frame_terms): 0 or 1, a program for those frames
   // alone (the GL engine picks it per frame); -1, no #define: each frame decides.
   int smooth_terms = -1;
+  // staa: SG_LIGHT_SETS, whether the frames' light disk reaches below the horizon
+  // (kernel/staa.glsl, staa_frame_light_sets): 0, 1, or -1 (each frame decides).
+  int light_sets = -1;
 
   bool operator==(const ProgramOptions&) const = default;
 };

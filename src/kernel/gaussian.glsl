@@ -152,6 +152,55 @@ SG_FN real gaussian_disk_mass(vec2 mean, mat2 cov, real R) {
   return mass;
 }
 
+// The mass of N(mean, cov) in the disk's segment cut off by a half-plane: |p| <= R and
+// a . p + c <= 0 (a != 0). With n = a / |a| and d = c / |a| the segment is n . p <= -d;
+// with t = n . p and s = w . p (w across n) the Gaussian splits into the marginal
+// N(t; m_t, v_t) and the conditional N(s; m_s + r (t - m_t), v_s - r^2 v_t), r = C_ts / v_t,
+// and the mass is the integral over t in [-R, -d] of the marginal times the conditional's
+// mass on the chord [-h, h], h = sqrt(R^2 - t^2). It is taken in u (t = R sin u, dt = h du:
+// smooth at the rim) over the part of [-R, -d] within 9 deviations of m_t, by 30-point
+// Gauss-Legendre (staa: the light's disk where it crosses the horizon; tested against a
+// grid in kernel/disk_segment_test.cpp).
+SG_FN real gaussian_disk_segment_mass(vec2 mean, mat2 cov, real R, vec2 a, real c) {
+  real la = length(a);
+  vec2 n = a / la;
+  real d = c / la;
+  if (-d <= -R) return 0.0;
+  if (-d >= R) return gaussian_disk_mass(mean, cov, R);
+  vec2 w = vec2(-n.y, n.x);
+  real mt = dot(n, mean);
+  real ms = dot(w, mean);
+  real vt = dot(n, cov * n);
+  real vs = dot(w, cov * w);
+  real cts = dot(n, cov * w);
+  if (!(vt > 0.0)) {
+    if (mt > -d || abs(mt) >= R) return 0.0;
+    real h = sqrt(R * R - mt * mt);
+    return normal_interval(-h - ms, h - ms, sqrt(max(vs, 0.0)));
+  }
+  real st = sqrt(vt);
+  real r = cts / vt;
+  real sc = sqrt(max(vs - cts * r, 0.0));
+  real lo = max(-R, mt - 9.0 * st);
+  real hi = min(-d, mt + 9.0 * st);
+  if (!(hi > lo)) return 0.0;
+  real ulo = asin(clamp(lo / R, -1.0, 1.0));
+  real uhi = asin(clamp(hi / R, -1.0, 1.0));
+  real mid = 0.5 * (ulo + uhi);
+  real half_width = 0.5 * (uhi - ulo);
+  real sum = 0.0;
+  SG_COUNT(nodes, 30);
+  for (int q = 0; q < 30; ++q) {
+    real u = mid + half_width * (q < 15 ? kGauss30Node[q] : -kGauss30Node[q - 15]);
+    real t = R * sin(u);
+    real h = R * cos(u);
+    real m = ms + r * (t - mt);
+    real dens = exp(-0.5 * sqr((t - mt) / st)) * kInvSqrtTwoPi / st;
+    sum += kGauss30Weight[q < 15 ? q : q - 15] * dens * normal_interval(-h - m, h - m, sc) * h;
+  }
+  return half_width * sum;
+}
+
 // The mass of N(a + t (b - a), cov) in the disk |p| <= R averaged over t in [0, 1]: Eq. 17's
 // time integral along one straight sub-segment of the path, in closed form in time (the
 // fallback along the path, staa.glsl: a midpoint rule would need a sample per third of the

@@ -24,6 +24,9 @@ StaaResult float_staa_exact_result(const Frame& f, const StaaPath& path, const S
 // Whether frame f's water needs staa's smooth terms (kernel/staa.glsl, staa_frame_terms):
 // the GL engine compiles staa's program for the answer (gl_engine/kernel_program.h).
 bool float_staa_frame_terms(const Frame& f);
+// Whether frame f's light disk reaches below the horizon (kernel/staa.glsl,
+// staa_frame_light_sets): likewise compiled in.
+bool float_staa_frame_light_sets(const Frame& f);
 // For the tests: the replacements of functions GLSL lacks, and the sums over the waves
 // (vectorised when the buffer carries arrays, else the kernel's loops).
 real float_erfc(real x);

@@ -67,7 +67,26 @@ SG_FN mat2 rdf_covariance(mat2 J, mat2 ndf_cov) {
 // grazing or a side light) the density they give the disk is that of a Gaussian whose
 // Jacobian was taken far from the disk. `valid` is false where the half vector is within
 // kMinAnchorCos of the horizon (a normal tilted by more than 84 degrees).
+//
+// First order in the radius is not enough where J_L is nearly singular: where the view
+// ray passes close to the light (h = v + L short), the normal n_L turns the view by
+// almost 180 degrees on a facet seen edge-on (m . v = |h| / 2), and a large disk's
+// preimage under J_L, an ellipse of semi-axis tan_radius / s_min along J_L's weaker
+// direction, reaches slopes far from n_L where Phi has bent away from its tangent (a
+// low sun 6 degrees wide over water 9 degrees from it: the ellipse took in the flat
+// water's normals, whose reflections miss the disk by 8 radii, and gave the pixel half
+// the light). So the anchor is also tested at that axis's two ends n_L +- e: Phi's
+// departure from linear there, |Phi(n_L + e) + Phi(n_L - e)| / 2 (the second-order
+// term; the first cancels), must stay within kAnchorBend of the radius, and both ends
+// must reflect towards the light's side (r . L > 0); elsewhere the anchor is not valid
+// and the RDF is linearised at the NDF's centre (Eqs. 11-16).
+// The test costs two reflections a pixel; the bend is about |Phi''| tan_radius / (2 s_min^2)
+// of the radius, so it is made only where tan_radius / s_min^2 exceeds kAnchorBendCheck (of
+// 1000 random anchors, kernel/rdf_anchor_test.cpp, none was refused below 0.58; the sun's
+// 0.27 degrees reach 0.1 only where s_min < 0.22).
 const real kMinAnchorCos = 0.1;
+const real kAnchorBend = 0.25;
+const real kAnchorBendCheck = 0.1;
 
 struct LightAnchor {
   bool valid;
@@ -81,6 +100,30 @@ SG_FN LightAnchor light_anchor(vec3 v, IN(Light) l) {
   a.valid = h.y > kMinAnchorCos * length(h);
   a.n = a.valid ? vec2(h.x, h.z) / h.y : vec2(0.0);
   a.J = a.valid ? ndf_to_light_plane_jacobian(a.n, v, l) : mat2(0.0);
+  if (a.valid) {
+    // The preimage's longer semi-axis e: J_L^T J_L's smaller eigenvalue s_min^2 and its
+    // eigenvector, |e| = tan_radius / s_min.
+    mat2 S = transpose(a.J) * a.J;
+    real half_trace = 0.5 * (S[0][0] + S[1][1]);
+    real half_diff = 0.5 * (S[0][0] - S[1][1]);
+    real s_min2 = half_trace - sqrt(half_diff * half_diff + S[0][1] * S[0][1]);
+    vec2 u = half_diff >= 0.0 ? vec2(S[0][1], s_min2 - S[0][0]) : vec2(s_min2 - S[1][1], S[0][1]);
+    real lu = length(u);
+    a.valid = s_min2 > 0.0;
+    if (a.valid && l.tan_radius > kAnchorBendCheck * s_min2) {
+      vec2 e = lu > 0.0 ? (l.tan_radius / (sqrt(s_min2) * lu)) * u
+                        : vec2(l.tan_radius / sqrt(s_min2), 0.0);
+      vec3 r_plus = reflect_about_ndf_point(a.n + e, v);
+      vec3 r_minus = reflect_about_ndf_point(a.n - e, v);
+      a.valid = dot(r_plus, l.L) > 0.0 && dot(r_minus, l.L) > 0.0 &&
+                length(light_to_plane(l, r_plus) + light_to_plane(l, r_minus)) <=
+                    2.0 * kAnchorBend * l.tan_radius;
+    }
+    if (!a.valid) {
+      a.n = vec2(0.0);
+      a.J = mat2(0.0);
+    }
+  }
   return a;
 }
 

@@ -106,3 +106,23 @@ SG_FN real horizon_share(IN(Light) l, vec2 p, mat2 cov) {
   if (dot(g, g) < 1e-24) return l.L.y > 0.0 ? 0.0 : 1.0;
   return gaussian_half_plane_mass(p, cov, g, l.L.y);
 }
+
+// The mass of the Gaussian NDF N(n, cov) whose normals reflect unit view v (v.y > 0) below
+// the horizon. A normal m = (n.x, 1, n.y) reflects v to r.y = 2 (m . v) / (m . m) - v.y
+// (Eq. 10), which is <= 0 where
+//     v.y (1 + |n|^2) - 2 (n . v_h + v.y) >= 0,  v_h = (v.x, v.z):
+// outside the circle of centre c = v_h / v.y and radius 1 / v.y (the flat normal lies
+// inside it, 1 / v.y - |c| ~ v.y / 2 from its edge at a grazing view). The circle is
+// taken as its tangent line at the point nearest n, and the share is the Gaussian's mass
+// beyond that line (gaussian.glsl, one erfc). The radius is 1 / v.y: at a grazing view,
+// where the share is neither 0 nor 1, the circle is nearly its tangent over the NDF's
+// width; at a steep view it lies many deviations out.
+SG_FN real ndf_below_horizon_share(vec3 v, vec2 n, mat2 cov) {
+  real inv_y = 1.0 / max(v.y, 1e-6);
+  vec2 c = vec2(v.x, v.z) * inv_y;
+  vec2 d = n - c;
+  real dd = dot(d, d);
+  vec2 u = dd > 0.0 ? d * inversesqrt(dd) : vec2(1.0, 0.0);
+  // Below: u . (n - c) >= 1 / v.y, i.e. -u . n + (u . c + 1 / v.y) <= 0.
+  return gaussian_half_plane_mass(n, cov, -u, dot(u, c) + inv_y);
+}

@@ -151,6 +151,18 @@ SG_FN bool staa_frame_terms(IN(Frame) f) {
 #endif
 }
 
+// Whether the frame's light is lower than its radius, so that part of its disk lies below
+// the horizon and comes off the light's share (staa_light_below_horizon). Compiled in
+// like staa_frame_terms (SG_LIGHT_SETS 0 or 1, gl_engine/kernel_program.h): the segment's
+// quadrature leaves the programs of the frames whose disk clears the horizon.
+SG_FN bool staa_frame_light_sets(IN(Frame) f) {
+#ifndef SG_LIGHT_SETS
+  return f.light.L.y < f.light.tan_radius * length(vec2(f.light.e1.y, f.light.e2.y));
+#else
+  return SG_LIGHT_SETS != 0;
+#endif
+}
+
 // The smooth terms' cells per side for this frame: none with --smooth-terms mean, and
 // none where the frame needs no terms (staa_frame_terms); else the option's.
 SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
@@ -522,12 +534,40 @@ SG_FN LightAnchor staa_light_path(IN(Frame) f, IN(StaaParams) p, IN(PathViews) v
   return a;
 }
 
+// The share of the pixel's normals that reflect the view below the horizon, in the NDF
+// plane (rdf.glsl, ndf_below_horizon_share), for a pixel whose reflection turns away from
+// the light (no light plane to take it on, staa_below_share): N(n_k, Sigma) with
+// n_k = -g_k + shift the resolved normal at instant k and Sigma the aliasing waves'
+// covariance plus, with a footprint, the resolved normals' spread over the pixel square,
+// (dn/dpx dn/dpx^T + dn/dpy dn/dpy^T) / 12 with dn/dp = -(H dX/dp)
+// (reflection_footprint.glsl). Averaged over the path's instants, as the light's share is.
+SG_FN real staa_below_share_ndf(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp, IN(PathViews) v,
+                                IN(StaaSums) sums, IN(StaaNdf) ndf) {
+  int K = frame_segments(f);
+  mat2 cov = ndf.cov;
+  if (p.footprint != 0) {
+    vec3 ax = reflection_footprint_dm(sums.hess[K], fp.dp_dpx);
+    vec3 ay = reflection_footprint_dm(sums.hess[K], fp.dp_dpy);
+    vec2 a = vec2(ax.x, ax.z);
+    vec2 b = vec2(ay.x, ay.z);
+    cov += (1.0 / 12.0) * mat2(a.x * a.x + b.x * b.x, a.x * a.y + b.x * b.y, a.x * a.y + b.x * b.y,
+                               a.y * a.y + b.y * b.y);
+  }
+  real below = 0.0;
+  for (int k = 0; k <= K; ++k)
+    below += ndf_below_horizon_share(v.view[k], -sums.path.g[k] + ndf.mean, cov);
+  return below / real(K + 1);
+}
+
 // Stage c: the Fresnel factor and the sky's split at the centre normal; the smooth terms
 // over the normals (smooth_terms.glsl) when they are on, which also give the share below
-// the horizon; without them, a reflection turned away from the light is below the
-// horizon or not by its centre alone.
-SG_FN void staa_centre_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) sums, vec3 view,
-                             IN(StaaNdf) ndf, bool toward_light, INOUT(StaaResult) res) {
+// the horizon; without them, the share below the horizon of a reflection turned away from
+// the light from the NDF plane (staa_below_share_ndf; one turned towards it takes it on
+// the light plane in staa_finish).
+SG_FN void staa_centre_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) sums, IN(Footprint) fp,
+                             IN(PathViews) v, IN(StaaNdf) ndf, bool toward_light,
+                             INOUT(StaaResult) res) {
+  vec3 view = fp.view;
   vec3 n_now = normalize(vec3(ndf.now.x, 1.0, ndf.now.y));
   res.fresnel = fresnel_factor(f.fresnel, dot(n_now, view));
   res.sky_y = reflect_view(n_now, view).y;
@@ -536,7 +576,7 @@ SG_FN void staa_centre_terms(IN(Frame) f, IN(StaaParams) p, IN(StaaSums) sums, v
     res.terms_valid = true;
     res.below = 1.0 - res.terms.above;
   } else if (!toward_light) {
-    res.below = reflect_about_ndf_point(ndf.now, view).y <= 0.0 ? 1.0 : 0.0;
+    res.below = staa_below_share_ndf(f, p, fp, v, sums, ndf);
   }
 }
 
@@ -731,6 +771,27 @@ SG_FN real staa_kernels_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s
   return in_light;
 }
 
+// The part of stage f's mass in the disk that lies below the horizon, where the light has
+// set behind the sea (a low sun or moon wider than its height): reflections there meet
+// the water, not the light, and the spec gives them the sea. On the light plane the
+// horizon is the line L.y + p . (e1.y, e2.y) = 0 (reflection_footprint.glsl,
+// horizon_share), which cuts the disk where the light is lower than its radius; the RDF's
+// mass in that segment (gaussian.glsl, gaussian_disk_segment_mass), averaged over the
+// path's valid instants as the below share is, comes off the light's share. Called only in
+// frames whose disk reaches below the horizon (staa_frame_light_sets).
+SG_FN real staa_light_below_horizon(IN(Frame) f, IN(StaaPath) path, mat2 cov_r) {
+  vec2 g = vec2(f.light.e1.y, f.light.e2.y);
+  real R = f.light.tan_radius;
+  real below = 0.0;
+  int counted = 0;
+  for (int k = 0; k <= frame_segments(f); ++k) {
+    if (!path.valid[k]) continue;
+    below += gaussian_disk_segment_mass(path.centre[k], cov_r, R, g, f.light.L.y);
+    counted += 1;
+  }
+  return counted > 0 ? below / real(counted) : 0.0;
+}
+
 // Stage f: the light's share, the RDF's time-averaged mass in the disk, before the clamp
 // to what the horizon leaves. Culls first: when every point of the centres' path is
 // further from the disk than its radius plus 12 major standard deviations, the mass is
@@ -803,7 +864,7 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     res.hit = true;
     res.aliasing = sums.any_alias;
     StaaNdf ndf = staa_ndf_along_path(f, p, v, sums, path);
-    staa_centre_terms(f, p, sums, fp.view, ndf, path.valid[K], res);
+    staa_centre_terms(f, p, sums, fp, v, ndf, path.valid[K], res);
     StaaPath light_path = path;
     LightAnchor a = staa_light_path(f, p, v, sums, ndf, light_path);
     StaaRdf rdf;
@@ -833,7 +894,10 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
         StaaLightShare s =
             staa_light_share(table_f, table_s, tinfo, fits, finfo, f, p, light_path, rdf.cov);
         res.fallback = s.fallback;
-        res.in_light = s.culled ? 0.0 : clamp(s.in_light, 0.0, 1.0 - res.below);
+        real in_light = s.culled ? 0.0 : s.in_light;
+        if (!s.culled && staa_frame_light_sets(f))
+          in_light -= staa_light_below_horizon(f, light_path, rdf.cov);
+        res.in_light = clamp(in_light, 0.0, 1.0 - res.below);
       }
       res.weights = staa_weights(f, res);
     }

@@ -16,7 +16,6 @@ correct renderers may differ by their rounding; the test leaves those few pixels
 Standard library only.
 """
 import math
-import struct
 
 R0 = 0.02  # Schlick's reflectance at normal incidence (the spec's value)
 # What two correct renderers may differ by, for the conditioning test of a hit (hit_is_unstable):
@@ -100,6 +99,7 @@ class Scene:
 
         an = d.get("animation", {})
         self.t0, self.fps = float(an.get("t0", 0.0)), float(an.get("fps", 30))
+        self.shutter = float(an.get("shutter", 1.0))  # the interval [t_f - shutter / fps, t_f]
 
     # ---- time and camera ----------------------------------------------------------------
     def display_time(self, frame):
@@ -309,34 +309,3 @@ class Notes:
     def saw(self, what):
         self.seen = what
 
-
-def read_pfm(path):
-    """A PFM image as image[j][i] = (r, g, b), row 0 at the top. PFM: "PF" (RGB) or "Pf"
-    (grey), then width height, then a scale whose sign gives the byte order (negative: little
-    endian), then float32 rows from the bottom to the top."""
-    with open(path, "rb") as f:
-        data = f.read()
-    fields, pos = [], 0
-    while len(fields) < 4:  # four whitespace-separated fields, then one whitespace byte
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        end = pos
-        while not data[end:end + 1].isspace():
-            end += 1
-        fields.append(data[pos:end])
-        pos = end
-    pos += 1
-    kind, scale = fields[0].decode(), float(fields[3])
-    width, height = int(fields[1]), int(fields[2])
-    if kind not in ("PF", "Pf"):
-        raise ValueError("%s: not a PFM file" % path)
-    channels = 3 if kind == "PF" else 1
-    n = width * height * channels
-    vals = struct.unpack(("<" if scale < 0 else ">") + "%df" % n, data[pos:pos + 4 * n])
-    image = [[None] * width for _ in range(height)]
-    for row in range(height):
-        j = height - 1 - row
-        for i in range(width):
-            k = (row * width + i) * channels
-            image[j][i] = tuple(vals[k:k + 3]) if channels == 3 else (vals[k],) * 3
-    return image

@@ -30,6 +30,9 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import spec_point  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import pfm  # noqa: E402
+
 TOLERANCE = 1e-5      # relative to max(1, |value|); PFM holds float32 (6e-8 relative)
 MARGIN = 1e-7         # rad (sine of an angle): closer to a discontinuity is left out
 MAX_EXCLUDED = 0.01   # of all pixels
@@ -230,7 +233,7 @@ def check_scene(sunglint, outdir, name, scene, frame, total, failures):
         print("%-49s sunglint exited %d" % (name, run.returncode))
         failures.append("%s: sunglint exited %d: %s" % (name, run.returncode, run.stderr.strip()))
         return
-    theirs = spec_point.read_pfm(out)
+    theirs = pfm.read_rows(out)
     sc = spec_point.Scene(scene)
     mine, notes = sc.render_point(frame)
     if len(theirs) != sc.height or len(theirs[0]) != sc.width:

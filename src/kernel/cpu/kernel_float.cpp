@@ -41,6 +41,9 @@ StaaResult float_staa_exact_result(const Frame& f, const StaaPath& path, const S
 bool float_staa_frame_terms(const Frame& f) {
   return staa_frame_terms(f);
 }
+bool float_staa_frame_light_sets(const Frame& f) {
+  return staa_frame_light_sets(f);
+}
 real float_erfc(real x) {
   return erfc(x);
 }
