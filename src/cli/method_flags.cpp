@@ -116,22 +116,23 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->check(integer_in(0, std::numeric_limits<long long>::max()));
   choice(app, "--precision", o.precision,
          {{"double", Precision::float64}, {"float", Precision::float32}},
-         "point, supersample, reference, staa-temporal, staa: the shading kernel's precision on "
-         "the CPU (float is what a GPU computes)");
+         "point, supersample, reference, staa-temporal, staa, specaa: the shading kernel's "
+         "precision on the CPU (float is what a GPU computes)");
   f.intersect_tolerance_option =
-      app.add_option("--intersect-tolerance", o.intersect_tolerance,
-                     "point, supersample, reference, staa-temporal, staa on displaced water: "
-                     "leave out of the intersection the shortest waves whose amplitudes sum to "
-                     "at most this many pixels of the ray's footprint (0: every wave, the "
-                     "default of all but staa, whose default is 0.25)")
+      app.add_option(
+             "--intersect-tolerance", o.intersect_tolerance,
+             "point, supersample, reference, staa-temporal, staa, specaa on displaced water: "
+             "leave out of the intersection the shortest waves whose amplitudes sum to "
+             "at most this many pixels of the ray's footprint (0: every wave, the "
+             "default of all but staa, whose default is 0.25)")
           ->check(number_in(0, 16));
   choice(app, "--cascades", o.cascade_fields, {{"fields", true}, {"waves", false}},
-         "point, supersample with T = 1, staa-temporal, staa (flat and displaced water), lean, "
-         "specaa, bruneton (flat water): shade lattice cascades from their FFT fields (a cost "
+         "point, supersample with T = 1, staa-temporal, staa, specaa (flat and displaced water), "
+         "lean, bruneton (flat water): shade lattice cascades from their FFT fields (a cost "
          "fixed per cascade) or as their lattice's sines among the waves (exact, a cost that "
          "follows the waves)");
   choice(app, "--cascade-fft", o.cascade_fft_gpu, {{"gpu", true}, {"host", false}},
-         "point, supersample, staa-temporal, staa on the GL engine with --cascades fields: "
+         "point, supersample, staa-temporal, staa, specaa on the GL engine with --cascades fields: "
          "transform the cascades each frame on the GPU, into the wave buffer, or on the host "
          "(uploaded); the CPU engine transforms on the host");
 
@@ -254,8 +255,8 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
 }
 
 static void scope_method_flags(const std::vector<const CLI::Option*>& options, MethodFlags& f) {
-  const std::vector<std::string> kernel = {"point", "supersample", "reference", "staa-temporal",
-                                           "staa"};
+  const std::vector<std::string> kernel = {"point",         "supersample", "reference",
+                                           "staa-temporal", "staa",        "specaa"};
   const std::vector<std::string> sampling = {"supersample", "reference"};
   const std::vector<std::string> staa_both = {"staa", "staa-temporal"};
   const std::map<std::string, std::vector<std::string>> takers = {
@@ -269,7 +270,7 @@ static void scope_method_flags(const std::vector<const CLI::Option*>& options, M
       {"--segments", staa_both},
       {"--cascades",
        {"point", "supersample", "staa-temporal", "staa", "lean", "specaa", "bruneton"}},
-      {"--cascade-fft", {"point", "supersample", "staa-temporal", "staa"}},
+      {"--cascade-fft", {"point", "supersample", "staa-temporal", "staa", "specaa"}},
   };
   // staa's own (methods/staa.h).
   const std::vector<std::string> staa = {"--ndf",

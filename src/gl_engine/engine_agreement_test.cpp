@@ -5,7 +5,8 @@
 // Fresnel, sky gradients, colour, displaced water, low and far cameras, wild times; every
 // third one's waves a generated sea of lattice cascades, with_cascades) at 24x16, one frame
 // each, every method of the GL engine on both engines:
-//   - point, supersample (2x2x2), staa-temporal, staa: the GL image against the CPU engine
+//   - point, supersample (2x2x2), staa-temporal, staa, specaa (its quads' derivatives, the
+//     GL's exchanged in shared memory, the CPU's in its tiles): the GL image against the CPU engine
 //     in float, within float's tolerance: at most 2% of the values (and at least one) may
 //     differ by more than 1e-3 of the image's largest value (a binary test at the disk's
 //     rim or a displaced ray's crest that float rounding tips either way), and the RMSE of
@@ -178,7 +179,7 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   MethodOptions ro = of;
   ro.samples = {2, 2, 1};
   ro.batches = 8;
-  const char* kDeterministic[] = {"point", "supersample", "staa-temporal", "staa"};
+  const char* kDeterministic[] = {"point", "supersample", "staa-temporal", "staa", "specaa"};
   std::map<std::string, std::unique_ptr<Method>> gl, cpu, cpu_double;
   for (const char* n : kDeterministic) {
     gl[n] = make_method_on(Engine::gl, n, testing::with_tables(o));

@@ -11,6 +11,7 @@
 #include "gl_engine/uniforms.h"
 #include "kernel/kernel_float.h"
 #include "methods/reference.h"
+#include "methods/specaa.h"
 #include "methods/staa.h"
 #include "methods/supersample.h"
 #include "shading/kernel_frame.h"
@@ -46,7 +47,7 @@ int pass_samples(int waves, int segments, bool displaced, int cascades) {
 }
 
 const char* gl_methods() {
-  return "point, supersample, reference, staa-temporal, staa";
+  return "point, supersample, reference, staa-temporal, staa, specaa";
 }
 
 GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
@@ -55,7 +56,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   v.intersect_tolerance = intersect_tolerance_for(o, method);
   v.cascade_fields =
       o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa" ||
-                           (method == "supersample" && o.samples.st == 1));
+                           method == "specaa" || (method == "supersample" && o.samples.st == 1));
   v.cascade_fft_gpu = o.cascade_fft_gpu;
   v.cascade_reads = cascade_reads_of(method);
   if (method == "point") {
@@ -93,6 +94,9 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     v.entry = KernelEntry::staa;
     v.segments = o.staa.segments;
     v.params = staa_kernel_params<kf::StaaParams>(o.staa);
+  } else if (method == "specaa") {
+    v.entry = KernelEntry::specaa;
+    v.specaa = specaa_kernel_params<kf::SpecaaParams>(o.specaa);
   } else {
     throw Error("--method " + method + ": not on the GL engine (it runs " + gl_methods() +
                 "; use --engine cpu)");
@@ -107,6 +111,7 @@ ProgramOptions program_options(const GlVariant& v) {
   o.fallback_along_path = v.params.fallback_along_path;
   o.smooth_cells = v.params.smooth_cells;
   o.kernels = v.params.kernels;
+  o.specaa_quad = v.specaa.quad;
   return o;
 }
 
@@ -221,6 +226,7 @@ void GlEngine::upload(const FrameContext& ctx) {
     pass_samples_ = pass_samples(inputs_->frame.wave_count, segments, inputs_->frame.displaced,
                                  inputs_->frame.cascade_count);
   }
+  if (v_.entry == KernelEntry::specaa) set_uniforms(u, "sparams", v_.specaa);
   if (v_.entry == KernelEntry::staa) {
     set_uniforms(u, "params", v_.params);
     set_uniforms(u, "tinfo", tinfo_);

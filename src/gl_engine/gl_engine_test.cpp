@@ -51,8 +51,8 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     const SceneModel* m;
   };
   // Every program the suite runs (this test is the fixture that compiles them first:
-  // src/CMakeLists.txt, gl_programs): the five methods with the default options, and staa's
-  // with 2 path segments.
+  // src/CMakeLists.txt, gl_programs): the six methods with the default options, staa's
+  // with 2 path segments, specaa's with its analytic derivatives.
   std::vector<Case> cases = {{"point", {}, &plain_model},     {"supersample", {}, &plain_model},
                              {"reference", {}, &plain_model}, {"staa-temporal", {}, &plain_model},
                              {"staa", {}, &plain_model},      {"staa", {}, &terms_model}};
@@ -63,6 +63,10 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
   cases.push_back({"staa", two, &plain_model});
   cases.push_back({"staa", two, &terms_model});
   cases.push_back({"staa-temporal", two, &plain_model});
+  cases.push_back({"specaa", {}, &plain_model});
+  MethodOptions analytic;
+  analytic.specaa.derivatives = SpecaaDerivatives::analytic;
+  cases.push_back({"specaa", analytic, &plain_model});
   for (const Case& c : cases) {
     const SceneModel& m = *c.m;
     gl_engine::GlEngine engine(c.name, testing::with_tables(c.o));
@@ -80,6 +84,7 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     probe.set("ref_pass", 0);  // the sampling methods' passes (GlEngine::run)
     probe.set("pass_range", kf::ivec2(0, 0));
     gl_engine::set_uniforms(probe, "params", v.params);
+    gl_engine::set_uniforms(probe, "sparams", v.specaa);
     gl_engine::set_uniforms(probe, "tinfo", kf::PathTableInfo{});
     gl_engine::set_uniforms(probe, "finfo", kf::KernelFitInfo{});
     const std::vector<std::string> active = gl_engine::active_uniforms(engine.program());
@@ -137,8 +142,15 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineOnTheSharedScenes) {
     none.staa.footprint = FootprintMode::none;
     MethodOptions per_pixel;
     per_pixel.staa.ndf = NdfMode::per_pixel;
-    for (const auto& [name, o] : std::vector<std::pair<std::string, MethodOptions>>{
-             {"staa", {}}, {"staa", none}, {"staa", per_pixel}, {"staa-temporal", {}}}) {
+    MethodOptions analytic;
+    analytic.specaa.derivatives = SpecaaDerivatives::analytic;
+    for (const auto& [name, o] :
+         std::vector<std::pair<std::string, MethodOptions>>{{"staa", {}},
+                                                            {"staa", none},
+                                                            {"staa", per_pixel},
+                                                            {"staa-temporal", {}},
+                                                            {"specaa", {}},
+                                                            {"specaa", analytic}}) {
       const Comparison c = compare_engines(scene, name, o, ref);
       EXPECT_LE(c.gl_cpu, 0.1 * c.cpu_ref) << scene << " " << name;
     }
@@ -537,7 +549,7 @@ TEST_F(GlEngineTest, DisplacedMarchAdvancesFarFromTheCameraInFloat) {
 
 TEST(GlEngine, RefusesWhatItLacksNamingIt) {
   MethodOptions o;
-  for (const char* m : {"lean", "taa", "microspec", "specaa", "bruneton"}) {
+  for (const char* m : {"lean", "taa", "microspec", "bruneton"}) {
     try {
       gl_engine::gl_variant(m, o);
       ADD_FAILURE() << m << " accepted";

@@ -35,6 +35,8 @@ const char* entry_name(KernelEntry e) {
       return "staa-temporal";
     case KernelEntry::staa:
       return "staa";
+    case KernelEntry::specaa:
+      return "specaa";
   }
   return "?";
 }
@@ -51,6 +53,8 @@ const char* entry_define(KernelEntry e) {
       return "SG_METHOD_STAA_TEMPORAL";
     case KernelEntry::staa:
       return "SG_METHOD_STAA";
+    case KernelEntry::specaa:
+      return "SG_METHOD_SPECAA";
   }
   return "";
 }
@@ -59,6 +63,8 @@ std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o) {
   std::string h = std::string("#define ") + entry_define(entry) + "\n#define SG_MAX_SEGMENTS " +
                   std::to_string(o.segments) + "\n";
   if (entry != KernelEntry::reference) h += "#define SG_EXACT_SEGMENTS 1\n";
+  if (entry == KernelEntry::specaa)
+    h += std::string("#define SG_SPECAA_QUAD ") + (o.specaa_quad ? "1" : "0") + "\n";
   if (entry == KernelEntry::staa) {
     h += "#define SG_SMOOTH_CELLS " + std::to_string(o.smooth_cells) + "\n";
     h += "#define SG_STAA_KERNELS " + std::to_string(o.kernels) + "\n";

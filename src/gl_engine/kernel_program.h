@@ -11,7 +11,7 @@
 
 namespace sg::gl_engine {
 
-enum class KernelEntry { point, stratified, reference, staa_temporal, staa };
+enum class KernelEntry { point, stratified, reference, staa_temporal, staa, specaa };
 
 const char* entry_name(KernelEntry e);
 
@@ -40,6 +40,9 @@ struct ProgramOptions {
   // staa: SG_LIGHT_SETS, whether the frames' light disk reaches below the horizon
   // (kernel/staa.glsl, staa_frame_light_sets): 0, 1, or -1 (each frame decides).
   int light_sets = -1;
+  // specaa: SG_SPECAA_QUAD, the quads' derivatives (1) or the analytic ones (0): a program
+  // holds the one it runs.
+  bool specaa_quad = true;
 
   bool operator==(const ProgramOptions&) const = default;
 };

@@ -95,6 +95,13 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::StaaParams& 
   u.set(n + ".rdf_at_light", p.rdf_at_light);
 }
 
+void set_uniforms(UniformWriter& u, const std::string& n, const kf::SpecaaParams& p) {
+  u.set(n + ".sigma2", p.sigma2);
+  u.set(n + ".kappa", p.kappa);
+  u.set(n + ".full_kernel", p.full_kernel);
+  u.set(n + ".quad", p.quad);
+}
+
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::SampleCounts& c) {
   u.set(n + ".sx", c.sx);
   u.set(n + ".sy", c.sy);

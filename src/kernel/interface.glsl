@@ -148,6 +148,35 @@ struct StaaParams {
   bool rdf_at_light;     // --rdf-at light: Phi linearised at the light (else at the NDF's centre)
 };
 
+// `specaa`'s options (methods/options.h, SpecaaOptions; specaa.glsl).
+struct SpecaaParams {
+  real sigma2;       // --specaa-sigma2: the pixel filter's variance, pixels^2
+  real kappa;        // --specaa-kappa: the clamp of the kernel's roughness alpha^2
+  bool full_kernel;  // --specaa-kernel full (else rect)
+  bool quad;         // --specaa-derivatives quad (else analytic)
+};
+
+// What `specaa` knows of one image-plane point (specaa.glsl, specaa_sample): the water
+// point and its footprint, the height gradient there and the projected half vector.
+// A quad's pixels exchange h_perp (the CPU's tiles, the GL engine's shared memory).
+struct SpecaaSample {
+  bool hit;
+  bool at_camera;  // the camera under the displaced surface: no footprint (Footprint)
+  vec3 point;      // camera-relative
+  vec3 view;
+  vec3 dp_dpx;
+  vec3 dp_dpy;
+  vec2 g;       // (dh/dx, dh/dz) at the point
+  vec2 h_perp;  // the half vector in the normal's shading frame, (h . t, h . b)
+};
+
+// A `specaa` pixel: its weights, and whether its model failed there (the camera under the
+// surface, a lobe whose shading is not finite) so that it took the centre ray's radiance.
+struct SpecaaResult {
+  vec4 weights;
+  bool fallback;
+};
+
 // `reference` and `supersample`: samples per pixel (sampling.glsl).
 struct SampleCounts {
   int sx;

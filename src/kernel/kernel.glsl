@@ -36,6 +36,7 @@
 #include "kernel/staa_waves.glsl"
 #include "kernel/staa.glsl"
 #include "kernel/sampling.glsl"
+#include "kernel/specaa.glsl"
 #include "kernel/reference_path.glsl"
 #include "kernel/poly6_roots.glsl"
 #include "kernel/light_conic.glsl"

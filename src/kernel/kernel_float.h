@@ -15,6 +15,14 @@ vec4 float_stratified_pixel(const WaveBuffer& waves, const Frame& f, const Sampl
 ReferenceResult float_reference_pixel(const WaveBuffer& waves, const Frame& f,
                                       const ReferenceParams& n, int i, int j);
 vec4 float_staa_temporal_pixel(const WaveBuffer& waves, const Frame& f, int i, int j);
+// `specaa` (kernel/specaa.glsl): a sample, a pixel from its sample and its quad
+// neighbours', a pixel alone.
+SpecaaSample float_specaa_sample(const WaveBuffer& waves, const Frame& f, real px, real py);
+SpecaaResult float_specaa_shade(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
+                                const SpecaaSample& own, const SpecaaSample& nx,
+                                const SpecaaSample& ny, int i, int j);
+SpecaaResult float_specaa_pixel(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
+                                int i, int j);
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,

@@ -27,3 +27,10 @@ SG_FN vec2 light_to_plane(IN(Light) l, vec3 r) {
 SG_FN real elevation_on_plane(IN(Light) l, vec2 p) {
   return l.L.y + p.x * l.e1.y + p.y * l.e2.y;
 }
+
+// The horizon's line on the light plane, elevation_on_plane(p) = L.y + p . a = 0: its
+// normal a = (e1.y, e2.y) (zero for a light at the zenith, whose plane the horizon never
+// meets).
+SG_FN vec2 light_horizon_normal(IN(Light) l) {
+  return vec2(l.e1.y, l.e2.y);
+}

@@ -2,7 +2,7 @@
 // shared scenes at 160x90, frames 0-9, for every kernel method: the float images' error
 // against the double ones must be small beside the double images' own error against the
 // reference (docs/porting.md states the measured figures).
-//  - staa, staa-temporal (smooth in the waves): RMSE(float - double) <= 0.05
+//  - staa, staa-temporal, specaa (smooth in the waves): RMSE(float - double) <= 0.05
 //    RMSE(double - reference);
 //  - point and supersample (a binary test at the disk's rim per sample, where float's
 //    rounding flips a few samples, each by a whole pixel's or sample's worth): at most 0.5%
@@ -59,6 +59,7 @@ TEST(KernelPrecision, FloatAgreesWithDoubleWithinTheMethodsOwnError) {
          o.staa.ndf = NdfMode::uniform;
        },
        false},
+      {"specaa", "specaa", [](MethodOptions&) {}, false},
       {"supersample 6x6x1", "supersample",
        [](MethodOptions& o) {
          o.samples = {6, 6, 1};

@@ -102,7 +102,7 @@ SG_FN ReflectionFootprint reflection_footprint(IN(Light) l, IN(Footprint) fp, ve
 // Gaussian's mass in that half-plane (gaussian.glsl). A light at the zenith has the
 // horizon at infinity on its plane.
 SG_FN real horizon_share(IN(Light) l, vec2 p, mat2 cov) {
-  vec2 g = vec2(l.e1.y, l.e2.y);
+  vec2 g = light_horizon_normal(l);
   if (dot(g, g) < 1e-24) return l.L.y > 0.0 ? 0.0 : 1.0;
   return gaussian_half_plane_mass(p, cov, g, l.L.y);
 }

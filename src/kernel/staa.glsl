@@ -157,7 +157,7 @@ SG_FN bool staa_frame_terms(IN(Frame) f) {
 // quadrature leaves the programs of the frames whose disk clears the horizon.
 SG_FN bool staa_frame_light_sets(IN(Frame) f) {
 #ifndef SG_LIGHT_SETS
-  return f.light.L.y < f.light.tan_radius * length(vec2(f.light.e1.y, f.light.e2.y));
+  return f.light.L.y < f.light.tan_radius * length(light_horizon_normal(f.light));
 #else
   return SG_LIGHT_SETS != 0;
 #endif
@@ -780,7 +780,7 @@ SG_FN real staa_kernels_share(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s
 // path's valid instants as the below share is, comes off the light's share. Called only in
 // frames whose disk reaches below the horizon (staa_frame_light_sets).
 SG_FN real staa_light_below_horizon(IN(Frame) f, IN(StaaPath) path, mat2 cov_r) {
-  vec2 g = vec2(f.light.e1.y, f.light.e2.y);
+  vec2 g = light_horizon_normal(f.light);
   real R = f.light.tan_radius;
   real below = 0.0;
   int counted = 0;

@@ -19,20 +19,6 @@ void HostCascades::build(const FrameContext& ctx) {
   origin_ = vec2(m.camera.position().x, m.camera.position().z);
 }
 
-vec2 HostCascades::gradient(const vec3& p) const {
-  if (!active_) return vec2(0);
-  const kd::vec2 q = relative(p);
-  return kd::cascade_gradient(wave_buffer(inputs_.d()), inputs_.d().frame,
-                              inputs_.d().frame.segments, q.x, q.y);
-}
-
-Hessian HostCascades::hessian(const vec3& p) const {
-  if (!active_) return Hessian{};
-  const kd::vec2 q = relative(p);
-  const kd::vec3 h = kd::cascade_hessian(wave_buffer(inputs_.d()), inputs_.d().frame, q.x, q.y);
-  return Hessian{h.x, h.y, h.z};
-}
-
 HostCascades::Moments HostCascades::moments(const vec3& p, const mat2& J) const {
   if (!active_) return Moments{};
   const kd::CascadeMoments r =

@@ -1,17 +1,14 @@
-// A scene's lattice cascades for the baselines shaded on the host (`lean`, `specaa`,
-// `bruneton`): per frame, the cascades' FFT fields and LEAN chains built by the kernel's
-// frame inputs (shading/cascade_fields.h), read per pixel through the kernel's functions
-// (kernel/cascade_fields.glsl), so that these methods cost a few fetches per cascade
-// instead of a sum over every lattice sine. The explicit waves stay the method's own.
+// A scene's lattice cascades for the baselines shaded on the host (`lean`, `bruneton`;
+// `specaa` reads them in the kernel, kernel/specaa.glsl): per frame, the cascades' FFT fields and
+// LEAN chains built by the kernel's frame inputs (shading/cascade_fields.h), read per pixel through
+// the kernel's functions (kernel/cascade_fields.glsl), so that these methods cost a few fetches per
+// cascade instead of a sum over every lattice sine. The explicit waves stay the method's own.
 //
 // What each baseline takes from them, at the display time (docs/ocean.md, "Shading from
 // the cascades"):
 //   lean, bruneton  the slopes' mean and covariance over the pixel's footprint (LEAN's
 //                   filtered moments, Olano and Baker 2010, Sec. 3), added to those of the
-//                   explicit waves (cascade_footprint_moments);
-//   specaa          the slope and the Hessian at the pixel's water point (level 0,
-//                   Catmull-Rom), added to the explicit waves' (cascade_gradient,
-//                   cascade_hessian).
+//                   explicit waves (cascade_footprint_moments).
 // They apply on flat water with `--cascades fields` (the default); elsewhere (displaced
 // water, `--cascades waves`) `active()` is false and the cascades are their lattice's
 // sines among the model's waves, exactly.
@@ -37,9 +34,6 @@ class HostCascades {
   // else every wave of the model (the lattices' sines included).
   const WaveField& waves(const SceneModel& m) const { return active_ ? *explicit_ : m.waves; }
 
-  // The cascades' share at world point p (the frame's display time); zero when inactive.
-  vec2 gradient(const vec3& p) const;
-  Hessian hessian(const vec3& p) const;
   struct Moments {
     vec2 mean{0};
     mat2 cov{0};

@@ -13,7 +13,7 @@ RadianceWeights centre_ray_weights(const FrameContext& ctx, const WaterGeometry&
 }
 
 void HostMethod::begin_host_frame(const FrameContext& ctx) {
-  fallbacks_.store(0, std::memory_order_relaxed);
+  reset_fallbacks();
   if (!water_.is_for(ctx.model, ctx.time)) water_ = WaterGeometry(ctx.model, ctx.time);
 }
 

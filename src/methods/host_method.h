@@ -1,4 +1,4 @@
-// What a host method (the baselines: lean, microspec, specaa, bruneton, taa) keeps of a
+// What a host method (the baselines lean, microspec, bruneton, taa) keeps of a
 // frame: the water's geometry from the kernel (shading/water_geometry.h), built in
 // begin_frame as the kernel methods build their inputs, and the count of the frame's
 // fallback pixels.
@@ -16,8 +16,8 @@
 // A method derives from HostMethod: it calls begin_host_frame(ctx) in begin_frame (the
 // geometry is built, the count reset), reads water(ctx) for the geometry, and calls
 // fallback() (any thread) where its model fails, or finite_or_fallback() on its weights.
-// fallback_pixels(method) reads the count of the last frame, or -1 for a method that does
-// not count.
+// `specaa`, on the kernel, counts through FallbackCount alone. fallback_pixels(method)
+// reads the count of the last frame, or -1 for a method that does not count.
 #pragma once
 
 #include <atomic>
@@ -37,18 +37,28 @@ inline bool finite_weights(const RadianceWeights& w) {
   return std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z) && std::isfinite(w.w);
 }
 
-class HostMethod {
+// The count of a frame's fallback pixels (any thread adds to it): a host method's, and
+// that of a kernel method whose model can fail (`specaa`, methods/specaa.h).
+class FallbackCount {
  public:
-  virtual ~HostMethod() = default;
+  virtual ~FallbackCount() = default;
   long fallbacks() const { return fallbacks_.load(std::memory_order_relaxed); }
 
+ protected:
+  void reset_fallbacks() { fallbacks_.store(0, std::memory_order_relaxed); }
+  void count_fallback() const { fallbacks_.fetch_add(1, std::memory_order_relaxed); }
+
+ private:
+  mutable std::atomic<long> fallbacks_{0};
+};
+
+class HostMethod : public FallbackCount {
  protected:
   // Builds the frame's water geometry and resets the count (begin_frame, one thread).
   void begin_host_frame(const FrameContext& ctx);
   // The geometry of ctx's frame; sg::Error naming `method` when the frame was not begun
   // (a caller that shades without begin_frame: methods/method.h).
   const WaterGeometry& water(const FrameContext& ctx) const;
-  void count_fallback() const { fallbacks_.fetch_add(1, std::memory_order_relaxed); }
   // Counts pixel (i, j) and returns its fallback weights.
   RadianceWeights fallback(const FrameContext& ctx, int i, int j) const {
     count_fallback();
@@ -61,13 +71,12 @@ class HostMethod {
   }
 
  private:
-  mutable std::atomic<long> fallbacks_{0};
   WaterGeometry water_;
 };
 
 // The fallback pixels of the method's last frame; -1 when the method does not count them.
 inline long fallback_pixels(const Method& m) {
-  const auto* c = dynamic_cast<const HostMethod*>(&m);
+  const auto* c = dynamic_cast<const FallbackCount*>(&m);
   return c ? c->fallbacks() : -1;
 }
 

@@ -10,6 +10,7 @@
 #include "base/error.h"
 #include "kernel/kernel_counting.h"
 #include "methods/kernel_inputs.h"
+#include "methods/specaa.h"
 #include "methods/staa.h"
 #include "methods/stratified.h"
 #include "methods/supersample.h"
@@ -61,14 +62,14 @@ struct Sums {
 
 bool kernel_work_counted(const std::string& method) {
   return method == "point" || method == "supersample" || method == "staa-temporal" ||
-         method == "staa";
+         method == "staa" || method == "specaa";
 }
 
 KernelWork count_kernel_work(const SceneModel& m, const std::string& method, const MethodOptions& o,
                              int frame) {
   if (!kernel_work_counted(method)) {
     throw Error("--counters: no counting render for method '" + method +
-                "' (point, supersample, staa-temporal and staa have one)");
+                "' (point, supersample, staa-temporal, staa and specaa have one)");
   }
   validate(o);
   const bool super = method == "supersample";
@@ -96,6 +97,8 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
   const kc::PathTableInfo tinfo =
       tables ? same_struct<kc::PathTableInfo>(tables->kernel_info()) : kc::PathTableInfo{};
   const kc::KernelFitInfo finfo = same_struct<kc::KernelFitInfo>(fits.info);
+  const kc::SpecaaParams sparams =
+      same_struct<kc::SpecaaParams>(specaa_kernel_params<kd::SpecaaParams>(o.specaa));
 
   const int w = m.scene.width, h = m.scene.height;
   std::vector<Sums> rows(static_cast<size_t>(h));
@@ -110,6 +113,15 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
         kc::stratified_pixel(waves, f, counts, i, j);
       } else if (method == "staa-temporal") {
         kc::staa_temporal_pixel(waves, f, i, j);
+      } else if (method == "specaa") {
+        // An invocation samples its own pixel and shades it; its quad neighbours' samples
+        // are the other invocations' (shared, not counted here).
+        const kc::SpecaaSample own = kc::specaa_sample(waves, f, i + 0.5, j + 0.5);
+        const KernelCounters mine = c;
+        const kc::SpecaaSample nx = kc::specaa_sample(waves, f, (i ^ 1) + 0.5, j + 0.5);
+        const kc::SpecaaSample ny = kc::specaa_sample(waves, f, i + 0.5, (j ^ 1) + 0.5);
+        c = mine;
+        kc::specaa_shade(waves, f, sparams, own, nx, ny, i, j);
       } else {
         kc::StaaPath path;
         const kc::StaaResult r = kc::staa_pixel(waves, tables->f_texture(), tables->s_texture(),

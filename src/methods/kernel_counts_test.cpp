@@ -1,6 +1,7 @@
 // The kernel's work counters (methods/kernel_counts.h) against scenes whose counts are
 // known: `point` on flat water visits each of its N waves once per pixel that sees water
-// and none where the pixel sees the sky; `supersample` S_x S_y times that; the counting
+// and none where the pixel sees the sky; `supersample` S_x S_y times that; `specaa` once with
+// its quads' derivatives and twice with the analytic ones; the counting
 // build renders what the double kernel renders; displaced water counts march steps and
 // flat water none.
 #include "methods/kernel_counts.h"
@@ -74,6 +75,22 @@ TEST(KernelCounts, SupersampleVisitsEachWavePerSample) {
   const KernelWork k = count_kernel_work(m, "supersample", testing::with_tables(o), 1);
   EXPECT_DOUBLE_EQ(k.waves.mean, 6.0 * n);
   EXPECT_EQ(k.waves.max, uint64_t(6 * n));
+}
+
+TEST(KernelCounts, SpecaaVisitsTheWavesOnceWithQuadsAndTwiceAnalytic) {
+  // On flat water an invocation sums the gradient at its point (N waves); its quad's
+  // neighbours give the derivatives (their samples are theirs), while the analytic form sums
+  // the Hessian too (N more). Nothing is integrated by nodes.
+  const int n = 9;
+  const SceneModel m(water_only(n));
+  MethodOptions o;
+  const KernelWork quad = count_kernel_work(m, "specaa", testing::with_tables(o), 1);
+  EXPECT_DOUBLE_EQ(quad.waves.mean, double(n));
+  EXPECT_EQ(quad.waves.max, uint64_t(n));
+  o.specaa.derivatives = SpecaaDerivatives::analytic;
+  const KernelWork analytic = count_kernel_work(m, "specaa", testing::with_tables(o), 1);
+  EXPECT_DOUBLE_EQ(analytic.waves.mean, 2.0 * n);
+  EXPECT_EQ(analytic.nodes.max, quad.nodes.max);
 }
 
 TEST(KernelCounts, StaaCountsItsQuadratureAndTables) {

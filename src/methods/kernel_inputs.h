@@ -1,5 +1,5 @@
-// The CPU side of the kernel methods (point, supersample, reference, staa-temporal,
-// staa): the frame's inputs to the shading kernel (shading/kernel_frame.h), built in
+// The CPU side of the kernel methods (point, supersample, reference, staa-temporal, staa,
+// specaa): the frame's inputs to the shading kernel (shading/kernel_frame.h), built in
 // begin_frame in the method's precision and read by every tile of the frame.
 #pragma once
 

@@ -5,8 +5,6 @@
 #include <cstdint>
 #include <string>
 
-#include "shading/specular_aa.h"
-
 namespace sg {
 
 // --samples SxSxT: S_x by S_y stratified jittered positions in the pixel times T
@@ -163,6 +161,11 @@ enum class SpecaaDerivatives {
   quad,      // finite differences in 2x2 pixel quads, as ddx_fine/ddy_fine on a GPU
   analytic,  // ray differentials and the Hessian of the height field
 };
+// The filtering kernel's shape (kernel/specaa.glsl).
+enum class KernelShape {
+  rect,  // per axis of the tangent frame, the bounding rectangle of the derivatives (fwidth)
+  full,  // the 2x2 covariance of the derivatives
+};
 struct SpecaaOptions {
   double sigma2 = 0.25;                                     // --specaa-sigma2: kernel variance
   double kappa = 0.18;                                      // --specaa-kappa: clamp of 2 sigma^2
@@ -205,8 +208,8 @@ struct MethodOptions {
   // (`intersect_tolerance_given`); else each method's own (intersect_tolerance_for).
   double intersect_tolerance = 0.25;  // staa's: kDefaultIntersectTolerance (catalog.cpp)
   bool intersect_tolerance_given = false;
-  // --cascades fields|waves: point, supersample with T = 1, staa-temporal and staa (flat
-  // and displaced water), lean, specaa and bruneton (flat water) shade a scene's lattice
+  // --cascades fields|waves: point, supersample with T = 1, staa-temporal, staa and specaa
+  // (flat and displaced water), lean and bruneton (flat water) shade a scene's lattice
   // cascades from their FFT fields (kernel/cascade_grid.glsl, cascade_fields.glsl; a cost
   // per pixel fixed by the cascades), or as their lattice's sines among the waves (exact,
   // a cost that follows the waves). The other methods (reference, supersample with T > 1,

@@ -83,19 +83,21 @@ inline double cascade_instant(const FrameTime& ft, int segments, int k) {
 //     too; `staa-temporal`: its path's gradients are point reads);
 //   display_level0: level 0 of the display time, its slopes and height (`point`,
 //     `supersample` with T = 1);
-//   display_chain: the display time's whole chain alone (the host's baselines `lean`,
-//     `specaa`, `bruneton`: methods/host_cascades.h), its texels those of `all`, the other
-//     instants' 0 (CascadeFields.DisplayChainIsTheWholeFieldsDisplayTime).
+//   display_chain: the display time's whole chain alone (`specaa`, whose kernel reads level
+//     0's Hessian; the host's baselines `lean`, `bruneton`: methods/host_cascades.h), its
+//     texels those of `all`, the other instants' 0
+//     (CascadeFields.DisplayChainIsTheWholeFieldsDisplayTime).
 // With the level-0 reads, level 0 holds (s_x, s_z, 0, 0), (0, h, 0, 0) at the display time and
 // (s_x, s_z, 0, 0), 0 at the other instants, (0, h, 0, 0) on displaced water, whose path follows
 // the water's height (kernel/reflection_path.glsl, path_views); what is not built stays 0. The
 // images are the same to the rounding (CascadeFields.ReducedReadsShadeTheSameAsTheWholeFields).
 enum class CascadeReads { all, instants_level0, display_level0, display_chain };
-// What a kernel method reads, by its name (`point`, `supersample`, `staa-temporal`, `staa`):
-// the one choice both engines make.
+// What a kernel method reads, by its name (`point`, `supersample`, `staa-temporal`, `staa`,
+// `specaa`): the one choice both engines make.
 inline CascadeReads cascade_reads_of(const std::string& method) {
   if (method == "staa") return CascadeReads::all;
   if (method == "staa-temporal") return CascadeReads::instants_level0;
+  if (method == "specaa") return CascadeReads::display_chain;  // level 0's Hessian
   return CascadeReads::display_level0;
 }
 

@@ -39,9 +39,42 @@ uniform StaaParams params;
 uniform PathTableInfo tinfo;
 uniform KernelFitInfo finfo;
 #endif
+#if defined(SG_METHOD_SPECAA)
+uniform SpecaaParams sparams;
+// `specaa`'s quads: the workgroup's 8 x 8 invocations are 4 x 4 whole 2 x 2 quads (the
+// groups start at multiples of 8), and each shares its h_perp and whether its neighbours
+// may difference it, as a GPU's quad does for dFdx / dFdy.
+shared vec2 quad_h_perp[64];
+shared bool quad_usable[64];
+
+// The pixel at p with its quad's neighbours in x and in y: every invocation of the group
+// samples (those past the image too, as the CPU's tiles sample their quads' cover) before
+// the barrier, which all reach.
+vec4 specaa_quad_pixel(ivec2 p) {
+  SpecaaSample own = specaa_sample(waves, frame, real(p.x) + 0.5, real(p.y) + 0.5);
+  int at = int(gl_LocalInvocationIndex);
+  quad_h_perp[at] = own.h_perp;
+  quad_usable[at] = specaa_quad_usable(own);
+  barrier();
+  ivec2 l = ivec2(gl_LocalInvocationID.xy);
+  int ax = l.y * 8 + (l.x ^ 1);
+  int ay = (l.y ^ 1) * 8 + l.x;
+  SpecaaSample nx = specaa_no_sample();
+  nx.hit = quad_usable[ax];
+  nx.h_perp = quad_h_perp[ax];
+  SpecaaSample ny = specaa_no_sample();
+  ny.hit = quad_usable[ay];
+  ny.h_perp = quad_h_perp[ay];
+  return specaa_shade(waves, frame, sparams, own, nx, ny, p.x, p.y).weights;
+}
+#endif
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+#if defined(SG_METHOD_SPECAA) && SG_SPECAA_QUAD
+  // Before the image's edge test: the quad's barrier is every invocation's.
+  vec4 quad_weights = specaa_quad_pixel(p);
+#endif
   if (p.x >= image_size.x || p.y >= image_size.y) return;
   vec4 w = vec4(0.0);
 #if defined(SG_METHOD_POINT)
@@ -68,6 +101,10 @@ void main() {
   StaaResult r =
       staa_pixel(waves, table_f, table_s, tinfo, fits, finfo, frame, params, p.x, p.y, path);
   w = r.weights;
+#elif defined(SG_METHOD_SPECAA) && SG_SPECAA_QUAD
+  w = quad_weights;
+#elif defined(SG_METHOD_SPECAA)
+  w = specaa_pixel(waves, frame, sparams, p.x, p.y).weights;
 #endif
   imageStore(weights_out, p, w);
 }

@@ -1,20 +1,31 @@
-// The specular anti-aliasing kernel: the chain-rule derivative of the projected half vector
-// against finite differences, the tangent-slope-to-NDF-plane Jacobian against finite
+// `specaa`'s kernel (kernel/specaa.glsl): the chain-rule derivative of the projected half
+// vector against finite differences, the tangent-slope-to-NDF-plane Jacobian against finite
 // differences, and the kernel's variance against a direct evaluation (the covariance of the
 // projected half vector under a Gaussian pixel filter, sampled through the exact camera,
-// water and frame).
-#include "shading/specular_aa.h"
-
+// water and frame). The water here is the host's own sum of sines (scene/waves.h), an
+// independent check of the kernel's.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "kernel/kernel_double.h"
 #include "math/rng.h"
 #include "scene/model.h"
 #include "shading/water_geometry.h"
 
 namespace sg {
 namespace {
+
+using kd::projected_half_vector;
+using kd::projected_half_vector_derivative;
+using kd::ShadingFrame;
+using kd::specaa_kernel_covariance;
+using kd::specaa_tangent_to_ndf_plane;
+using kd::water_shading_frame;
+
+vec3 hessian3(const Hessian& H) {
+  return vec3(H.xx, H.xz, H.zz);
+}
 
 const vec3 kL = normalize(vec3(0.0, 0.207912, -0.978148));
 
@@ -29,7 +40,7 @@ vec2 h_perp_at(const WaveField& w, const vec3& camera, const vec3& P, double t) 
                                kL);
 }
 
-TEST(SpecularAA, ShadingFrameIsOrthonormalAboutTheNormal) {
+TEST(SpecaaKernel, ShadingFrameIsOrthonormalAboutTheNormal) {
   const ShadingFrame f = water_shading_frame(vec2(0.3, -0.4));
   EXPECT_NEAR(length(f.n - normalize(vec3(-0.3, 1, 0.4))), 0, 1e-15);
   EXPECT_NEAR(dot(f.t, f.n), 0, 1e-15);
@@ -39,7 +50,7 @@ TEST(SpecularAA, ShadingFrameIsOrthonormalAboutTheNormal) {
   EXPECT_NEAR(f.t.z, 0, 1e-15);  // along the surface's x direction
 }
 
-TEST(SpecularAA, HalfVectorDerivativeMatchesFiniteDifferences) {
+TEST(SpecaaKernel, HalfVectorDerivativeMatchesFiniteDifferences) {
   const WaveField w = test_waves();
   const vec3 camera(0.3, 2.5, 0.1);
   Pcg32 rng(6, 6);
@@ -52,7 +63,7 @@ TEST(SpecularAA, HalfVectorDerivativeMatchesFiniteDifferences) {
     const vec2 dxz(rng.uniform() - 0.5, rng.uniform() - 0.5);
     const vec3 dP(dxz.x, g.x * dxz.x + g.y * dxz.y, dxz.y);
     const vec2 analytic =
-        projected_half_vector_derivative(camera, P, g, w.hessian(x, z, t), dP, kL);
+        projected_half_vector_derivative(camera, P, g, hessian3(w.hessian(x, z, t)), dP, kL);
     // Central differences along the surface curve (x, h(x, z), z) + s (dx, ., dz).
     const double e = 1e-5;
     auto at = [&](double s) {
@@ -64,7 +75,7 @@ TEST(SpecularAA, HalfVectorDerivativeMatchesFiniteDifferences) {
   }
 }
 
-TEST(SpecularAA, TangentSlopeJacobianMatchesFiniteDifferences) {
+TEST(SpecaaKernel, TangentSlopeJacobianMatchesFiniteDifferences) {
   Pcg32 rng(7, 7);
   for (int k = 0; k < 100; ++k) {
     const vec2 g(0.8 * (rng.uniform() - 0.5), 0.8 * (rng.uniform() - 0.5));
@@ -76,14 +87,14 @@ TEST(SpecularAA, TangentSlopeJacobianMatchesFiniteDifferences) {
     const double e = 1e-6;
     const vec2 cx = (q(vec2(e, 0)) - q(vec2(-e, 0))) / (2 * e);
     const vec2 cz = (q(vec2(0, e)) - q(vec2(0, -e))) / (2 * e);
-    const mat2 J = tangent_slope_to_ndf_plane(f);
+    const mat2 J = specaa_tangent_to_ndf_plane(f);
     EXPECT_LT(length(J[0] - cx), 1e-8);
     EXPECT_LT(length(J[1] - cz), 1e-8);
     EXPECT_LT(length(q(vec2(0.0)) - vec2(-g.x, -g.y)), 1e-15);  // the centre is -gradient
   }
 }
 
-TEST(SpecularAA, FullKernelIsTheVarianceOfTheHalfVectorUnderTheGaussianPixelFilter) {
+TEST(SpecaaKernel, FullKernelIsTheVarianceOfTheHalfVectorUnderTheGaussianPixelFilter) {
   // Direct evaluation: pixel offsets drawn from the kernel's Gaussian pixel filter
   // (variance sigma^2 per axis, pixels^2), each traced to the water, shaded with its own
   // normal and frame, and its h_perp taken; the sample covariance of h_perp against the
@@ -103,10 +114,10 @@ TEST(SpecularAA, FullKernelIsTheVarianceOfTheHalfVectorUnderTheGaussianPixelFilt
     ASSERT_TRUE(fp.hit);
     const vec3 P = fp.point;
     const vec2 g = m.waves.gradient(P.x, P.z, t);
-    const Hessian H = m.waves.hessian(P.x, P.z, t);
+    const vec3 H = hessian3(m.waves.hessian(P.x, P.z, t));
     const vec2 ddx = projected_half_vector_derivative(m.camera.position(), P, g, H, fp.dp_dpx, kL);
     const vec2 ddy = projected_half_vector_derivative(m.camera.position(), P, g, H, fp.dp_dpy, kL);
-    const mat2 kernel = filtering_kernel_covariance(ddx, ddy, sigma2, 1e9, KernelShape::full);
+    const mat2 kernel = specaa_kernel_covariance(ddx, ddy, sigma2, 1e9, true);
     Pcg32 rng(9, 9);
     const int n = 20000;
     vec2 mean(0.0);
@@ -134,28 +145,28 @@ TEST(SpecularAA, FullKernelIsTheVarianceOfTheHalfVectorUnderTheGaussianPixelFilt
   }
 }
 
-TEST(SpecularAA, RectKernelIsTheListingsBoundingRectangle) {
+TEST(SpecaaKernel, RectKernelIsTheListingsBoundingRectangle) {
   // Tokuyoshi & Kaplanyan's listing: alpha^2 = min(2 sigma^2 (|ddx| + |ddy|)^2, kappa) per
   // axis, and slope variance alpha^2 / 2.
   const vec2 ddx(0.01, -0.002), ddy(0.004, 0.003);
-  const mat2 k = filtering_kernel_covariance(ddx, ddy, 0.25, 0.18, KernelShape::rect);
+  const mat2 k = specaa_kernel_covariance(ddx, ddy, 0.25, 0.18, false);
   EXPECT_NEAR(k[0][0], 0.25 * sqr(0.014), 1e-18);
   EXPECT_NEAR(k[1][1], 0.25 * sqr(0.005), 1e-18);
   EXPECT_EQ(k[0][1], 0.0);
   // It bounds the full kernel's diagonal, and equals it when one derivative vanishes.
-  const mat2 f = filtering_kernel_covariance(ddx, ddy, 0.25, 0.18, KernelShape::full);
+  const mat2 f = specaa_kernel_covariance(ddx, ddy, 0.25, 0.18, true);
   EXPECT_GE(k[0][0], f[0][0]);
   EXPECT_GE(k[1][1], f[1][1]);
-  const mat2 k1 = filtering_kernel_covariance(ddx, vec2(0.0), 0.25, 0.18, KernelShape::rect);
-  const mat2 f1 = filtering_kernel_covariance(ddx, vec2(0.0), 0.25, 0.18, KernelShape::full);
+  const mat2 k1 = specaa_kernel_covariance(ddx, vec2(0.0), 0.25, 0.18, false);
+  const mat2 f1 = specaa_kernel_covariance(ddx, vec2(0.0), 0.25, 0.18, true);
   EXPECT_NEAR(k1[0][0], f1[0][0], 1e-18);
   EXPECT_NEAR(k1[1][1], f1[1][1], 1e-18);
   // The clamp: alpha^2 <= kappa, so slope variance <= kappa / 2, for both shapes.
   const vec2 big(3.0, -2.0);
-  const mat2 kc = filtering_kernel_covariance(big, big, 0.25, 0.18, KernelShape::rect);
+  const mat2 kc = specaa_kernel_covariance(big, big, 0.25, 0.18, false);
   EXPECT_NEAR(kc[0][0], 0.09, 1e-15);
   EXPECT_NEAR(kc[1][1], 0.09, 1e-15);
-  const mat2 fc = filtering_kernel_covariance(big, vec2(0.5, 1.0), 0.25, 0.18, KernelShape::full);
+  const mat2 fc = specaa_kernel_covariance(big, vec2(0.5, 1.0), 0.25, 0.18, true);
   EXPECT_NEAR(fc[0][0] + fc[1][1], 0.18, 1e-12);  // both principal variances at 0.09
 }
 
