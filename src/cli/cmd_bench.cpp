@@ -151,7 +151,7 @@ void run_bench(BenchArgs& a) {
       for (const MethodVariant& v : variants) {
         if (!kernel_work_counted(v.name)) {
           throw Error("--counters: no counting render for '" + v.label +
-                      "' (point, supersample, staa-temporal, staa and specaa have one)");
+                      "' (point, supersample, staa-temporal, staa, specaa and microspec have one)");
         }
       }
     });
@@ -241,7 +241,7 @@ void add_bench_command(CLI::App& app) {
   c->add_flag("--counters", a->counters,
               "Count the kernel's work per pixel instead of timing (waves visited, texel "
               "fetches, quadrature nodes, transcendentals, march steps; point, supersample, "
-              "staa-temporal, staa, specaa) with a predicted 1920x1080 time on an H200");
+              "staa-temporal, staa, specaa, microspec) with a predicted 1920x1080 time on an H200");
   add_method_flags(*c, a->flags);
   c->callback([a] { run_bench(*a); });
 }

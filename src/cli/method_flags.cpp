@@ -116,12 +116,13 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->check(integer_in(0, std::numeric_limits<long long>::max()));
   choice(app, "--precision", o.precision,
          {{"double", Precision::float64}, {"float", Precision::float32}},
-         "point, supersample, reference, staa-temporal, staa, specaa: the shading kernel's "
-         "precision on the CPU (float is what a GPU computes)");
+         "point, supersample, reference, staa-temporal, staa, specaa, microspec: the shading "
+         "kernel's precision on the CPU (float is what a GPU computes)");
   f.intersect_tolerance_option =
       app.add_option(
              "--intersect-tolerance", o.intersect_tolerance,
-             "point, supersample, reference, staa-temporal, staa, specaa on displaced water: "
+             "point, supersample, reference, staa-temporal, staa, specaa, microspec on displaced "
+             "water: "
              "leave out of the intersection the shortest waves whose amplitudes sum to "
              "at most this many pixels of the ray's footprint (0: every wave, the "
              "default of all but staa, whose default is 0.25)")
@@ -255,8 +256,8 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
 }
 
 static void scope_method_flags(const std::vector<const CLI::Option*>& options, MethodFlags& f) {
-  const std::vector<std::string> kernel = {"point",         "supersample", "reference",
-                                           "staa-temporal", "staa",        "specaa"};
+  const std::vector<std::string> kernel = {"point", "supersample", "reference", "staa-temporal",
+                                           "staa",  "specaa",      "microspec"};
   const std::vector<std::string> sampling = {"supersample", "reference"};
   const std::vector<std::string> staa_both = {"staa", "staa-temporal"};
   const std::map<std::string, std::vector<std::string>> takers = {

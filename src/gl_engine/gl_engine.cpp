@@ -10,6 +10,7 @@
 #include "gl/dispatch.h"
 #include "gl_engine/uniforms.h"
 #include "kernel/kernel_float.h"
+#include "methods/microspec.h"
 #include "methods/reference.h"
 #include "methods/specaa.h"
 #include "methods/staa.h"
@@ -47,7 +48,7 @@ int pass_samples(int waves, int segments, bool displaced, int cascades) {
 }
 
 const char* gl_methods() {
-  return "point, supersample, reference, staa-temporal, staa, specaa";
+  return "point, supersample, reference, staa-temporal, staa, specaa, microspec";
 }
 
 GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
@@ -97,6 +98,9 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   } else if (method == "specaa") {
     v.entry = KernelEntry::specaa;
     v.specaa = specaa_kernel_params<kf::SpecaaParams>(o.specaa);
+  } else if (method == "microspec") {
+    v.entry = KernelEntry::microspec;
+    v.microspec = microspec_kernel_params<kf::MicrospecParams>(o.microspec);
   } else {
     throw Error("--method " + method + ": not on the GL engine (it runs " + gl_methods() +
                 "; use --engine cpu)");
@@ -227,6 +231,7 @@ void GlEngine::upload(const FrameContext& ctx) {
                                  inputs_->frame.cascade_count);
   }
   if (v_.entry == KernelEntry::specaa) set_uniforms(u, "sparams", v_.specaa);
+  if (v_.entry == KernelEntry::microspec) set_uniforms(u, "mparams", v_.microspec);
   if (v_.entry == KernelEntry::staa) {
     set_uniforms(u, "params", v_.params);
     set_uniforms(u, "tinfo", tinfo_);

@@ -1,7 +1,8 @@
 // The GL engine: the shading kernel run as an OpenGL 4.5 compute shader, one invocation per
 // pixel, in float (docs/gpu.md). It runs `point`, `supersample`, `reference`,
 // `staa-temporal`, `staa` (both NDFs, `--footprint none|gaussian`, every kernel count
-// and fallback) and the baseline `specaa` with the CPU engine's estimators and seeds; anything else
+// and fallback) and the baselines `specaa` and `microspec` with the CPU engine's estimators
+// and seeds; anything else
 // is refused with a message naming the method or flag, never rendered elsewhere. Its `reference` is
 // the CPU engine's estimator (kernel/reference.glsl, its K per frame from the waves and the
 // shutter) but does not report its noise: the batches' spread stays on the GPU.
@@ -45,6 +46,7 @@ struct GlVariant {
   kf::ReferenceParams reference{};  // `reference`: segments is the cap, each frame picks K
   kf::StaaParams params{};
   kf::SpecaaParams specaa{};
+  kf::MicrospecParams microspec{};
   double intersect_tolerance = 0;  // --intersect-tolerance (shading/kernel_frame.h)
   // --cascades fields: point, staa-temporal, staa and specaa read a scene's cascades from their
   // FFT fields in the wave buffer (shading/cascade_fields.h, built on the host).

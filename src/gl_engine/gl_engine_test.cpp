@@ -51,7 +51,7 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     const SceneModel* m;
   };
   // Every program the suite runs (this test is the fixture that compiles them first:
-  // src/CMakeLists.txt, gl_programs): the six methods with the default options, staa's
+  // src/CMakeLists.txt, gl_programs): the seven methods with the default options, staa's
   // with 2 path segments, specaa's with its analytic derivatives.
   std::vector<Case> cases = {{"point", {}, &plain_model},     {"supersample", {}, &plain_model},
                              {"reference", {}, &plain_model}, {"staa-temporal", {}, &plain_model},
@@ -67,6 +67,7 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
   MethodOptions analytic;
   analytic.specaa.derivatives = SpecaaDerivatives::analytic;
   cases.push_back({"specaa", analytic, &plain_model});
+  cases.push_back({"microspec", {}, &plain_model});
   for (const Case& c : cases) {
     const SceneModel& m = *c.m;
     gl_engine::GlEngine engine(c.name, testing::with_tables(c.o));
@@ -85,6 +86,7 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     probe.set("pass_range", kf::ivec2(0, 0));
     gl_engine::set_uniforms(probe, "params", v.params);
     gl_engine::set_uniforms(probe, "sparams", v.specaa);
+    gl_engine::set_uniforms(probe, "mparams", v.microspec);
     gl_engine::set_uniforms(probe, "tinfo", kf::PathTableInfo{});
     gl_engine::set_uniforms(probe, "finfo", kf::KernelFitInfo{});
     const std::vector<std::string> active = gl_engine::active_uniforms(engine.program());
@@ -154,12 +156,12 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineOnTheSharedScenes) {
       const Comparison c = compare_engines(scene, name, o, ref);
       EXPECT_LE(c.gl_cpu, 0.1 * c.cpu_ref) << scene << " " << name;
     }
-    // Binary tests at the disk's rim per sample: a few flip.
+    // Binary tests at the disk's rim per sample (or per corner quad): a few flip.
     MethodOptions r4;  // other samples than the ground truth's
     r4.samples = {4, 4, 1};
     r4.samples_given = true;
-    for (const auto& [name, o] :
-         std::vector<std::pair<std::string, MethodOptions>>{{"point", {}}, {"reference", r4}}) {
+    for (const auto& [name, o] : std::vector<std::pair<std::string, MethodOptions>>{
+             {"point", {}}, {"reference", r4}, {"microspec", {}}}) {
       const Comparison c = compare_engines(scene, name, o, ref);
       EXPECT_LE(c.differ, 0.02) << scene << " " << name;
       EXPECT_NEAR(c.gl_ref, c.cpu_ref, 0.05 * c.cpu_ref) << scene << " " << name;
@@ -549,7 +551,7 @@ TEST_F(GlEngineTest, DisplacedMarchAdvancesFarFromTheCameraInFloat) {
 
 TEST(GlEngine, RefusesWhatItLacksNamingIt) {
   MethodOptions o;
-  for (const char* m : {"lean", "taa", "microspec", "bruneton"}) {
+  for (const char* m : {"lean", "taa", "bruneton"}) {
     try {
       gl_engine::gl_variant(m, o);
       ADD_FAILURE() << m << " accepted";

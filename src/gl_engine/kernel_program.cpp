@@ -37,6 +37,8 @@ const char* entry_name(KernelEntry e) {
       return "staa";
     case KernelEntry::specaa:
       return "specaa";
+    case KernelEntry::microspec:
+      return "microspec";
   }
   return "?";
 }
@@ -55,6 +57,8 @@ const char* entry_define(KernelEntry e) {
       return "SG_METHOD_STAA";
     case KernelEntry::specaa:
       return "SG_METHOD_SPECAA";
+    case KernelEntry::microspec:
+      return "SG_METHOD_MICROSPEC";
   }
   return "";
 }

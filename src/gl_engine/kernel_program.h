@@ -11,7 +11,7 @@
 
 namespace sg::gl_engine {
 
-enum class KernelEntry { point, stratified, reference, staa_temporal, staa, specaa };
+enum class KernelEntry { point, stratified, reference, staa_temporal, staa, specaa, microspec };
 
 const char* entry_name(KernelEntry e);
 

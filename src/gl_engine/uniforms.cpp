@@ -102,6 +102,10 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::SpecaaParams
   u.set(n + ".quad", p.quad);
 }
 
+void set_uniforms(UniformWriter& u, const std::string& n, const kf::MicrospecParams& p) {
+  u.set(n + ".exact_area", p.exact_area);
+}
+
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::SampleCounts& c) {
   u.set(n + ".sx", c.sx);
   u.set(n + ".sy", c.sy);

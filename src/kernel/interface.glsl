@@ -170,9 +170,30 @@ struct SpecaaSample {
   vec2 h_perp;  // the half vector in the normal's shading frame, (h . t, h . b)
 };
 
-// A `specaa` pixel: its weights, and whether its model failed there (the camera under the
-// surface, a lobe whose shading is not finite) so that it took the centre ray's radiance.
-struct SpecaaResult {
+// `microspec`'s options (methods/options.h, MicrospecOptions; microspec.glsl).
+struct MicrospecParams {
+  bool exact_area;  // --microspec-area exact (else approx)
+};
+
+// The reflection at one pixel corner (microspec.glsl, microspec_corner): the water point
+// seen through an image-plane point at the display time, its normal, the mirrored view.
+// Neighbouring pixels share their corners (the CPU's tiles, the GL engine's shared memory).
+struct CornerReflection {
+  bool hit;
+  bool at_camera;  // the camera under the surface: the hit is the camera itself
+  vec3 r;          // unit reflected direction
+  vec3 v;          // unit view direction (towards the camera)
+};
+
+// A pixel's four corners, in the order (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1).
+struct PixelCorners {
+  CornerReflection c[4];
+};
+
+// A baseline's pixel (`specaa`, `microspec`): its weights, and whether its model failed
+// there (the camera under the surface, a shading that is not finite) so that it took the
+// centre ray's radiance.
+struct FallbackResult {
   vec4 weights;
   bool fallback;
 };

@@ -37,6 +37,8 @@
 #include "kernel/staa.glsl"
 #include "kernel/sampling.glsl"
 #include "kernel/specaa.glsl"
+#include "kernel/convex_polygon.glsl"
+#include "kernel/microspec.glsl"
 #include "kernel/reference_path.glsl"
 #include "kernel/poly6_roots.glsl"
 #include "kernel/light_conic.glsl"

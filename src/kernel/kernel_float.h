@@ -18,11 +18,17 @@ vec4 float_staa_temporal_pixel(const WaveBuffer& waves, const Frame& f, int i, i
 // `specaa` (kernel/specaa.glsl): a sample, a pixel from its sample and its quad
 // neighbours', a pixel alone.
 SpecaaSample float_specaa_sample(const WaveBuffer& waves, const Frame& f, real px, real py);
-SpecaaResult float_specaa_shade(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
-                                const SpecaaSample& own, const SpecaaSample& nx,
-                                const SpecaaSample& ny, int i, int j);
-SpecaaResult float_specaa_pixel(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
-                                int i, int j);
+FallbackResult float_specaa_shade(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
+                                  const SpecaaSample& own, const SpecaaSample& nx,
+                                  const SpecaaSample& ny, int i, int j);
+FallbackResult float_specaa_pixel(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
+                                  int i, int j);
+// `microspec` (kernel/microspec.glsl): a corner, a pixel from its corners, a pixel alone.
+CornerReflection float_microspec_corner(const WaveBuffer& waves, const Frame& f, real px, real py);
+FallbackResult float_microspec_shade(const WaveBuffer& waves, const Frame& f,
+                                     const MicrospecParams& p, const PixelCorners& c, int i, int j);
+FallbackResult float_microspec_pixel(const WaveBuffer& waves, const Frame& f,
+                                     const MicrospecParams& p, int i, int j);
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,

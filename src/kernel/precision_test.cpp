@@ -4,8 +4,9 @@
 // reference (docs/porting.md states the measured figures).
 //  - staa, staa-temporal, specaa (smooth in the waves): RMSE(float - double) <= 0.05
 //    RMSE(double - reference);
-//  - point and supersample (a binary test at the disk's rim per sample, where float's
-//    rounding flips a few samples, each by a whole pixel's or sample's worth): at most 0.5%
+//  - point, supersample, microspec (a binary test at the disk's rim per sample or corner
+//    quad, where float's rounding flips a few samples, each by a whole pixel's or sample's
+//    worth): at most 0.5%
 //    of pixels differ by more than 1e-4, and the two RMSEs against the reference within 5%
 //    of each other.
 // Under AddressSanitizer (CI's sanitizer suite, about 10x slower) the same checks run on
@@ -60,6 +61,7 @@ TEST(KernelPrecision, FloatAgreesWithDoubleWithinTheMethodsOwnError) {
        },
        false},
       {"specaa", "specaa", [](MethodOptions&) {}, false},
+      {"microspec", "microspec", [](MethodOptions&) {}, true},
       {"supersample 6x6x1", "supersample",
        [](MethodOptions& o) {
          o.samples = {6, 6, 1};

@@ -74,6 +74,13 @@ SG_FN vec4 water_weights(IN(Frame) f, vec3 nm, vec3 v) {
   return F * above + (1.0 - F) * sea_weights();
 }
 
+// Whether all four weights are finite (NaN fails every comparison): where a baseline's
+// model gives no finite value, it falls back (specaa.glsl, microspec.glsl).
+SG_FN bool finite_weights(vec4 w) {
+  vec4 a = abs(w);
+  return a.x <= 1e30 && a.y <= 1e30 && a.z <= 1e30 && a.w <= 1e30;
+}
+
 // The weights when a fraction `in_light` of the footprint and shutter reflects into the
 // light, `below` below the horizon and the rest into the sky at height `sky_y`; F is the
 // Fresnel factor of the part above the horizon.

@@ -198,19 +198,13 @@ SG_FN vec4 specaa_lobe_weights(IN(Frame) f, IN(SpecaaParams) p, IN(SpecaaSample)
   return combine_weights(f, F, in_light, below, rc.y);
 }
 
-// Whether all four weights are finite (NaN fails every comparison).
-SG_FN bool specaa_finite(vec4 w) {
-  vec4 a = abs(w);
-  return a.x <= 1e30 && a.y <= 1e30 && a.z <= 1e30 && a.w <= 1e30;
-}
-
 // Pixel (i, j) from its own sample and those of its quad neighbours in x (i ^ 1) and in y
 // (j ^ 1), of which only h_perp and specaa_quad_usable are read (a GPU's quad exchanges
 // just those).
-SG_FN SpecaaResult specaa_shade(IN(WaveBuffer) waves, IN(Frame) f, IN(SpecaaParams) p,
-                                IN(SpecaaSample) own, IN(SpecaaSample) nx, IN(SpecaaSample) ny,
-                                int i, int j) {
-  SpecaaResult r;
+SG_FN FallbackResult specaa_shade(IN(WaveBuffer) waves, IN(Frame) f, IN(SpecaaParams) p,
+                                  IN(SpecaaSample) own, IN(SpecaaSample) nx, IN(SpecaaSample) ny,
+                                  int i, int j) {
+  FallbackResult r;
   r.fallback = false;
   if (!own.hit) {
     r.weights = miss_pixel_weights(f, i, j);
@@ -229,7 +223,7 @@ SG_FN SpecaaResult specaa_shade(IN(WaveBuffer) waves, IN(Frame) f, IN(SpecaaPara
       ddy = vec2(d.z, d.w);
     }
     r.weights = specaa_lobe_weights(f, p, own, ddx, ddy);
-    if (specaa_finite(r.weights)) return r;
+    if (finite_weights(r.weights)) return r;
   }
   // The camera under the surface (no footprint, no derivatives) or a lobe whose shading is
   // not finite: the centre ray's radiance (`point`'s, from the sample's own point and
@@ -241,8 +235,8 @@ SG_FN SpecaaResult specaa_shade(IN(WaveBuffer) waves, IN(Frame) f, IN(SpecaaPara
 
 // Pixel (i, j) alone: its sample and, for `quad`, its two neighbours' (a tile or a
 // workgroup shares them instead: methods/specaa.cpp, gl_engine/shaders/main.glsl).
-SG_FN SpecaaResult specaa_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(SpecaaParams) p, int i,
-                                int j) {
+SG_FN FallbackResult specaa_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(SpecaaParams) p, int i,
+                                  int j) {
   SpecaaSample own = specaa_sample(waves, f, real(i) + 0.5, real(j) + 0.5);
   SpecaaSample nx = specaa_no_sample();
   SpecaaSample ny = specaa_no_sample();

@@ -84,7 +84,10 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
   }
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean, o.cascade_fields);
   if (name == "taa") return std::make_unique<TaaMethod>(o.taa);
-  if (name == "microspec") return std::make_unique<MicrospecMethod>(o.microspec);
+  if (name == "microspec") {
+    return std::make_unique<MicrospecMethod>(o.microspec, o.precision,
+                                             intersect_tolerance_for(o, name));
+  }
   if (name == "specaa") {
     return std::make_unique<SpecaaMethod>(o.specaa, o.precision, intersect_tolerance_for(o, name),
                                           o.cascade_fields);

@@ -1,4 +1,4 @@
-// What a host method (the baselines lean, microspec, bruneton, taa) keeps of a
+// What a host method (the baselines lean, bruneton, taa) keeps of a
 // frame: the water's geometry from the kernel (shading/water_geometry.h), built in
 // begin_frame as the kernel methods build their inputs, and the count of the frame's
 // fallback pixels.
@@ -16,8 +16,9 @@
 // A method derives from HostMethod: it calls begin_host_frame(ctx) in begin_frame (the
 // geometry is built, the count reset), reads water(ctx) for the geometry, and calls
 // fallback() (any thread) where its model fails, or finite_or_fallback() on its weights.
-// `specaa`, on the kernel, counts through FallbackCount alone. fallback_pixels(method)
-// reads the count of the last frame, or -1 for a method that does not count.
+// `specaa` and `microspec`, on the kernel, count through FallbackCount alone.
+// fallback_pixels(method) reads the count of the last frame, or -1 for a method that does not
+// count.
 #pragma once
 
 #include <atomic>
@@ -38,7 +39,7 @@ inline bool finite_weights(const RadianceWeights& w) {
 }
 
 // The count of a frame's fallback pixels (any thread adds to it): a host method's, and
-// that of a kernel method whose model can fail (`specaa`, methods/specaa.h).
+// that of a kernel method whose model can fail (`specaa`, `microspec`).
 class FallbackCount {
  public:
   virtual ~FallbackCount() = default;

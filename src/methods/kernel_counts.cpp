@@ -10,6 +10,7 @@
 #include "base/error.h"
 #include "kernel/kernel_counting.h"
 #include "methods/kernel_inputs.h"
+#include "methods/microspec.h"
 #include "methods/specaa.h"
 #include "methods/staa.h"
 #include "methods/stratified.h"
@@ -62,14 +63,14 @@ struct Sums {
 
 bool kernel_work_counted(const std::string& method) {
   return method == "point" || method == "supersample" || method == "staa-temporal" ||
-         method == "staa" || method == "specaa";
+         method == "staa" || method == "specaa" || method == "microspec";
 }
 
 KernelWork count_kernel_work(const SceneModel& m, const std::string& method, const MethodOptions& o,
                              int frame) {
   if (!kernel_work_counted(method)) {
     throw Error("--counters: no counting render for method '" + method +
-                "' (point, supersample, staa-temporal, staa and specaa have one)");
+                "' (point, supersample, staa-temporal, staa, specaa and microspec have one)");
   }
   validate(o);
   const bool super = method == "supersample";
@@ -97,6 +98,8 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
   const kc::PathTableInfo tinfo =
       tables ? same_struct<kc::PathTableInfo>(tables->kernel_info()) : kc::PathTableInfo{};
   const kc::KernelFitInfo finfo = same_struct<kc::KernelFitInfo>(fits.info);
+  const kc::MicrospecParams mparams =
+      same_struct<kc::MicrospecParams>(microspec_kernel_params<kd::MicrospecParams>(o.microspec));
   const kc::SpecaaParams sparams =
       same_struct<kc::SpecaaParams>(specaa_kernel_params<kd::SpecaaParams>(o.specaa));
 
@@ -122,6 +125,18 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
         const kc::SpecaaSample ny = kc::specaa_sample(waves, f, i + 0.5, (j ^ 1) + 0.5);
         c = mine;
         kc::specaa_shade(waves, f, sparams, own, nx, ny, i, j);
+      } else if (method == "microspec") {
+        // An invocation traces its own corner (i, j) and shades; the other three are its
+        // neighbours' (the workgroup's last row and column trace 17 more corners per 64
+        // pixels, not counted here).
+        kc::PixelCorners corners;
+        corners.c[0] = kc::microspec_corner(waves, f, i, j);
+        const KernelCounters mine = c;
+        corners.c[1] = kc::microspec_corner(waves, f, i + 1, j);
+        corners.c[2] = kc::microspec_corner(waves, f, i + 1, j + 1);
+        corners.c[3] = kc::microspec_corner(waves, f, i, j + 1);
+        c = mine;
+        kc::microspec_shade(waves, f, mparams, corners, i, j);
       } else {
         kc::StaaPath path;
         const kc::StaaResult r = kc::staa_pixel(waves, tables->f_texture(), tables->s_texture(),

@@ -28,7 +28,7 @@ struct KernelWork {
 };
 
 // Whether `method` has a counting render: the kernel methods with a per-pixel entry point of
-// their own (point, supersample, staa-temporal, staa, specaa).
+// their own (point, supersample, staa-temporal, staa, specaa, microspec).
 bool kernel_work_counted(const std::string& method);
 
 // Frame `frame` of m with `method` and its options, every pixel (oneTBB's threads, each

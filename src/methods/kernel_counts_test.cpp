@@ -93,6 +93,16 @@ TEST(KernelCounts, SpecaaVisitsTheWavesOnceWithQuadsAndTwiceAnalytic) {
   EXPECT_EQ(analytic.nodes.max, quad.nodes.max);
 }
 
+TEST(KernelCounts, MicrospecVisitsTheWavesOncePerCorner) {
+  // An invocation traces its own corner on flat water (N waves at its point) and shades from
+  // the corners it shares with its neighbours; the light's disk-polygon area has no nodes.
+  const int n = 5;
+  const SceneModel m(water_only(n));
+  const KernelWork k = count_kernel_work(m, "microspec", testing::with_tables({}), 1);
+  EXPECT_DOUBLE_EQ(k.waves.mean, double(n));
+  EXPECT_EQ(k.nodes.max, 0u);
+}
+
 TEST(KernelCounts, StaaCountsItsQuadratureAndTables) {
   Scene s = testing::project_scene("medium");
   set_image_size(s, 32, 18);

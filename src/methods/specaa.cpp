@@ -16,11 +16,11 @@ struct SpecaaDouble {
   static Sample sample(const KernelInputsD& in, double px, double py) {
     return kd::specaa_sample(wave_buffer(in), in.frame, px, py);
   }
-  static kd::SpecaaResult shade(const KernelInputsD& in, const Params& p, const Sample& own,
-                                const Sample& nx, const Sample& ny, int i, int j) {
+  static kd::FallbackResult shade(const KernelInputsD& in, const Params& p, const Sample& own,
+                                  const Sample& nx, const Sample& ny, int i, int j) {
     return kd::specaa_shade(wave_buffer(in), in.frame, p, own, nx, ny, i, j);
   }
-  static kd::SpecaaResult pixel(const KernelInputsD& in, const Params& p, int i, int j) {
+  static kd::FallbackResult pixel(const KernelInputsD& in, const Params& p, int i, int j) {
     return kd::specaa_pixel(wave_buffer(in), in.frame, p, i, j);
   }
 };
@@ -32,11 +32,11 @@ struct SpecaaFloat {
   static Sample sample(const KernelInputsF& in, double px, double py) {
     return kf::float_specaa_sample(wave_buffer(in), in.frame, float(px), float(py));
   }
-  static kf::SpecaaResult shade(const KernelInputsF& in, const Params& p, const Sample& own,
-                                const Sample& nx, const Sample& ny, int i, int j) {
+  static kf::FallbackResult shade(const KernelInputsF& in, const Params& p, const Sample& own,
+                                  const Sample& nx, const Sample& ny, int i, int j) {
     return kf::float_specaa_shade(wave_buffer(in), in.frame, p, own, nx, ny, i, j);
   }
-  static kf::SpecaaResult pixel(const KernelInputsF& in, const Params& p, int i, int j) {
+  static kf::FallbackResult pixel(const KernelInputsF& in, const Params& p, int i, int j) {
     return kf::float_specaa_pixel(wave_buffer(in), in.frame, p, i, j);
   }
 };

@@ -1,19 +1,9 @@
-// The area a disk shares with a polygon: the "result weighting" of the micro-specular
-// highlight (Podee et al., "Micro-specular-highlight real-time rendering", Sec. 3.2), where
-// the light disk on the light plane meets the pixel's reflection space.
-//
-// circle_polygon_area: exact, from the kernel's disk_triangle_area
-// (kernel/disk_coverage.glsl). The polygon is split into the triangles (c, a_k, a_{k+1})
-// fanned from the disk's centre c; each triangle's intersection with the disk is found
-// exactly (its edge a_k a_{k+1} crosses the circle at most twice; the pieces inside the
-// circle contribute triangles, the pieces outside contribute circular sectors) and the
-// signed pieces sum to the intersection area. Exact for any simple polygon, convex or not
-// (positive for counter-clockwise vertices); for a self-intersecting one the sum is the
-// winding-number-weighted area, which is why microspec passes the convex hull.
-//
-// disk_half_plane_area: the disk's area on one side of a line (a circular segment, or the
-// disk minus one). The cheaper approximation of microspec cuts the disk by the reflection
-// space's supporting line nearest the light centre.
+// The area a disk shares with a polygon, for host code: the kernel's
+// (kernel/convex_polygon.glsl: circle_polygon_area, exact for any simple polygon of at most
+// 8 vertices from the kernel's disk_triangle_area, and disk_half_plane_area, the disk's
+// area on one side of a line), the "result weighting" of the micro-specular highlight
+// (Podee et al., "Micro-specular-highlight real-time rendering", Sec. 3.2) and the swept
+// footprint's disk coverage (shading/swept_footprint.h).
 #pragma once
 
 #include <span>
@@ -22,7 +12,8 @@
 
 namespace sg {
 
-// Area of the disk |p - centre| <= R inside the polygon `vertices` (signed by orientation).
+// Area of the disk |p - centre| <= R inside the polygon `vertices` (signed by orientation;
+// sg::Error past 8 vertices).
 double circle_polygon_area(const vec2& centre, double R, std::span<const vec2> vertices);
 
 // Area of the disk of radius R whose centre lies at signed distance d inside a half-plane

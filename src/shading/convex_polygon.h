@@ -1,19 +1,7 @@
-// Small convex polygons in the plane: the reflection space of the micro-specular highlight
-// (Podee, Max, Iwasaki, Dobashi, "Micro-specular-highlight real-time rendering", Sec. 3.1):
-// the four corner reflections of a pixel projected on the light plane.
-//
-// The four projected corners need not form a convex quad: across a wave crest the corner
-// reflections can fold (a dart) or cross (a bow tie). Every reflection the paper's bilinear
-// model interpolates is a convex combination of the four corner vectors, and the gnomonic
-// projection maps a convex combination of directions with r . L > 0 to a convex combination
-// of their images (Phi(sum w_k r_k) = sum [w_k (r_k . L) / sum_j w_j (r_j . L)] Phi(r_k)), so
-// the reflection space always lies in the convex hull of the projected corners. The method
-// therefore works on that hull: for a convex quad it is the quad itself; for a fold or a
-// crossing it is the smallest convex set that holds every interpolated reflection.
-//
-// Vertices are counter-clockwise, without repeats or collinear points; a polygon of fewer
-// than three vertices (coincident or collinear corners) has zero area, and closest_point
-// then works on its segment or point.
+// Small convex polygons in the plane for host code: the kernel's (kernel/convex_polygon.glsl,
+// where the micro-specular highlight's reflection space and the reason it is a convex hull
+// are described), on std::array and spans. Vertices are counter-clockwise, without repeats
+// or collinear points; at most kCapacity of them.
 #pragma once
 
 #include <array>

@@ -32,7 +32,10 @@ FORBIDDEN = [
     (r"\b\d+\.\d*f\b|\b\d+f\b", "no float suffix on literals"),
     # (glm has no swizzles: a multi-component one would not compile in C++ either)
     (r"\.(?:[xyzw]{2,4}|[rgba]{2,4}|[stpq]{2,4})\b(?!\s*\()", "no swizzles beyond one component"),
-    (r"\b(in|out|inout)\s+\w+\s+\w+\s*[,)]", "parameters as IN(T), OUT(T), INOUT(T)"),
+    # GLSL's qualifiers: never a name (a variable `out` compiles as C++, not as GLSL), and
+    # parameters are written IN(T), OUT(T), INOUT(T).
+    (r"\b(in|out|inout)\b", "GLSL's in/out/inout (parameters as IN(T), OUT(T), INOUT(T); "
+     "never a name)"),
     (r"\b(uniform|buffer|shared|layout|discard|gl_\w+)\b", "no shader-stage GLSL in the kernel"),
     (r"\btexelFetch\s*\(\s*waves\b", "the wave buffer is read with wave_texel (ES has no buffers)"),
     (r"=\s*\{", "constant arrays as SG_ARRAY(T, N, (items)) (ES has no brace initialisers)"),

@@ -69,11 +69,38 @@ vec4 specaa_quad_pixel(ivec2 p) {
 }
 #endif
 
+#if defined(SG_METHOD_MICROSPEC)
+uniform MicrospecParams mparams;
+// `microspec`'s corners: the workgroup's 8 x 8 pixels have 9 x 9 corners, each traced once
+// (the last column's and row's invocations trace the extra ones) and shared.
+shared CornerReflection group_corners[81];
+
+vec4 microspec_group_pixel(ivec2 p) {
+  ivec2 l = ivec2(gl_LocalInvocationID.xy);
+  group_corners[l.y * 9 + l.x] = microspec_corner(waves, frame, real(p.x), real(p.y));
+  if (l.x == 7)
+    group_corners[l.y * 9 + 8] = microspec_corner(waves, frame, real(p.x + 1), real(p.y));
+  if (l.y == 7) group_corners[72 + l.x] = microspec_corner(waves, frame, real(p.x), real(p.y + 1));
+  if (l.x == 7 && l.y == 7)
+    group_corners[80] = microspec_corner(waves, frame, real(p.x + 1), real(p.y + 1));
+  barrier();
+  PixelCorners c;
+  c.c[0] = group_corners[l.y * 9 + l.x];
+  c.c[1] = group_corners[l.y * 9 + l.x + 1];
+  c.c[2] = group_corners[(l.y + 1) * 9 + l.x + 1];
+  c.c[3] = group_corners[(l.y + 1) * 9 + l.x];
+  return microspec_shade(waves, frame, mparams, c, p.x, p.y).weights;
+}
+#endif
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
 #if defined(SG_METHOD_SPECAA) && SG_SPECAA_QUAD
   // Before the image's edge test: the quad's barrier is every invocation's.
   vec4 quad_weights = specaa_quad_pixel(p);
+#endif
+#if defined(SG_METHOD_MICROSPEC)
+  vec4 corner_weights = microspec_group_pixel(p);  // likewise
 #endif
   if (p.x >= image_size.x || p.y >= image_size.y) return;
   vec4 w = vec4(0.0);
@@ -105,6 +132,8 @@ void main() {
   w = quad_weights;
 #elif defined(SG_METHOD_SPECAA)
   w = specaa_pixel(waves, frame, sparams, p.x, p.y).weights;
+#elif defined(SG_METHOD_MICROSPEC)
+  w = corner_weights;
 #endif
   imageStore(weights_out, p, w);
 }

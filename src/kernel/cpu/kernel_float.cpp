@@ -31,14 +31,26 @@ vec4 float_staa_temporal_pixel(const WaveBuffer& waves, const Frame& f, int i, i
 SpecaaSample float_specaa_sample(const WaveBuffer& waves, const Frame& f, real px, real py) {
   return specaa_sample(waves, f, px, py);
 }
-SpecaaResult float_specaa_shade(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
-                                const SpecaaSample& own, const SpecaaSample& nx,
-                                const SpecaaSample& ny, int i, int j) {
+FallbackResult float_specaa_shade(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
+                                  const SpecaaSample& own, const SpecaaSample& nx,
+                                  const SpecaaSample& ny, int i, int j) {
   return specaa_shade(waves, f, p, own, nx, ny, i, j);
 }
-SpecaaResult float_specaa_pixel(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
-                                int i, int j) {
+FallbackResult float_specaa_pixel(const WaveBuffer& waves, const Frame& f, const SpecaaParams& p,
+                                  int i, int j) {
   return specaa_pixel(waves, f, p, i, j);
+}
+CornerReflection float_microspec_corner(const WaveBuffer& waves, const Frame& f, real px, real py) {
+  return microspec_corner(waves, f, px, py);
+}
+FallbackResult float_microspec_shade(const WaveBuffer& waves, const Frame& f,
+                                     const MicrospecParams& p, const PixelCorners& c, int i,
+                                     int j) {
+  return microspec_shade(waves, f, p, c, i, j);
+}
+FallbackResult float_microspec_pixel(const WaveBuffer& waves, const Frame& f,
+                                     const MicrospecParams& p, int i, int j) {
+  return microspec_pixel(waves, f, p, i, j);
 }
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
