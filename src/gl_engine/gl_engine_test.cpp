@@ -102,8 +102,9 @@ struct Comparison {
   double gl_cpu = 0, cpu_ref = 0, gl_ref = 0, differ = 0;
 };
 
+// Frames first .. first + ref.size() - 1 of the scene at 160x90, on both engines.
 Comparison compare_engines(const std::string& scene, const std::string& method,
-                           const MethodOptions& o, const std::vector<Image>& ref) {
+                           const MethodOptions& o, const std::vector<Image>& ref, int first = 0) {
   Scene s = testing::project_scene(scene);
   s.width = 160;
   s.height = 90;
@@ -112,7 +113,8 @@ Comparison compare_engines(const std::string& scene, const std::string& method,
   of.precision = Precision::float32;
   std::unique_ptr<Method> cpu = make_method_on(Engine::cpu, method, testing::with_tables(of));
   std::unique_ptr<Method> gl = make_method_on(Engine::gl, method, testing::with_tables(o));
-  const std::vector<Image> a = render(m, *cpu, 0, 2), b = render(m, *gl, 0, 2);
+  const int last = first + static_cast<int>(ref.size()) - 1;
+  const std::vector<Image> a = render(m, *cpu, first, last), b = render(m, *gl, first, last);
   Comparison c;
   c.gl_cpu = compare_sequences(b, a).rmse;
   c.cpu_ref = compare_sequences(a, ref).rmse;
@@ -156,13 +158,16 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineOnTheSharedScenes) {
       const Comparison c = compare_engines(scene, name, o, ref);
       EXPECT_LE(c.gl_cpu, 0.1 * c.cpu_ref) << scene << " " << name;
     }
-    // Binary tests at the disk's rim per sample (or per corner quad): a few flip.
+    // Binary tests at the disk's rim per sample (or per corner quad): a few flip. The
+    // reference on frame 2 only (llvmpipe takes 1-3 s a frame for it here).
     MethodOptions r4;  // other samples than the ground truth's
     r4.samples = {4, 4, 1};
     r4.samples_given = true;
+    const std::vector<Image> ref2(ref.begin() + 2, ref.end());
     for (const auto& [name, o] : std::vector<std::pair<std::string, MethodOptions>>{
              {"point", {}}, {"reference", r4}, {"microspec", {}}}) {
-      const Comparison c = compare_engines(scene, name, o, ref);
+      const bool one = name == "reference";
+      const Comparison c = compare_engines(scene, name, o, one ? ref2 : ref, one ? 2 : 0);
       EXPECT_LE(c.differ, 0.02) << scene << " " << name;
       EXPECT_NEAR(c.gl_ref, c.cpu_ref, 0.05 * c.cpu_ref) << scene << " " << name;
     }
@@ -440,10 +445,11 @@ TEST_F(GlEngineTest, EachFallbackIntegratorMatchesTheCpuEngine) {
 
 TEST_F(GlEngineTest, GlReferenceIsWithinTheNoiseOfTwoCpuSeeds) {
   // The GL reference against the CPU reference with another seed (both at their default
-  // samples): within 1.5 times the RMSE between two CPU seeds.
+  // samples): within 1.5 times the RMSE between two CPU seeds. 96x54, one frame: llvmpipe
+  // takes about 5 s for it (12.6 s a frame at 160x90).
   Scene s = testing::project_scene("medium");
-  s.width = 160;
-  s.height = 90;
+  s.width = 96;
+  s.height = 54;
   const SceneModel m(s);
   MethodOptions a, b;
   b.seed = 7;
@@ -453,7 +459,7 @@ TEST_F(GlEngineTest, GlReferenceIsWithinTheNoiseOfTwoCpuSeeds) {
   RenderSettings rs_b;
   rs_b.seed = 7;
   std::vector<Image> ia, ib, ig;
-  for (int f = 0; f < 2; ++f) {
+  for (int f = 1; f < 2; ++f) {
     ia.push_back(render_frame(m, *cpu_a, f, {}));
     ib.push_back(render_frame(m, *cpu_b, f, rs_b));
     ig.push_back(render_frame(m, *gl, f, {}));

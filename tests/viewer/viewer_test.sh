@@ -136,31 +136,31 @@ expect_apart "the orbit moves the camera (left half)" "$work/render_orbit_point.
 expect_apart "the orbit moves the camera (right half)" "$work/render_orbit_point.png" \
   "$work/render_point0.png" 160 320
 
-# 4. The still-frame reference (160x90): one batch is `render --method reference` of the
+# 4. The still-frame reference (80x45: llvmpipe's reference is slow): one batch is `render --method reference` of the
 # frame; more batches average more seeds (closer to a reference of as many samples); its
 # difference to the method is black where the method is that same batch, not otherwise.
-small=(--width 160 --height 90)
-run view-ref1 "$bin" view "$scene" -m point --frames 1 "${small[@]}" --reference-batches 1 \
+tiny=(--width 80 --height 45)
+run view-ref1 "$bin" view "$scene" -m point --frames 1 "${tiny[@]}" --reference-batches 1 \
   --screenshot "$work/view_ref1.png"
-run render-ref "$bin" render "$scene" -m reference --engine gl --frame 0 "${small[@]}" --display -q \
+run render-ref "$bin" render "$scene" -m reference --engine gl --frame 0 "${tiny[@]}" --display -q \
   -o "$work/render_ref.png"
 expect_close "reference view, 1 batch = render --method reference" 2 "$work/view_ref1.png" \
   "$work/render_ref.png"
-run view-ref4 "$bin" view "$scene" -m point --frames 1 "${small[@]}" --reference-batches 4 \
+run view-ref4 "$bin" view "$scene" -m point --frames 1 "${tiny[@]}" --reference-batches 4 \
   --screenshot "$work/view_ref4.png"
 run render-ref16 "$bin" render "$scene" -m reference --samples 16x16x1 --engine gl --frame 0 \
-  "${small[@]}" --display -q -o "$work/render_ref16.png"
+  "${tiny[@]}" --display -q -o "$work/render_ref16.png"
 e1=$(python3 "$src/tests/viewer/png_diff.py" --sum "$work/view_ref1.png" "$work/render_ref16.png")
 e4=$(python3 "$src/tests/viewer/png_diff.py" --sum "$work/view_ref4.png" "$work/render_ref16.png")
 if [ "$e4" -lt "$e1" ]; then pass; else
   fail "reference view: 4 batches ($e4) not closer than 1 ($e1) to 16x16x1 (sums of |differences|)"
 fi
 peak() { python3 "$src/tests/viewer/png_diff.py" --peak "$1"; }
-run view-refdiff1 "$bin" view "$scene" -m reference --frames 1 "${small[@]}" \
+run view-refdiff1 "$bin" view "$scene" -m reference --frames 1 "${tiny[@]}" \
   --reference-batches 1 --reference-difference 100 --screenshot "$work/view_refdiff1.png"
 p=$(peak "$work/view_refdiff1.png")
 [ "$p" -eq 0 ] && pass || fail "reference difference to itself: not black ($p/255)"
-run view-refdiff2 "$bin" view "$scene" -m reference --frames 1 "${small[@]}" \
+run view-refdiff2 "$bin" view "$scene" -m reference --frames 1 "${tiny[@]}" \
   --reference-batches 2 --reference-difference 100 --screenshot "$work/view_refdiff2.png"
 p=$(peak "$work/view_refdiff2.png")
 [ "$p" -gt 8 ] && pass || fail "reference difference, 2 batches: black ($p/255): one seed only?"
@@ -168,9 +168,10 @@ expect_refused "reference batches without frames" "need --frames" "$work/refused
   "$bin" view "$scene" --reference-batches 2
 
 # 5. A camera in motion: a scripted orbit (30 degrees a second) is keyed over each frame's
-# shutter (supersample with 4 times sees it: motion blur), and the recorded path is a /3
+# shutter (160x90; supersample with 4 times sees it: motion blur), and the recorded path is a /3
 # scene whose render is the view; the last camera held still renders differently. A /3
 # scene's own keys are recorded as its path too.
+small=(--width 160 --height 90)
 blur=(-m supersample --samples 2x2x4)
 run view-orbit-rate "$bin" view "$scene" "${blur[@]}" --frames 3 "${small[@]}" --orbit-rate 30 \
   --screenshot "$work/view_flight.png" --record "$work/flight.json" --save-scene "$work/flight_last.json"
