@@ -202,8 +202,8 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   MethodOptions ro = of;
   ro.samples = {2, 2, 1};
   ro.batches = 8;
-  const char* kDeterministic[] = {"point", "supersample", "staa-temporal",
-                                  "staa",  "specaa",      "microspec"};
+  const char* kDeterministic[] = {"point",  "supersample", "staa-temporal", "staa",
+                                  "specaa", "microspec",   "bruneton"};
   std::map<std::string, std::unique_ptr<Method>> gl, cpu, cpu_double;
   for (const char* n : kDeterministic) {
     gl[n] = make_method_on(Engine::gl, n, testing::with_tables(o));

@@ -10,6 +10,7 @@
 #include "gl/dispatch.h"
 #include "gl_engine/uniforms.h"
 #include "kernel/kernel_float.h"
+#include "methods/bruneton.h"
 #include "methods/microspec.h"
 #include "methods/reference.h"
 #include "methods/specaa.h"
@@ -48,7 +49,7 @@ int pass_samples(int waves, int segments, bool displaced, int cascades) {
 }
 
 const char* gl_methods() {
-  return "point, supersample, reference, staa-temporal, staa, specaa, microspec";
+  return "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton";
 }
 
 GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
@@ -56,8 +57,9 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   GlVariant v;
   v.intersect_tolerance = intersect_tolerance_for(o, method);
   v.cascade_fields =
-      o.cascade_fields && (method == "point" || method == "staa-temporal" || method == "staa" ||
-                           method == "specaa" || (method == "supersample" && o.samples.st == 1));
+      o.cascade_fields &&
+      (method == "point" || method == "staa-temporal" || method == "staa" || method == "specaa" ||
+       method == "bruneton" || (method == "supersample" && o.samples.st == 1));
   v.cascade_fft_gpu = o.cascade_fft_gpu;
   v.cascade_reads = cascade_reads_of(method);
   if (method == "point") {
@@ -101,6 +103,9 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   } else if (method == "microspec") {
     v.entry = KernelEntry::microspec;
     v.microspec = microspec_kernel_params<kf::MicrospecParams>(o.microspec);
+  } else if (method == "bruneton") {
+    v.entry = KernelEntry::bruneton;
+    v.bruneton = bruneton_kernel_params<kf::BrunetonParams>(o.bruneton);
   } else {
     throw Error("--method " + method + ": not on the GL engine (it runs " + gl_methods() +
                 "; use --engine cpu)");
@@ -174,11 +179,13 @@ void GlEngine::upload(const FrameContext& ctx) {
   if (v_.entry != KernelEntry::reference && segments != v_.segments)
     throw Error("GlEngine: a frame of " + std::to_string(segments) + " sub-arcs for a program of " +
                 std::to_string(v_.segments));
-  const bool gpu_fields =
-      v_.cascade_fields && v_.cascade_fft_gpu && cascade_fields_apply(ctx.model);
+  // `bruneton` takes the fields on flat water only (shading/cascade_fields.h).
+  const bool fields =
+      v_.cascade_fields && (v_.entry != KernelEntry::bruneton || !ctx.model.displaced());
+  const bool gpu_fields = fields && v_.cascade_fft_gpu && cascade_fields_apply(ctx.model);
   build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance,
-                      split.windows, v_.cascade_fields,
-                      gpu_fields ? CascadeData::layout : CascadeData::host, v_.cascade_reads);
+                      split.windows, fields, gpu_fields ? CascadeData::layout : CascadeData::host,
+                      v_.cascade_reads);
   if (v_.entry == KernelEntry::staa) {
     // The program for this frame's smooth terms and light (kernel/staa.glsl,
     // staa_frame_terms, staa_frame_light_sets).
@@ -232,6 +239,7 @@ void GlEngine::upload(const FrameContext& ctx) {
   }
   if (v_.entry == KernelEntry::specaa) set_uniforms(u, "sparams", v_.specaa);
   if (v_.entry == KernelEntry::microspec) set_uniforms(u, "mparams", v_.microspec);
+  if (v_.entry == KernelEntry::bruneton) set_uniforms(u, "bparams", v_.bruneton);
   if (v_.entry == KernelEntry::staa) {
     set_uniforms(u, "params", v_.params);
     set_uniforms(u, "tinfo", tinfo_);

@@ -47,6 +47,7 @@ struct GlVariant {
   kf::StaaParams params{};
   kf::SpecaaParams specaa{};
   kf::MicrospecParams microspec{};
+  kf::BrunetonParams bruneton{};
   double intersect_tolerance = 0;  // --intersect-tolerance (shading/kernel_frame.h)
   // --cascades fields: point, staa-temporal, staa and specaa read a scene's cascades from their
   // FFT fields in the wave buffer (shading/cascade_fields.h, built on the host).

@@ -68,6 +68,7 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
   analytic.specaa.derivatives = SpecaaDerivatives::analytic;
   cases.push_back({"specaa", analytic, &plain_model});
   cases.push_back({"microspec", {}, &plain_model});
+  cases.push_back({"bruneton", {}, &plain_model});
   for (const Case& c : cases) {
     const SceneModel& m = *c.m;
     gl_engine::GlEngine engine(c.name, testing::with_tables(c.o));
@@ -87,6 +88,7 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     gl_engine::set_uniforms(probe, "params", v.params);
     gl_engine::set_uniforms(probe, "sparams", v.specaa);
     gl_engine::set_uniforms(probe, "mparams", v.microspec);
+    gl_engine::set_uniforms(probe, "bparams", v.bruneton);
     gl_engine::set_uniforms(probe, "tinfo", kf::PathTableInfo{});
     gl_engine::set_uniforms(probe, "finfo", kf::KernelFitInfo{});
     const std::vector<std::string> active = gl_engine::active_uniforms(engine.program());
@@ -154,7 +156,8 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineOnTheSharedScenes) {
                                                             {"staa", per_pixel},
                                                             {"staa-temporal", {}},
                                                             {"specaa", {}},
-                                                            {"specaa", analytic}}) {
+                                                            {"specaa", analytic},
+                                                            {"bruneton", {}}}) {
       const Comparison c = compare_engines(scene, name, o, ref);
       EXPECT_LE(c.gl_cpu, 0.1 * c.cpu_ref) << scene << " " << name;
     }
@@ -557,7 +560,7 @@ TEST_F(GlEngineTest, DisplacedMarchAdvancesFarFromTheCameraInFloat) {
 
 TEST(GlEngine, RefusesWhatItLacksNamingIt) {
   MethodOptions o;
-  for (const char* m : {"lean", "taa", "bruneton"}) {
+  for (const char* m : {"lean", "taa"}) {
     try {
       gl_engine::gl_variant(m, o);
       ADD_FAILURE() << m << " accepted";

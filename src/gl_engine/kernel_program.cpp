@@ -39,6 +39,8 @@ const char* entry_name(KernelEntry e) {
       return "specaa";
     case KernelEntry::microspec:
       return "microspec";
+    case KernelEntry::bruneton:
+      return "bruneton";
   }
   return "?";
 }
@@ -59,6 +61,8 @@ const char* entry_define(KernelEntry e) {
       return "SG_METHOD_SPECAA";
     case KernelEntry::microspec:
       return "SG_METHOD_MICROSPEC";
+    case KernelEntry::bruneton:
+      return "SG_METHOD_BRUNETON";
   }
   return "";
 }

@@ -11,7 +11,16 @@
 
 namespace sg::gl_engine {
 
-enum class KernelEntry { point, stratified, reference, staa_temporal, staa, specaa, microspec };
+enum class KernelEntry {
+  point,
+  stratified,
+  reference,
+  staa_temporal,
+  staa,
+  specaa,
+  microspec,
+  bruneton
+};
 
 const char* entry_name(KernelEntry e);
 

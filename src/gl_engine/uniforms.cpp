@@ -106,6 +106,13 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::MicrospecPar
   u.set(n + ".exact_area", p.exact_area);
 }
 
+void set_uniforms(UniformWriter& u, const std::string& n, const kf::BrunetonParams& p) {
+  u.set(n + ".n_min", p.n_min);
+  u.set(n + ".n_max", p.n_max);
+  u.set(n + ".min_variance", p.min_variance);
+  u.set(n + ".fresnel_integral", p.fresnel_integral);
+}
+
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::SampleCounts& c) {
   u.set(n + ".sx", c.sx);
   u.set(n + ".sy", c.sy);

@@ -37,6 +37,7 @@ void set_uniforms(UniformWriter& u, const std::string& name, const kf::Frame& f)
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::StaaParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::SpecaaParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::MicrospecParams& p);
+void set_uniforms(UniformWriter& u, const std::string& name, const kf::BrunetonParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::SampleCounts& n);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::ReferenceParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::PathTableInfo& t);

@@ -175,6 +175,14 @@ struct MicrospecParams {
   bool exact_area;  // --microspec-area exact (else approx)
 };
 
+// `bruneton`'s options (methods/options.h, BrunetonOptions; bruneton.glsl).
+struct BrunetonParams {
+  real n_min;             // --bruneton-nmin: w = 0 at lambda / l <= n_min (Sec. 3.2)
+  real n_max;             // --bruneton-nmax: w = 1 at lambda / l >= n_max
+  real min_variance;      // --bruneton-min-variance: the slope variances' clamp (Sec. 5.1)
+  bool fresnel_integral;  // --bruneton-fresnel integral (Eq. 24; else the fit, Eq. 26)
+};
+
 // The reflection at one pixel corner (microspec.glsl, microspec_corner): the water point
 // seen through an image-plane point at the display time, its normal, the mirrored view.
 // Neighbouring pixels share their corners (the CPU's tiles, the GL engine's shared memory).
@@ -190,7 +198,7 @@ struct PixelCorners {
   CornerReflection c[4];
 };
 
-// A baseline's pixel (`specaa`, `microspec`): its weights, and whether its model failed
+// A baseline's pixel (`specaa`, `microspec`, `bruneton`): its weights, and whether its model failed
 // there (the camera under the surface, a shading that is not finite) so that it took the
 // centre ray's radiance.
 struct FallbackResult {

@@ -79,6 +79,51 @@ SG_FN real root_tolerance() {
   return kDoublePrecision ? 1e-9 : 1e-5;
 }
 
+// A root of f bracketed in [a, b] (f(a) > 0 >= f(b)), refined by the Illinois variant of
+// regula falsi (Dowell and Jarratt 1971): the secant's point (the midpoint where rounding
+// puts it outside), and the end kept twice in a row has its value halved.
+struct RootBracket {
+  real a;
+  real fa;
+  real b;
+  real fb;
+  int side;
+};
+
+SG_FN RootBracket root_bracket(real a, real fa, real b, real fb) {
+  RootBracket br;
+  br.a = a;
+  br.fa = fa;
+  br.b = b;
+  br.fb = fb;
+  br.side = 0;
+  return br;
+}
+// Whether to refine further: f(a) > 0 and f(b) below the root tolerance.
+SG_FN bool root_bracket_open(IN(RootBracket) br) {
+  return br.fa > 0.0 && -br.fb > root_tolerance();
+}
+SG_FN real root_bracket_next(IN(RootBracket) br) {
+  real c = (br.a * br.fb - br.b * br.fa) / (br.fb - br.fa);
+  if (!(c > br.a && c < br.b)) c = 0.5 * (br.a + br.b);
+  return c;
+}
+// Takes f(c) = fc; true once the bracket is at rounding width.
+SG_FN bool root_bracket_take(INOUT(RootBracket) br, real c, real fc) {
+  if (fc > 0.0) {
+    br.a = c;
+    br.fa = fc;
+    if (br.side == -1) br.fb *= 0.5;
+    br.side = -1;
+  } else {
+    br.b = c;
+    br.fb = fc;
+    if (br.side == 1) br.fa *= 0.5;
+    br.side = 1;
+  }
+  return br.b - br.a <= 4.0 * kRealEpsilon * abs(br.b);
+}
+
 SG_FN RayHit no_hit() {
   RayHit r;
   r.hit = false;
@@ -322,25 +367,13 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
         b = a;
         fb = fa;
       }
-      int side = 0;
-      for (int it = 0; it < kMaxRefineSteps && fa > 0.0 && -fb > root_tolerance(); ++it) {
-        real c = (a * fb - b * fa) / (fb - fa);
-        if (!(c > a && c < b)) c = 0.5 * (a + b);
-        real fc = height_above_first(waves, f, m.n, m.nc, o, d, c, dt);
-        if (fc > 0.0) {
-          a = c;
-          fa = fc;
-          if (side == -1) fb *= 0.5;
-          side = -1;
-        } else {
-          b = c;
-          fb = fc;
-          if (side == 1) fa *= 0.5;
-          side = 1;
-        }
-        if (b - a <= 4.0 * kRealEpsilon * abs(b)) break;
+      RootBracket br = root_bracket(a, fa, b, fb);
+      for (int it = 0; it < kMaxRefineSteps && root_bracket_open(br); ++it) {
+        real c = root_bracket_next(br);
+        if (root_bracket_take(br, c, height_above_first(waves, f, m.n, m.nc, o, d, c, dt))) break;
       }
       // b is on the surface's side f <= 0 within the tolerance; keep its exact height.
+      b = br.b;
       fb = height_above_first(waves, f, m.n, m.nc, o, d, b, dt);
       r.hit = true;
       r.s = b;

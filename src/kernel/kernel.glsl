@@ -39,6 +39,8 @@
 #include "kernel/specaa.glsl"
 #include "kernel/convex_polygon.glsl"
 #include "kernel/microspec.glsl"
+#include "kernel/ocean_brdf.glsl"
+#include "kernel/bruneton.glsl"
 #include "kernel/reference_path.glsl"
 #include "kernel/poly6_roots.glsl"
 #include "kernel/light_conic.glsl"

@@ -29,6 +29,9 @@ FallbackResult float_microspec_shade(const WaveBuffer& waves, const Frame& f,
                                      const MicrospecParams& p, const PixelCorners& c, int i, int j);
 FallbackResult float_microspec_pixel(const WaveBuffer& waves, const Frame& f,
                                      const MicrospecParams& p, int i, int j);
+// `bruneton` (kernel/bruneton.glsl): a pixel.
+FallbackResult float_bruneton_pixel(const WaveBuffer& waves, const Frame& f,
+                                    const BrunetonParams& p, int i, int j);
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,

@@ -62,6 +62,7 @@ TEST(KernelPrecision, FloatAgreesWithDoubleWithinTheMethodsOwnError) {
        false},
       {"specaa", "specaa", [](MethodOptions&) {}, false},
       {"microspec", "microspec", [](MethodOptions&) {}, true},
+      {"bruneton", "bruneton", [](MethodOptions&) {}, false},
       {"supersample 6x6x1", "supersample",
        [](MethodOptions& o) {
          o.samples = {6, 6, 1};

@@ -92,7 +92,8 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
     return std::make_unique<SpecaaMethod>(o.specaa, o.precision, intersect_tolerance_for(o, name),
                                           o.cascade_fields);
   }
-  if (name == "bruneton") return std::make_unique<BrunetonMethod>(o.bruneton, o.cascade_fields);
+  if (name == "bruneton")
+    return std::make_unique<BrunetonMethod>(o.bruneton, o.precision, o.cascade_fields);
   std::string list;
   for (const auto& m : method_catalog())
     list += (list.empty() ? "" : ", ") + m.name;

@@ -124,8 +124,8 @@ TEST_F(FinitePropertyGl, GlEngineIsFiniteOnRandomValidScenes) {
   testing::RandomScenes gen(20240611);
   const MethodOptions opt = cheap_options();
   std::vector<std::pair<std::string, std::unique_ptr<Method>>> methods;
-  for (const char* n :
-       {"point", "supersample", "reference", "staa-temporal", "staa", "specaa", "microspec"})
+  for (const char* n : {"point", "supersample", "reference", "staa-temporal", "staa", "specaa",
+                        "microspec", "bruneton"})
     methods.emplace_back(n, make_method_on(Engine::gl, n, testing::with_tables(opt)));
   RenderSettings rs;
   rs.threads = 1;

@@ -1,12 +1,13 @@
-// A scene's lattice cascades for the baselines shaded on the host (`lean`, `bruneton`;
-// `specaa` reads them in the kernel, kernel/specaa.glsl): per frame, the cascades' FFT fields and
-// LEAN chains built by the kernel's frame inputs (shading/cascade_fields.h), read per pixel through
-// the kernel's functions (kernel/cascade_fields.glsl), so that these methods cost a few fetches per
-// cascade instead of a sum over every lattice sine. The explicit waves stay the method's own.
+// A scene's lattice cascades for the baseline shaded on the host (`lean`; `specaa` and
+// `bruneton` read them in the kernel, kernel/specaa.glsl, kernel/bruneton.glsl): per frame,
+// the cascades' FFT fields and LEAN chains built by the kernel's frame inputs
+// (shading/cascade_fields.h), read per pixel through the kernel's functions
+// (kernel/cascade_fields.glsl), so that the method costs a few fetches per cascade instead
+// of a sum over every lattice sine. The explicit waves stay the method's own.
 //
-// What each baseline takes from them, at the display time (docs/ocean.md, "Shading from
+// What the baseline takes from them, at the display time (docs/ocean.md, "Shading from
 // the cascades"):
-//   lean, bruneton  the slopes' mean and covariance over the pixel's footprint (LEAN's
+//   lean            the slopes' mean and covariance over the pixel's footprint (LEAN's
 //                   filtered moments, Olano and Baker 2010, Sec. 3), added to those of the
 //                   explicit waves (cascade_footprint_moments).
 // They apply on flat water with `--cascades fields` (the default); elsewhere (displaced

@@ -9,6 +9,7 @@
 
 #include "base/error.h"
 #include "kernel/kernel_counting.h"
+#include "methods/bruneton.h"
 #include "methods/kernel_inputs.h"
 #include "methods/microspec.h"
 #include "methods/specaa.h"
@@ -63,19 +64,22 @@ struct Sums {
 
 bool kernel_work_counted(const std::string& method) {
   return method == "point" || method == "supersample" || method == "staa-temporal" ||
-         method == "staa" || method == "specaa" || method == "microspec";
+         method == "staa" || method == "specaa" || method == "microspec" || method == "bruneton";
 }
 
 KernelWork count_kernel_work(const SceneModel& m, const std::string& method, const MethodOptions& o,
                              int frame) {
   if (!kernel_work_counted(method)) {
     throw Error("--counters: no counting render for method '" + method +
-                "' (point, supersample, staa-temporal, staa, specaa and microspec have one)");
+                "' (point, supersample, staa-temporal, staa, specaa, microspec and bruneton have "
+                "one)");
   }
   validate(o);
   const bool super = method == "supersample";
   const int segments = method == "staa" || method == "staa-temporal" ? o.staa.segments : 1;
-  const bool fields = o.cascade_fields && (!super || o.samples.st == 1);
+  // bruneton: the cascades' fields on flat water only (shading/cascade_fields.h).
+  const bool fields =
+      o.cascade_fields && (!super || o.samples.st == 1) && (method != "bruneton" || !m.displaced());
   KernelFrameInputs inputs(
       segments, Precision::float64,
       super ? stratified_intersect_tolerance(o) : intersect_tolerance_for(o, method), 1, fields);
@@ -100,6 +104,8 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
   const kc::KernelFitInfo finfo = same_struct<kc::KernelFitInfo>(fits.info);
   const kc::MicrospecParams mparams =
       same_struct<kc::MicrospecParams>(microspec_kernel_params<kd::MicrospecParams>(o.microspec));
+  const kc::BrunetonParams bparams =
+      same_struct<kc::BrunetonParams>(bruneton_kernel_params<kd::BrunetonParams>(o.bruneton));
   const kc::SpecaaParams sparams =
       same_struct<kc::SpecaaParams>(specaa_kernel_params<kd::SpecaaParams>(o.specaa));
 
@@ -137,6 +143,8 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
         corners.c[3] = kc::microspec_corner(waves, f, i, j + 1);
         c = mine;
         kc::microspec_shade(waves, f, mparams, corners, i, j);
+      } else if (method == "bruneton") {
+        kc::bruneton_pixel(waves, f, bparams, i, j);
       } else {
         kc::StaaPath path;
         const kc::StaaResult r = kc::staa_pixel(waves, tables->f_texture(), tables->s_texture(),

@@ -84,7 +84,8 @@ inline double cascade_instant(const FrameTime& ft, int segments, int k) {
 //   display_level0: level 0 of the display time, its slopes and height (`point`,
 //     `supersample` with T = 1);
 //   display_chain: the display time's whole chain alone (`specaa`, whose kernel reads level
-//     0's Hessian; the host's baselines `lean`, `bruneton`: methods/host_cascades.h), its
+//     0's Hessian; `bruneton`, the footprint's moments; the host's `lean`:
+//     methods/host_cascades.h), its
 //     texels those of `all`, the other instants' 0
 //     (CascadeFields.DisplayChainIsTheWholeFieldsDisplayTime).
 // With the level-0 reads, level 0 holds (s_x, s_z, 0, 0), (0, h, 0, 0) at the display time and
@@ -98,6 +99,10 @@ inline CascadeReads cascade_reads_of(const std::string& method) {
   if (method == "staa") return CascadeReads::all;
   if (method == "staa-temporal") return CascadeReads::instants_level0;
   if (method == "specaa") return CascadeReads::display_chain;  // level 0's Hessian
+  // The footprint's moments (kernel/bruneton.glsl): its chain. On flat water only: the
+  // filtered displaced surface weighs each wave's height by its own weight, which a
+  // cascade's field does not have; there its lattice is sines among the waves.
+  if (method == "bruneton") return CascadeReads::display_chain;
   return CascadeReads::display_level0;
 }
 

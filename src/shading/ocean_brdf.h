@@ -1,6 +1,7 @@
 // The ocean BRDF and lighting of Bruneton, Neyret, Holzschuch 2010 ("Real-time Realistic
 // Ocean Lighting using Seamless Transitions from Geometry to BRDF", docs/references.md,
-// Sec. 4-5): the anisotropic Gaussian
+// Sec. 4-5), the host's double wrappers of the kernel's (kernel/ocean_brdf.glsl, which
+// `bruneton` shades with), checked against quadrature in ocean_brdf_test: the anisotropic Gaussian
 // BRDF of Ross, Dion, Potvin 2005 with Smith shadowing, the reflected sun (Eq. 15), the
 // effective Fresnel reflectance (Eqs. 24, 26) and the filtered environment (Eq. 27).
 //
@@ -32,7 +33,8 @@ double slope_pdf(const vec2& zeta, const vec2& sigma2);
 // sigma_y^2 sin^2(phi).
 double slope_variance_toward(const vec3& w, const vec2& sigma2);
 
-// Eq. 9 (with tan^2, see above): a = cot(theta) / sqrt(2 sigma_phi^2); +inf at the zenith.
+// Eq. 9 (with tan^2, see above): a = cot(theta) / sqrt(2 sigma_phi^2); the largest double
+// at the zenith.
 double smith_a(const vec3& w, const vec2& sigma2);
 
 // Eq. 8: Smith's Lambda for Gaussian slopes, (exp(-a^2) - a sqrt(pi) erfc(a)) /
@@ -57,8 +59,9 @@ double sun_reflectance(const vec3& v, const vec3& l, const vec2& sigma2, double 
 double effective_fresnel_fit(double cos_theta_v, double sigma_v);
 
 // Eq. 24 by quadrature: R + (1 - R) int q^e_vn(zeta, v) (1 - v . f(zeta))^5 d^2 zeta, with f
-// the facet normal (the half vector of v and its reflection). Gauss-Legendre in the view's
-// azimuthal frame, where the visible region is the half-plane of slopes u < cot(theta_v).
+// the facet normal (the half vector of v and its reflection). 40 x 40 Gauss-Legendre nodes
+// in the view's azimuthal frame, where the visible region is the half-plane of slopes
+// u < cot(theta_v).
 double effective_fresnel_integral(const vec3& v, const vec2& sigma2);
 
 // Eq. 27 with the stereographic map U(r) = (r.x, r.z) / (1 + r.y) (world y up; Sec. 5.2):

@@ -69,57 +69,6 @@ RayHit WaterGeometry::intersect_displaced(const vec3& origin, const vec3& dir, d
   return to_world(in_->in.origin, h);
 }
 
-RayHit WaterGeometry::intersect_filtered(std::span<const double> w, const vec3& origin,
-                                         const vec3& dir, double t) const {
-  const KernelInputsD& all = in_->in;
-  const int n = static_cast<int>(w.size());
-  if (n > all.frame.wave_count) {
-    throw Error("WaterGeometry::intersect_filtered: " + std::to_string(n) + " weights for " +
-                std::to_string(all.frame.wave_count) + " waves");
-  }
-  const int stride = all.frame.wave_stride;
-  // The texels and the arrays of the vectorised sums with amplitudes A w (the arrays
-  // padded with amplitude 0 to the lanes' multiple); the other arrays are the frame's.
-  const int padded =
-      (n + wave_simd::kLanePadding - 1) / wave_simd::kLanePadding * wave_simd::kLanePadding;
-  thread_local std::vector<kd::vec4> texels;
-  thread_local std::vector<double> A, a, b, slope;
-  texels.assign(all.texels.begin(), all.texels.begin() + kd::wave_texel_index(stride, n));
-  const kd::WaveBuffer frame_waves = wave_buffer(all, false);
-  A.assign(padded, 0.0);
-  slope.assign(padded, 0.0);
-  a.resize(n);
-  b.resize(n);
-  double amplitude = 0, slope_sum = 0;
-  for (int q = 0; q < n; ++q) {
-    kd::Wave wave = kd::wave_at(frame_waves, all.frame, q);
-    wave.A *= w[q];
-    wave.slope *= w[q];
-    texels[kd::wave_texel_index(stride, q)] = kd::wave_pack_phase(wave);
-    texels[kd::wave_texel_index(stride, q) + 1] = kd::wave_pack_motion(wave);
-    A[q] = wave.A;
-    slope[q] = wave.slope;
-    a[q] = wave.a;
-    b[q] = wave.b;
-    amplitude += std::abs(A[q]);
-    slope_sum += std::abs(slope[q]);
-  }
-  write_wave_sums(std::span<const double>(A.data(), n), a, b, stride, texels);
-  kd::Frame f = all.frame;
-  f.wave_count = n;
-  f.amplitude_bound = amplitude;
-  f.slope_bound = slope_sum;
-  wave_simd::Arrays<double> arrays = all.arrays();
-  arrays.A = A.data();
-  arrays.slope = slope.data();
-  arrays.count = n;
-  const kd::WaveBuffer wb{texels.data(), static_cast<int>(texels.size()), arrays};
-  const double len = length(dir);
-  kd::RayHit h = kd::intersect_displaced(wb, f, origin - in_->in.origin, dir / len, t - time_.end);
-  h.s /= len;
-  return to_world(in_->in.origin, h);
-}
-
 double WaterGeometry::height(double x, double z, double t) const {
   const vec3 p = vec3(x, 0, z) - in_->in.origin;
   return kd::water_height(wave_buffer(in_->in), in_->in.frame, p.x, p.z, t - time_.end);

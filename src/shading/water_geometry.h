@@ -48,11 +48,6 @@ class WaterGeometry {
   RayHit intersect(const vec3& origin, const vec3& dir, double t) const;
   // The same on displaced water whatever the scene's geometry.
   RayHit intersect_displaced(const vec3& origin, const vec3& dir, double t) const;
-  // The first hit of the height field whose first w.size() waves in the kernel's order
-  // (by |k| ascending, ties in file order: the order of shading/wave_lod.h's SortedWaves)
-  // have amplitudes A_i w_i and the others none: a filtered surface (Bruneton et al. 2010).
-  RayHit intersect_filtered(std::span<const double> w, const vec3& origin, const vec3& dir,
-                            double t) const;
 
   double height(double x, double z, double t) const;
   // (dh/dx, dh/dz)

@@ -15,7 +15,6 @@
 #include "base/error.h"
 #include "math/rng.h"
 #include "scene/camera.h"
-#include "shading/wave_lod.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -144,42 +143,6 @@ TEST(WaterGeometry, TheMarchIsBoundedWhateverTheRay) {
   // A ray that meets the slab's floor going down hits; one that leaves upwards misses.
   EXPECT_TRUE(water.g.intersect(vec3(0, 0.1, 0), vec3(1, -0.1, 0), 0).hit);
   EXPECT_FALSE(water.g.intersect(vec3(0, 0.1, 0), vec3(1, 0.1, 0), 0).hit);
-}
-
-TEST(WaterGeometry, FilteredSurfaceIsTheWeightedWaves) {
-  // The first waves in |k| order at weights w, the rest left out: the same hits as the
-  // geometry of a model holding exactly those waves at those amplitudes.
-  auto waves = testing::project_scene("simple").surface.waves;
-  const Water all(waves);
-  const SortedWaves sorted(all.m.waves);
-  const size_t n = std::min<size_t>(5, sorted.size());
-  const WaveField& prefix = sorted.prefix(n);
-  std::vector<double> w(n);
-  std::vector<Wave> kept;
-  for (size_t q = 0; q < n; ++q) {
-    w[q] = 1.0 - 0.15 * double(q);
-    kept.push_back(
-        Wave{prefix.A[q] * w[q], vec2(prefix.a[q], prefix.b[q]), prefix.c[q], prefix.phi[q]});
-  }
-  const Water filtered(kept);
-  const CameraModel& cam = all.m.camera;
-  int hits = 0;
-  for (int j = 18; j < 36; j += 3) {
-    for (int i = 0; i < 64; i += 7) {
-      const vec3 d = cam.direction(i + 0.5, j + 0.5);
-      const RayHit a = all.g.intersect_filtered(w, cam.position(), d, 0.3);
-      const RayHit b = filtered.g.intersect(cam.position(), d, 0.3);
-      ASSERT_EQ(a.hit, b.hit) << i << "," << j;
-      if (!a.hit) continue;
-      ++hits;
-      EXPECT_NEAR(a.s, b.s, 1e-9 * b.s) << i << "," << j;
-    }
-  }
-  EXPECT_GT(hits, 20);
-  // More weights than waves: an error, not a read past the buffer.
-  EXPECT_THROW(all.g.intersect_filtered(std::vector<double>(sorted.size() + 1, 1.0), cam.position(),
-                                        cam.direction(1, 30), 0.0),
-               Error);
 }
 
 TEST(WaterGeometry, HeightGradientAndHessianAreTheWaves) {

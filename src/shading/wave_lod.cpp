@@ -4,29 +4,23 @@
 #include <cmath>
 #include <numeric>
 
-#include "shading/aliasing.h"
+#include "kernel/kernel_double.h"
 
 namespace sg {
 
 double lod_weight(double a, double b, double x) {
-  const double t = std::clamp((x - a) / (b - a), 0.0, 1.0);
-  return t * t * (3 - 2 * t);
+  return kd::lod_weight(a, b, x);
 }
 
 void wave_lod_weights(const WaveField& waves, const mat2& J, double n_min, double n_max,
                       std::vector<double>& w) {
   w.resize(waves.size());
-  for (size_t i = 0; i < waves.size(); ++i) {
-    const double f = projected_frequency(vec2(waves.a[i], waves.b[i]), J, FrequencyNorm::max);
-    w[i] = f > 0 ? lod_weight(n_min, n_max, 1.0 / f) : 1.0;
-  }
+  for (size_t i = 0; i < waves.size(); ++i)
+    w[i] = kd::wave_lod_weight(vec2(waves.a[i], waves.b[i]), J, n_min, n_max);
 }
 
 double smallest_singular_value(const mat2& m) {
-  const double t = dot(m[0], m[0]) + dot(m[1], m[1]);
-  const double det = std::fabs(determinant(m));
-  const double smax = std::sqrt(0.5 * (t + std::sqrt(std::max(t * t - 4 * det * det, 0.0))));
-  return smax > 0 ? det / smax : 0;
+  return kd::smallest_singular_value(m);
 }
 
 SortedWaves::SortedWaves(const WaveField& w) {
@@ -55,10 +49,8 @@ SortedWaves::SortedWaves(const WaveField& w) {
 }
 
 size_t SortedWaves::filtered_from(const mat2& J, double n_min) const {
-  const double sigma = smallest_singular_value(J);
-  if (!(sigma > 0)) return size();
-  // 1.001: the bound's rounding.
-  const double k = 1.001 * kTwoPi * std::sqrt(2.0) / (n_min * sigma);
+  const double k = kd::lod_cutoff_wavenumber(J, n_min);
+  if (!(k < kd::kRealMax)) return size();
   return size_t(std::lower_bound(k_.begin(), k_.end(), k) - k_.begin());
 }
 

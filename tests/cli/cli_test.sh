@@ -580,7 +580,7 @@ expect_rc "view with another method's flag" 2 "--samples: not a flag of any of t
 expect_no_file "flags of other methods" "$work/x.exr"
 # The viewer has no CPU engine: its message does not send the user to one.
 expect_rc_without "view a method the GL engine lacks" 2 \
-  "--method lean: the viewer renders on the GL engine, which runs point, supersample, reference, staa-temporal, staa, specaa, microspec (render lean on the CPU with: sunglint render SCENE -m lean -o FILE)" \
+  "--method lean: the viewer renders on the GL engine, which runs point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton (render lean on the CPU with: sunglint render SCENE -m lean -o FILE)" \
   "--engine cpu" "$bin" view "$scene" -m lean
 expect_rc_without "view --split of a method the GL engine lacks" 2 "--split taa: the viewer renders on the GL engine" \
   "--engine cpu" "$bin" view "$scene" -m point --split taa

@@ -69,6 +69,9 @@ vec4 specaa_quad_pixel(ivec2 p) {
 }
 #endif
 
+#if defined(SG_METHOD_BRUNETON)
+uniform BrunetonParams bparams;
+#endif
 #if defined(SG_METHOD_MICROSPEC)
 uniform MicrospecParams mparams;
 // `microspec`'s corners: the workgroup's 8 x 8 pixels have 9 x 9 corners, each traced once
@@ -134,6 +137,8 @@ void main() {
   w = specaa_pixel(waves, frame, sparams, p.x, p.y).weights;
 #elif defined(SG_METHOD_MICROSPEC)
   w = corner_weights;
+#elif defined(SG_METHOD_BRUNETON)
+  w = bruneton_pixel(waves, frame, bparams, p.x, p.y).weights;
 #endif
   imageStore(weights_out, p, w);
 }

@@ -52,6 +52,10 @@ FallbackResult float_microspec_pixel(const WaveBuffer& waves, const Frame& f,
                                      const MicrospecParams& p, int i, int j) {
   return microspec_pixel(waves, f, p, i, j);
 }
+FallbackResult float_bruneton_pixel(const WaveBuffer& waves, const Frame& f,
+                                    const BrunetonParams& p, int i, int j) {
+  return bruneton_pixel(waves, f, p, i, j);
+}
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,
