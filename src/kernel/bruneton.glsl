@@ -55,19 +55,6 @@
 // direction) or the shading is not finite, the pixel takes the centre ray's radiance
 // (point_pixel) and says so.
 
-// w(a, b, x) of Sec. 3.2.
-SG_FN real lod_weight(real a, real b, real x) {
-  real t = clamp((x - a) / (b - a), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
-// w(n_min, n_max, lambda / l) of wave vector k for a pixel whose footprint maps image-plane
-// offsets to horizontal offsets by J; a wave with no phase change across the pixel keeps 1.
-SG_FN real wave_lod_weight(vec2 k, mat2 J, real n_min, real n_max) {
-  real fq = projected_frequency(k, J, true);
-  return fq > 0.0 ? lod_weight(n_min, n_max, 1.0 / fq) : 1.0;
-}
-
 // The wavenumber from which every wave has w = 0 for footprint J and N_min, 1.001 for the
 // bound's rounding (the largest real when none is certain; smallest_singular_value:
 // staa.glsl, whose fully aliasing waves are cut the same way).
@@ -84,27 +71,59 @@ SG_FN int lod_filtered_from(IN(WaveBuffer) waves, IN(Frame) f, mat2 J, real n_mi
   return first_wave_from(waves, f, k);
 }
 
-// Wave i with its amplitude (and slope bound) scaled by its filter weight.
+// Wave i at its filter weight.
 SG_FN Wave filtered_wave(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p, mat2 J, int i) {
-  Wave w = wave_at(waves, f, i);
-  real weight = wave_lod_weight(vec2(w.a, w.b), J, p.n_min, p.n_max);
-  w.A *= weight;
-  w.slope *= weight;
-  return w;
+  return filtered_wave_of(wave_at(waves, f, i), J, p.n_min, p.n_max);
 }
 
+// The filtered sums (bruneton_waves.glsl) over waves lo <= i < hi, hi - lo <= kMarchBlock,
+// at camera-relative (x, z) at the display time; and a pixel's filtered slopes over its
+// first n waves, eight an iteration (llvmpipe ends an invocation's loops after 65535
+// iterations, waves.glsl). The CPU engine sums the same terms in SIMD lanes
+// (SG_CPU_WAVE_SUMS, kernel/cpu/lane_passes.inc).
+SG_FN FilteredSums wave_sum_filtered(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p,
+                                     mat2 J, int lo, int hi, real x, real z, vec2 u) {
+  FilteredSums s = filtered_sums_zero();
+  for (int j = 0; j < kMarchBlock; ++j) {
+    if (lo + j < hi) filtered_sums_add(s, filtered_wave(waves, f, p, J, lo + j), x, z, u);
+  }
+  return s;
+}
+
+SG_FN FilteredSlopes wave_sum_filtered_slopes(IN(WaveBuffer) waves, IN(Frame) f,
+                                              IN(BrunetonParams) p, mat2 J, int n, real x, real z) {
+  FilteredSlopes s = filtered_slopes_zero();
+  for (int i = 0; i < n; i += kHeightUnroll) {
+    for (int j = 0; j < kHeightUnroll; ++j) {
+      if (i + j < n) filtered_slopes_add(s, wave_at(waves, f, i + j), J, p.n_min, p.n_max, x, z);
+    }
+  }
+  return s;
+}
+
+#ifdef SG_CPU_WAVE_SUMS
+FilteredSums filtered_sums(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p, mat2 J, int lo,
+                           int hi, real x, real z, vec2 u);
+FilteredSlopes filtered_slopes(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p, mat2 J,
+                               int n, real x, real z);
+#else
+SG_FN FilteredSums filtered_sums(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p, mat2 J,
+                                 int lo, int hi, real x, real z, vec2 u) {
+  return wave_sum_filtered(waves, f, p, J, lo, hi, x, z, u);
+}
+SG_FN FilteredSlopes filtered_slopes(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p,
+                                     mat2 J, int n, real x, real z) {
+  return wave_sum_filtered_slopes(waves, f, p, J, n, x, z);
+}
+#endif
+
 // The filtered surface's height and its slope along horizontal u at camera-relative
-// (x, z), the display time: the first n waves, each at its weight, eight an iteration (as
-// waves.glsl's march sums: llvmpipe ends an invocation's loops after 65535 iterations).
+// (x, z), the display time: the first n waves, each at its weight.
 SG_FN vec2 filtered_height_slope(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p, mat2 J,
                                  int n, real x, real z, vec2 u) {
   vec2 r = vec2(0.0);
-  for (int i = 0; i < n; i += kHeightUnroll) {
-    for (int q = 0; q < kHeightUnroll; ++q) {
-      if (i + q < n)
-        r += wave_height_slope_of(filtered_wave(waves, f, p, J, i + q), x, z, 0.0, u.x, u.y);
-    }
-  }
+  for (int lo = 0; lo < n; lo += kMarchBlock)
+    r += filtered_sums(waves, f, p, J, lo, min(lo + kMarchBlock, n), x, z, u).hs;
   return r;
 }
 
@@ -119,26 +138,67 @@ SG_FN RayHit filtered_surface_hit(IN(WaveBuffer) waves, IN(Frame) f, IN(Bruneton
   return r;
 }
 
+// One look at the filtered f(s) = y(s) - h(s) from s, as intersect.glsl's march_probe: the
+// first n waves summed kMarchBlock at a time in |k| order with the height's slope along the
+// ray and their filtered bounds. After the first hi waves, f >= f_hi - e_hi (e_hi the
+// filtered amplitude of waves hi..n, the whole's less the waves summed) and f_hi changes at
+// most at the rate and curvature of the waves summed, so no zero lies within the larger of
+// the first- and second-order steps from f_hi - e_hi; the sum stops once that step is at
+// least what every wave's first-order step could be, (f_hi + e_hi) / Lip. b.x, b.y, b.z:
+// the filtered sums of |A|, |A| |k| and |A| |k|^2 over the n waves.
+struct FilteredProbe {
+  real step;  // f has no zero in [s, s + step)
+  bool full;  // every one of the n waves summed: f is f(s)
+  real f;
+};
+
+SG_FN FilteredProbe filtered_probe(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p, mat2 J,
+                                   int n, vec3 o, vec3 d, real s, vec3 b, real lip, real min_step) {
+  FilteredProbe r;
+  vec3 q = o + s * d;
+  r.step = 0.0;
+  r.full = n == 0;
+  r.f = q.y;
+  real dxz = length(vec2(d.x, d.z));
+  vec2 hs = vec2(0.0);
+  vec3 summed = vec3(0.0);  // the filtered sums of |A|, |A| |k|, |A| |k|^2 so far
+  for (int lo = 0; lo < n; lo += kMarchBlock) {
+    int hi = min(n, lo + kMarchBlock);
+    FilteredSums bs = filtered_sums(waves, f, p, J, lo, hi, q.x, q.z, vec2(d.x, d.z));
+    hs += bs.hs;
+    summed += bs.bounds;
+    real fn = q.y - hs.x;
+    real e = hi < n ? max(b.x - summed.x, 0.0) + graze_depth() : 0.0;
+    real g = fn - e;
+    if (g > 0.0) {
+      real lip_hi = abs(d.y) + summed.y * dxz;
+      r.step = max(r.step,
+                   max(g / lip_hi, march_second_order_step(g, d.y - hs.y, summed.z * dxz * dxz)));
+    }
+    if (hi == n) {
+      r.full = true;
+      r.f = fn;
+      break;
+    }
+    if (r.step >= max((fn + e) / lip, min_step)) break;
+  }
+  if (r.full) r.step = max(r.step, max(r.f / lip, min_step));
+  return r;
+}
+
 // The first hit of the unit ray o + s d with the filtered surface y = sum_{i<n} w_i A_i
-// sin(theta_i): the march of intersect.glsl with the filtered amplitudes' bounds (the slab
-// |y| <= sum w |A|, the rate Lip = |d.y| + (sum w |A| |k|) |d.xz| and the curvature
-// (sum w |A| |k|^2) |d.xz|^2), every one of the n waves at every step, refined by Illinois
-// to root_tolerance. hit.s = 0 where the camera is under the filtered surface.
+// sin(theta_i): the march of intersect.glsl (filtered_probe's steps; the slab
+// |y| <= sum w |A| and the rate Lip = |d.y| + (sum w |A| |k|) |d.xz| of the filtered
+// amplitudes), refined by Illinois to root_tolerance (RootBracket). hit.s = 0 where the camera is
+// under the filtered surface.
 SG_FN RayHit filtered_intersect(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p, mat2 J,
                                 int n, vec3 o, vec3 d) {
   RayHit r = no_hit();
-  real amax = 0.0;
-  real slope = 0.0;
-  real curv = 0.0;
-  for (int i = 0; i < n; ++i) {
-    Wave w = filtered_wave(waves, f, p, J, i);
-    amax += abs(w.A);
-    slope += abs(w.slope);
-    curv += abs(w.slope) * w.k;
-  }
-  real dxz = length(vec2(d.x, d.z));
-  real lip = abs(d.y) + slope * dxz;
-  curv *= dxz * dxz;
+  vec3 b = vec3(0.0);  // the filtered sums of |A|, |A| |k|, |A| |k|^2
+  for (int i = 0; i < n; ++i)
+    b += wave_march_bounds(filtered_wave(waves, f, p, J, i));
+  real amax = b.x;
+  real lip = abs(d.y) + b.y * length(vec2(d.x, d.z));
   real s_enter = 0.0;
   real s_exit = kRealMax;
   if (d.y < 0.0) {
@@ -155,13 +215,12 @@ SG_FN RayHit filtered_intersect(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonPa
   real min_step = graze_depth() / max(lip, 1e-30);
   real s = s_enter;
   real s_prev = s;
-  real f_prev = 0.0;
+  real f_prev = 0.0;  // f(s_prev) when prev_full
+  bool prev_full = false;
   for (int step = 0; step < kMaxMarchSteps; ++step) {
     SG_COUNT(march_steps, 1);
-    vec3 q = o + s * d;
-    vec2 hs = filtered_height_slope(waves, f, p, J, n, q.x, q.z, u);
-    real fs = q.y - hs.x;
-    if (fs <= 0.0) {
+    FilteredProbe q = filtered_probe(waves, f, p, J, n, o, d, s, b, lip, min_step);
+    if (q.full && q.f <= 0.0) {
       if (step == 0) {
         // The ray starts at or below the surface (the camera inside the slab).
         r.hit = true;
@@ -169,7 +228,11 @@ SG_FN RayHit filtered_intersect(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonPa
         r.point = o + s * d;
         return r;
       }
-      RootBracket br = root_bracket(s_prev, f_prev, s, fs);
+      vec3 qa = o + s_prev * d;
+      real fa =
+          prev_full ? f_prev : qa.y - filtered_height_slope(waves, f, p, J, n, qa.x, qa.z, u).x;
+      RootBracket br = root_bracket(s_prev, fa, s, q.f);
+      if (!(fa > 0.0)) br = root_bracket(s_prev, fa, s_prev, fa);  // a zero there by rounding
       for (int it = 0; it < kMaxRefineSteps && root_bracket_open(br); ++it) {
         real c = root_bracket_next(br);
         vec3 qc = o + c * d;
@@ -180,9 +243,9 @@ SG_FN RayHit filtered_intersect(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonPa
     }
     if (s >= s_exit) break;
     s_prev = s;
-    f_prev = fs;
-    real st = max(max(fs / lip, march_second_order_step(fs, d.y - hs.y, curv)), min_step);
-    real next = min(s_exit, s + max(st, 2.0 * kRealEpsilon * abs(s)));
+    f_prev = q.f;
+    prev_full = q.full;
+    real next = min(s_exit, s + max(q.step, 2.0 * kRealEpsilon * abs(s)));
     if (!(next < kRealMax)) break;
     s = next;
   }
@@ -238,16 +301,9 @@ SG_FN FallbackResult bruneton_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(Brunet
     g = cm.mean;
     cov = cm.cov;
   }
-  NdfMoments m = ndf_zero();
-  vec2 gw = vec2(0.0);
-  for (int q = 0; q < n; ++q) {
-    Wave w = wave_at(waves, f, q);
-    real weight = wave_lod_weight(vec2(w.a, w.b), J, p.n_min, p.n_max);
-    ndf_add_uniform(m, (1.0 - weight) * w.A, vec2(w.a, w.b));
-    w.A *= weight;
-    gw += wave_gradient_of(w, P.x, P.z, 0.0);
-  }
-  g += gw;
+  FilteredSlopes sl = filtered_slopes(waves, f, p, J, n, P.x, P.z);
+  NdfMoments m = sl.m;
+  g += sl.g;
   vec3 n_dir = normalize(normal_direction(g));
   if (dot(n_dir, v) < 0.0) n_dir = normalize(n_dir - 2.0 * dot(n_dir, v) * v);
   vec4 suffix = wave_suffix_moments(waves, f, n);

@@ -40,6 +40,7 @@
 #include "kernel/convex_polygon.glsl"
 #include "kernel/microspec.glsl"
 #include "kernel/ocean_brdf.glsl"
+#include "kernel/bruneton_waves.glsl"
 #include "kernel/bruneton.glsl"
 #include "kernel/reference_path.glsl"
 #include "kernel/poly6_roots.glsl"

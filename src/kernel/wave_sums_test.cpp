@@ -93,6 +93,32 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
       const int lo = n / 3, hi = std::min(n, lo + 5);  // a range off the lanes' boundaries
       EXPECT_NEAR(kd::water_height_slope(simd, f, lo, hi, x, z, dt, ux, uz).x,
                   kd::water_height_slope(loop, f, lo, hi, x, z, dt, ux, uz).x, tol * hscale);
+      // `bruneton`'s filtered sums (kernel/bruneton.glsl) at the display time, for a
+      // footprint that weighs the waves between 0 and 1: the blocks and the pixel's slopes.
+      kd::BrunetonParams bp{};
+      bp.n_min = 1.0;
+      bp.n_max = 2.5;
+      const double scale = 2.0 + 4.0 * rng.uniform();
+      const mat2 J(vec2(scale, 0.3), vec2(-0.2, 0.5 * scale));
+      int weighted = 0;
+      for (int i = 0; i < n; ++i) {
+        const kd::Wave w = kd::wave_at(loop, f, i);
+        const double wt = kd::wave_lod_weight(vec2(w.a, w.b), J, bp.n_min, bp.n_max);
+        weighted += wt > 0 && wt < 1;
+      }
+      const kd::FilteredSums fa = kd::filtered_sums(simd, f, bp, J, lo, hi, x, z, vec2(ux, uz)),
+                             fb = kd::filtered_sums(loop, f, bp, J, lo, hi, x, z, vec2(ux, uz));
+      EXPECT_NEAR(fa.hs.x, fb.hs.x, tol * hscale) << lo;
+      EXPECT_NEAR(fa.hs.y, fb.hs.y, tol * gscale) << lo;
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(fa.bounds[c], fb.bounds[c], 1e-12 * (1 + std::fabs(fb.bounds[c]))) << c;
+      const kd::FilteredSlopes sa = kd::filtered_slopes(simd, f, bp, J, n, x, z),
+                               sb = kd::filtered_slopes(loop, f, bp, J, n, x, z);
+      EXPECT_NEAR(sa.g.x, sb.g.x, tol * gscale);
+      EXPECT_NEAR(sa.g.y, sb.g.y, tol * gscale);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(sa.m.cov[c], sb.m.cov[c], 1e-12 * (gscale * gscale + 1e-30)) << c;
+      if (n >= 16) EXPECT_GT(weighted, 0) << n;  // not every weight 0 or 1
       const kd::PathGradients p = kd::path_gradients(simd, f, vec3(x, 0, z)),
                               r = kd::path_gradients(loop, f, vec3(x, 0, z));
       for (int k = 0; k <= f.segments; ++k) {
