@@ -118,7 +118,9 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
       EXPECT_NEAR(sa.g.y, sb.g.y, tol * gscale);
       for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(sa.m.cov[c], sb.m.cov[c], 1e-12 * (gscale * gscale + 1e-30)) << c;
-      if (n >= 16) EXPECT_GT(weighted, 0) << n;  // not every weight 0 or 1
+      if (n >= 16) {
+        EXPECT_GT(weighted, 0) << n;  // not every weight 0 or 1
+      }
       const kd::PathGradients p = kd::path_gradients(simd, f, vec3(x, 0, z)),
                               r = kd::path_gradients(loop, f, vec3(x, 0, z));
       for (int k = 0; k <= f.segments; ++k) {
