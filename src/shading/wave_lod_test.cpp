@@ -1,9 +1,10 @@
-// Bruneton's filter over the waves sorted by |k| (wave_lod.h, SortedWaves) against the
-// filter over every wave in file order: for the footprints of real views of generated
-// spectrum oceans (256 and 1024 waves, the waves shuffled), the prefix that a pixel keeps
-// plus the suffix sum of the rest give the same filtered gradient, filtered height and
-// filtered-out slope covariance as Sec. 3.2's weights applied to all the waves (which holds
-// only if every wave past the prefix has weight 0: the prefix is not an approximation).
+// Bruneton's filter as the kernel runs it (kernel/bruneton.glsl: the prefix of the wave
+// buffer, sorted by |k|, that a pixel keeps, and the buffer's suffix sums for the rest)
+// against the filter over every wave in file order, summed on the host: for the footprints
+// of real views of generated spectrum oceans (256 and 1024 waves, the waves shuffled), the
+// same filtered gradient, filtered height and filtered-out slope covariance as Sec. 3.2's
+// weights applied to all the waves (which holds only if every wave past the prefix has
+// weight 0: the prefix is not an approximation).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,9 +12,11 @@
 #include <cstdio>
 #include <vector>
 
+#include "kernel/kernel_double.h"
 #include "math/rng.h"
 #include "ocean/ocean.h"
 #include "scene/model.h"
+#include "shading/kernel_frame.h"
 #include "shading/ndf.h"
 #include "shading/water_geometry.h"
 #include "shading/wave_lod.h"
@@ -67,21 +70,30 @@ Filtered filter_waves(const WaveField& waves, const mat2& J, const vec3& p, doub
 Agreement compare_filters(const Scene& s) {
   const SceneModel m(s);
   const WaveField& all = m.waves;  // file (shuffled) order
-  const SortedWaves sorted(all);
   const double t = 0.7;
+  KernelInputsD in;
+  build_kernel_inputs(m, FrameTime{0, t, t}, 1, 0, in, 0.0);
+  const kd::WaveBuffer wb = wave_buffer(in);
+  kd::BrunetonParams bp{};
+  bp.n_min = kNMin;
+  bp.n_max = kNMax;
+  const vec3 origin(m.camera.position().x, 0.0, m.camera.position().z);
   Agreement a;
   for (int j = 0; j < s.height; j += 3) {
     for (int i = 0; i < s.width; i += 5) {
       const PixelFootprint f = rest_plane_footprint(m, i + 0.5, j + 0.5);
       if (!f.hit) continue;
       const mat2 J = f.xz_jacobian();
-      // Every wave, in file order, against the sorted prefix and the suffix sum, as
-      // methods/bruneton.cpp uses them.
+      // Every wave, in file order, against the kernel's prefix and suffix sums.
       const Filtered full = filter_waves(all, J, f.point, t);
-      const size_t kept = sorted.filtered_from(J, kNMin);
-      const WaveField& prefix = sorted.prefix(kept);
-      Filtered cut = filter_waves(prefix, J, f.point, t);
-      cut.covariance += sorted.suffix_covariance(prefix.size());
+      const int kept = kd::lod_filtered_from(wb, in.frame, J, kNMin);
+      const vec3 p = f.point - origin;  // the kernel's camera-relative point
+      const kd::FilteredSlopes sl = kd::filtered_slopes(wb, in.frame, bp, J, kept, p.x, p.z);
+      const glm::dvec4 suffix = kd::wave_suffix_moments(wb, in.frame, kept);
+      const vec3 c = sl.m.cov + vec3(suffix.x, suffix.y, suffix.z);
+      Filtered cut{sl.g,
+                   kd::filtered_height_slope(wb, in.frame, bp, J, kept, p.x, p.z, vec2(1, 0)).x,
+                   mat2(vec2(c.x, c.y), vec2(c.y, c.z))};
       // Scales: the full slope and height bounds, the covariance's trace.
       const double cs = full.covariance[0][0] + full.covariance[1][1];
       a.gradient = std::max(a.gradient, length(cut.gradient - full.gradient) / all.slope_bound());
@@ -113,12 +125,12 @@ void expect_prefix_equals_full_sum(int waves, double camera_height, int width, d
   EXPECT_LT(a.covariance, 1e-12);
 }
 
-TEST(WaveLod, SortedPrefixEqualsTheFullSumOn256Waves) {
+TEST(WaveLod, KernelPrefixEqualsTheFullSumOn256Waves) {
   expect_prefix_equals_full_sum(256, 2.5, 160, 0.02);
   expect_prefix_equals_full_sum(256, 20, 80, 0.1);
 }
 
-TEST(WaveLod, SortedPrefixEqualsTheFullSumOn1024Waves) {
+TEST(WaveLod, KernelPrefixEqualsTheFullSumOn1024Waves) {
   expect_prefix_equals_full_sum(1024, 20, 80, 0.1);
 }
 
