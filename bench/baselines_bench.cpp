@@ -39,9 +39,7 @@ void BM_LeanMapBuild(benchmark::State& state, const char* name) {
     lean.begin_frame(ctx);
     benchmark::DoNotOptimize(lean.map().texel(0, 0, 0));
   }
-  double mapped = 0;
-  for (double w : lean.mapped_waves())
-    mapped += w;
+  const double mapped = lean.mapped_wave_count();
   state.counters["MiB"] = lean.map().bytes() / 1048576.0;
   state.counters["waves_mapped"] = mapped;
   state.counters["far_m"] = lean.region().far;

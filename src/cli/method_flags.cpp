@@ -116,8 +116,8 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->check(integer_in(0, std::numeric_limits<long long>::max()));
   choice(app, "--precision", o.precision,
          {{"double", Precision::float64}, {"float", Precision::float32}},
-         "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton: the "
-         "shading kernel's precision on the CPU (float is what a GPU computes)");
+         "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton, lean: "
+         "the shading kernel's precision on the CPU (float is what a GPU computes)");
   f.intersect_tolerance_option =
       app.add_option(
              "--intersect-tolerance", o.intersect_tolerance,
@@ -258,8 +258,9 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
 static void scope_method_flags(const std::vector<const CLI::Option*>& options, MethodFlags& f) {
   const std::vector<std::string> kernel = {"point", "supersample", "reference", "staa-temporal",
                                            "staa",  "specaa",      "microspec"};
-  std::vector<std::string> with_bruneton = kernel;
-  with_bruneton.push_back("bruneton");
+  std::vector<std::string> with_baselines = kernel;
+  with_baselines.push_back("bruneton");
+  with_baselines.push_back("lean");
   const std::vector<std::string> sampling = {"supersample", "reference"};
   const std::vector<std::string> staa_both = {"staa", "staa-temporal"};
   const std::map<std::string, std::vector<std::string>> takers = {
@@ -268,12 +269,13 @@ static void scope_method_flags(const std::vector<const CLI::Option*>& options, M
       {"--batches", {"reference"}},
       {"--adaptive", {"reference"}},
       {"--quiet-samples", {"reference"}},
-      {"--precision", with_bruneton},
+      {"--precision", with_baselines},
       {"--intersect-tolerance", kernel},
       {"--segments", staa_both},
       {"--cascades",
        {"point", "supersample", "staa-temporal", "staa", "lean", "specaa", "bruneton"}},
-      {"--cascade-fft", {"point", "supersample", "staa-temporal", "staa", "specaa"}},
+      {"--cascade-fft",
+       {"point", "supersample", "staa-temporal", "staa", "specaa", "bruneton", "lean"}},
   };
   // staa's own (methods/staa.h).
   const std::vector<std::string> staa = {"--ndf",

@@ -59,4 +59,10 @@ void Buffer::bind(GLenum target, GLuint index) const {
   check_errors("glBindBufferBase(" + std::to_string(index) + ")");
 }
 
+void Buffer::bind_range(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const {
+  glBindBufferRange(target, index, id_, GLintptr(offset), GLsizeiptr(bytes));
+  check_errors("glBindBufferRange(" + std::to_string(index) + ", " + std::to_string(offset) + ", " +
+               std::to_string(bytes) + ")");
+}
+
 }  // namespace sg::gl

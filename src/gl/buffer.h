@@ -56,6 +56,9 @@ class Buffer {
   // glBindBufferBase(target, index): GL_SHADER_STORAGE_BUFFER (layout(binding = index)
   // buffer), GL_UNIFORM_BUFFER (layout(std140, binding = index) uniform).
   void bind(GLenum target, GLuint index) const;
+  // glBindBufferRange: bytes [offset, offset + bytes) (offset a multiple of the target's
+  // alignment).
+  void bind_range(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const;
 
  private:
   GLuint id_ = 0;

@@ -50,6 +50,16 @@ TextureBuffer::TextureBuffer(std::span<const float> data, GLenum format)
   check_errors("texture buffer of " + std::to_string(texels_) + " texels");
 }
 
+TextureBuffer::TextureBuffer(std::size_t texels, GLenum format)
+    : texels_(texels), components_(components_of(format)) {
+  if (texels == 0) throw GlError("texture buffer: 0 texels");
+  check_texture_buffer_texels(texels_);
+  buffer_ = Buffer(texels * size_t(components_) * sizeof(float));
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &texture_);
+  glTextureBuffer(texture_, format, buffer_.id());
+  check_errors("texture buffer of " + std::to_string(texels_) + " texels");
+}
+
 TextureBuffer::~TextureBuffer() {
   if (texture_) glDeleteTextures(1, &texture_);
 }

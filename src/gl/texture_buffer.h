@@ -19,6 +19,9 @@ class TextureBuffer {
   // `data` holds texels x components floats (components from `format`: GL_R32F 1,
   // GL_RG32F 2, GL_RGBA32F 4).
   explicit TextureBuffer(std::span<const float> data, GLenum format = GL_RGBA32F);
+  // `texels` texels of `format`, their contents undefined until a shader or update writes
+  // them (a buffer the GPU fills).
+  TextureBuffer(std::size_t texels, GLenum format);
   ~TextureBuffer();
   TextureBuffer(TextureBuffer&& o) noexcept;
   TextureBuffer& operator=(TextureBuffer&& o) noexcept;

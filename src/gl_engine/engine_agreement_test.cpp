@@ -197,13 +197,14 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   MethodOptions o;
   o.samples = {2, 2, 2};
   o.samples_given = true;
+  o.lean.size = 256;
   MethodOptions of = o;
   of.precision = Precision::float32;
   MethodOptions ro = of;
   ro.samples = {2, 2, 1};
   ro.batches = 8;
   const char* kDeterministic[] = {"point",  "supersample", "staa-temporal", "staa",
-                                  "specaa", "microspec",   "bruneton"};
+                                  "specaa", "microspec",   "bruneton",      "lean"};
   std::map<std::string, std::unique_ptr<Method>> gl, cpu, cpu_double;
   for (const char* n : kDeterministic) {
     gl[n] = make_method_on(Engine::gl, n, testing::with_tables(o));

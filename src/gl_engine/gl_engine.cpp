@@ -11,6 +11,7 @@
 #include "gl_engine/uniforms.h"
 #include "kernel/kernel_float.h"
 #include "methods/bruneton.h"
+#include "methods/lean.h"
 #include "methods/microspec.h"
 #include "methods/reference.h"
 #include "methods/specaa.h"
@@ -49,7 +50,7 @@ int pass_samples(int waves, int segments, bool displaced, int cascades) {
 }
 
 const char* gl_methods() {
-  return "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton";
+  return "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton, lean";
 }
 
 GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
@@ -59,7 +60,7 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   v.cascade_fields =
       o.cascade_fields &&
       (method == "point" || method == "staa-temporal" || method == "staa" || method == "specaa" ||
-       method == "bruneton" || (method == "supersample" && o.samples.st == 1));
+       method == "bruneton" || method == "lean" || (method == "supersample" && o.samples.st == 1));
   v.cascade_fft_gpu = o.cascade_fft_gpu;
   v.cascade_reads = cascade_reads_of(method);
   if (method == "point") {
@@ -106,6 +107,10 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
   } else if (method == "bruneton") {
     v.entry = KernelEntry::bruneton;
     v.bruneton = bruneton_kernel_params<kf::BrunetonParams>(o.bruneton);
+  } else if (method == "lean") {
+    validate_lean_options(o.lean);
+    v.entry = KernelEntry::lean;
+    v.lean = o.lean;
   } else {
     throw Error("--method " + method + ": not on the GL engine (it runs " + gl_methods() +
                 "; use --engine cpu)");
@@ -179,9 +184,10 @@ void GlEngine::upload(const FrameContext& ctx) {
   if (v_.entry != KernelEntry::reference && segments != v_.segments)
     throw Error("GlEngine: a frame of " + std::to_string(segments) + " sub-arcs for a program of " +
                 std::to_string(v_.segments));
-  // `bruneton` takes the fields on flat water only (shading/cascade_fields.h).
+  // `bruneton` and `lean` take the fields on flat water only (shading/cascade_fields.h).
   const bool fields =
-      v_.cascade_fields && (v_.entry != KernelEntry::bruneton || !ctx.model.displaced());
+      v_.cascade_fields && ((v_.entry != KernelEntry::bruneton && v_.entry != KernelEntry::lean) ||
+                            !ctx.model.displaced());
   const bool gpu_fields = fields && v_.cascade_fft_gpu && cascade_fields_apply(ctx.model);
   build_kernel_inputs(ctx.model, ctx.time, segments, ctx.seed, *inputs_, v_.intersect_tolerance,
                       split.windows, fields, gpu_fields ? CascadeData::layout : CascadeData::host,
@@ -240,11 +246,28 @@ void GlEngine::upload(const FrameContext& ctx) {
   if (v_.entry == KernelEntry::specaa) set_uniforms(u, "sparams", v_.specaa);
   if (v_.entry == KernelEntry::microspec) set_uniforms(u, "mparams", v_.microspec);
   if (v_.entry == KernelEntry::bruneton) set_uniforms(u, "bparams", v_.bruneton);
+  if (v_.entry == KernelEntry::lean) {
+    upload_lean(ctx);
+    set_uniforms(u, "lparams", lean_params_);
+  }
   if (v_.entry == KernelEntry::staa) {
     set_uniforms(u, "params", v_.params);
     set_uniforms(u, "tinfo", tinfo_);
     set_uniforms(u, "finfo", finfo_);
   }
+}
+
+void GlEngine::upload_lean(const FrameContext& ctx) {
+  // The map's region and its waves (methods/lean.h, as the CPU's method places them), from
+  // the frame's float waves.
+  const SceneModel& m = ctx.model;
+  const std::vector<kd::Wave> waves = kernel_frame_waves(*inputs_);
+  const LeanMapRegion region = lean_map_region(m, v_.lean.size, v_.lean.far);
+  const kd::LeanParams p = lean_frame_params(region, v_.lean, v_.lean.size, waves,
+                                             vec2(inputs_->origin.x, inputs_->origin.z));
+  lean_params_ = lean_params_float(p);
+  if (!lean_map_) lean_map_ = std::make_unique<LeanMapGl>();
+  lean_map_->allocate(v_.lean.size);  // filled in run(), within the frame's GPU time
 }
 
 void GlEngine::bind() {
@@ -254,6 +277,7 @@ void GlEngine::bind() {
     weights_.bind_image(0, GL_WRITE_ONLY);
   }
   if (v_.entry == KernelEntry::reference) busy_.bind_image(5, GL_READ_WRITE);
+  if (v_.entry == KernelEntry::lean) lean_map_->texels().bind(6);
   waves_.bind(1);
   if (v_.entry == KernelEntry::staa) {
     table_f_.bind_texture(2);
@@ -263,6 +287,9 @@ void GlEngine::bind() {
 }
 
 void GlEngine::run() {
+  // `lean`'s map first (an empty region's map is bound but never read).
+  if (v_.entry == KernelEntry::lean && !lean_params_.empty)
+    lean_map_->fill(waves_, inputs_->frame, lean_params_);
   bind();
   if (v_.entry != KernelEntry::reference && v_.entry != KernelEntry::stratified) {
     gl::dispatch_2d(program_, width_, height_);

@@ -2,7 +2,8 @@
 // pixel, in float (docs/gpu.md). It runs `point`, `supersample`, `reference`,
 // `staa-temporal`, `staa` (both NDFs, `--footprint none|gaussian`, every kernel count
 // and fallback) and the baselines `specaa` and `microspec` with the CPU engine's estimators
-// and seeds; anything else
+// and seeds, and the baselines `bruneton` and `lean` (its map built on the GPU,
+// gl_engine/lean_map_gl.h); anything else
 // is refused with a message naming the method or flag, never rendered elsewhere. Its `reference` is
 // the CPU engine's estimator (kernel/reference.glsl, its K per frame from the waves and the
 // shutter) but does not report its noise: the batches' spread stays on the GPU.
@@ -30,6 +31,7 @@
 #include "gl/timer.h"
 #include "gl_engine/cascade_fields_gl.h"
 #include "gl_engine/kernel_program.h"
+#include "gl_engine/lean_map_gl.h"
 #include "gl_engine/program_notice.h"
 #include "methods/method.h"
 #include "methods/options.h"
@@ -48,6 +50,7 @@ struct GlVariant {
   kf::SpecaaParams specaa{};
   kf::MicrospecParams microspec{};
   kf::BrunetonParams bruneton{};
+  LeanOptions lean{};              // `lean`: the map's options (its parameters are the frame's)
   double intersect_tolerance = 0;  // --intersect-tolerance (shading/kernel_frame.h)
   // --cascades fields: point, staa-temporal, staa and specaa read a scene's cascades from their
   // FFT fields in the wave buffer (shading/cascade_fields.h, built on the host).
@@ -103,6 +106,8 @@ class GlEngine {
 
  private:
   void upload(const FrameContext& ctx);
+  // `lean`: the frame's map parameters and its map (after the wave buffer's upload).
+  void upload_lean(const FrameContext& ctx);
   void bind();
   void run();
   // Before the first dispatch: one workgroup dispatched and waited for, where a driver that
@@ -129,6 +134,8 @@ class GlEngine {
   double last_ms_ = 0;
   std::unique_ptr<KernelInputsF> inputs_;
   std::unique_ptr<CascadeFieldsGl> fields_;  // the cascades' transforms, on the first need
+  std::unique_ptr<LeanMapGl> lean_map_;      // `lean`'s map
+  kf::LeanParams lean_params_{};             // `lean`: the frame's map parameters
   std::vector<float> upload_;                // the host's texels, as floats
 };
 

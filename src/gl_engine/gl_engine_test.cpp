@@ -13,7 +13,9 @@
 #include "gl_engine/gl_engine.h"
 #include "gl_engine/gl_method.h"
 #include "gl_engine/kernel_program.h"
+#include "gl_engine/lean_map_gl.h"
 #include "gl_engine/uniforms.h"
+#include "methods/lean.h"
 #include "metrics/metrics.h"
 #include "ocean/lattice_ocean.h"
 #include "scene/camera_path.h"
@@ -69,6 +71,9 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
   cases.push_back({"specaa", analytic, &plain_model});
   cases.push_back({"microspec", {}, &plain_model});
   cases.push_back({"bruneton", {}, &plain_model});
+  MethodOptions small_lean;
+  small_lean.lean.size = 64;
+  cases.push_back({"lean", small_lean, &plain_model});
   for (const Case& c : cases) {
     const SceneModel& m = *c.m;
     gl_engine::GlEngine engine(c.name, testing::with_tables(c.o));
@@ -89,6 +94,7 @@ TEST_F(GlEngineTest, EveryProgramCompilesAndItsUniformsAreAllWritten) {
     gl_engine::set_uniforms(probe, "sparams", v.specaa);
     gl_engine::set_uniforms(probe, "mparams", v.microspec);
     gl_engine::set_uniforms(probe, "bparams", v.bruneton);
+    gl_engine::set_uniforms(probe, "lparams", kf::LeanParams{});  // the frame's (upload_lean)
     gl_engine::set_uniforms(probe, "tinfo", kf::PathTableInfo{});
     gl_engine::set_uniforms(probe, "finfo", kf::KernelFitInfo{});
     const std::vector<std::string> active = gl_engine::active_uniforms(engine.program());
@@ -150,6 +156,8 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineOnTheSharedScenes) {
     per_pixel.staa.ndf = NdfMode::per_pixel;
     MethodOptions analytic;
     analytic.specaa.derivatives = SpecaaDerivatives::analytic;
+    MethodOptions lean;  // a small map: llvmpipe fills it, one texel an invocation
+    lean.lean.size = 256;
     for (const auto& [name, o] :
          std::vector<std::pair<std::string, MethodOptions>>{{"staa", {}},
                                                             {"staa", none},
@@ -157,7 +165,8 @@ TEST_F(GlEngineTest, MatchesTheCpuEngineOnTheSharedScenes) {
                                                             {"staa-temporal", {}},
                                                             {"specaa", {}},
                                                             {"specaa", analytic},
-                                                            {"bruneton", {}}}) {
+                                                            {"bruneton", {}},
+                                                            {"lean", lean}}) {
       const Comparison c = compare_engines(scene, name, o, ref);
       EXPECT_LE(c.gl_cpu, 0.1 * c.cpu_ref) << scene << " " << name;
     }
@@ -526,6 +535,50 @@ TEST_F(GlEngineTest, GlReferenceMeanMatchesTheCpuOffTheSharedScenes) {
   }
 }
 
+TEST_F(GlEngineTest, LeanMapIsTheCpusInAnyBands) {
+  // `medium` at 64x36 with a 128 x 128 map, its waves in float (the GL engine's): the GPU's
+  // map (level 0 one texel an invocation, the chain one texel of a level each) against the
+  // CPU's (the same terms in SIMD lanes in double, stored as float), every float of every
+  // level; then the GPU's again through an 8 KiB storage window (bands of a few rows, as a
+  // context whose storage blocks are smaller than the map's levels writes them): the same
+  // bytes.
+  Scene s = testing::project_scene("medium");
+  set_image_size(s, 64, 36);
+  const SceneModel m(s);
+  const FrameContext ctx{m, frame_time(s, 2), 0};
+  LeanOptions o;
+  o.size = 128;
+  LeanMethod cpu(o, Precision::float32);
+  cpu.begin_frame(ctx);
+  ASSERT_FALSE(cpu.params().empty);
+  KernelInputsF in;
+  build_kernel_inputs(m, ctx.time, 1, 0, in);
+  std::vector<float> texels;
+  for (const kf::vec4& t : in.texels)
+    texels.insert(texels.end(), {t.x, t.y, t.z, t.w});
+  const gl::TextureBuffer waves(texels);
+  gl_engine::LeanMapGl gpu;
+  gpu.fill(waves, in.frame, lean_params_float(cpu.params()));
+  const std::vector<float> a = gpu.texels().buffer().read<float>();
+  EXPECT_EQ(gpu.passes(), cpu.params().levels);
+  const kd::MapTexels c = cpu.map().texels();
+  ASSERT_EQ(long(a.size()), c.size);
+  double worst = 0, peak = 0;
+  for (long k = 0; k < c.size; ++k) {
+    worst = std::max(worst, double(std::fabs(a[size_t(k)] - c.data[k])));
+    peak = std::max(peak, double(std::fabs(c.data[k])));
+  }
+  std::printf("LEAN map, GPU against CPU: largest difference %.3g (largest value %.3g)\n", worst,
+              peak);
+  EXPECT_GT(peak, 0.01);
+  EXPECT_LT(worst, 2e-4 * peak);
+  gpu.set_window_bytes(8192);
+  gpu.fill(waves, in.frame, lean_params_float(cpu.params()));
+  EXPECT_GT(gpu.passes(), 4 * cpu.params().levels);
+  const std::vector<float> b = gpu.texels().buffer().read<float>();
+  EXPECT_TRUE(a == b) << "the bands wrote other values";
+}
+
 TEST_F(GlEngineTest, DisplacedMarchAdvancesFarFromTheCameraInFloat) {
   // tests/scenes/gl-reference/far-float-march.json (the engines' agreement run, seed 7,
   // scene 96): 347 displaced waves seen from 2954 m up, the water 3.7 km along the rays,
@@ -560,7 +613,7 @@ TEST_F(GlEngineTest, DisplacedMarchAdvancesFarFromTheCameraInFloat) {
 
 TEST(GlEngine, RefusesWhatItLacksNamingIt) {
   MethodOptions o;
-  for (const char* m : {"lean", "taa"}) {
+  for (const char* m : {"taa"}) {
     try {
       gl_engine::gl_variant(m, o);
       ADD_FAILURE() << m << " accepted";

@@ -41,6 +41,10 @@ const char* entry_name(KernelEntry e) {
       return "microspec";
     case KernelEntry::bruneton:
       return "bruneton";
+    case KernelEntry::lean:
+      return "lean";
+    case KernelEntry::lean_map:
+      return "lean-map";
   }
   return "?";
 }
@@ -63,6 +67,10 @@ const char* entry_define(KernelEntry e) {
       return "SG_METHOD_MICROSPEC";
     case KernelEntry::bruneton:
       return "SG_METHOD_BRUNETON";
+    case KernelEntry::lean:
+      return "SG_METHOD_LEAN";
+    case KernelEntry::lean_map:
+      return "SG_METHOD_LEAN_MAP";
   }
   return "";
 }

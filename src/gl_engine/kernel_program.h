@@ -19,7 +19,9 @@ enum class KernelEntry {
   staa,
   specaa,
   microspec,
-  bruneton
+  bruneton,
+  lean,
+  lean_map  // `lean`'s map: level 0 from the waves, then the MIP chain (gl_engine/lean_map_gl.h)
 };
 
 const char* entry_name(KernelEntry e);

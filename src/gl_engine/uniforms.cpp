@@ -113,6 +113,18 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::BrunetonPara
   u.set(n + ".fresnel_integral", p.fresnel_integral);
 }
 
+void set_uniforms(UniformWriter& u, const std::string& n, const kf::LeanParams& p) {
+  u.set(n + ".origin", p.origin);
+  u.set(n + ".texel", p.texel);
+  u.set(n + ".size", p.size);
+  u.set(n + ".levels", p.levels);
+  u.set(n + ".empty", p.empty);
+  u.set(n + ".aniso", p.aniso);
+  u.set(n + ".max_aniso", p.max_aniso);
+  u.set(n + ".border", p.border);
+  u.set(n + ".base", p.base);
+}
+
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::SampleCounts& c) {
   u.set(n + ".sx", c.sx);
   u.set(n + ".sy", c.sy);

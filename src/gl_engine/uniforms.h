@@ -38,6 +38,7 @@ void set_uniforms(UniformWriter& u, const std::string& name, const kf::StaaParam
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::SpecaaParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::MicrospecParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::BrunetonParams& p);
+void set_uniforms(UniformWriter& u, const std::string& name, const kf::LeanParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::SampleCounts& n);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::ReferenceParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::PathTableInfo& t);

@@ -912,7 +912,7 @@ TEST(CascadeFields, ReducedReadsShadeTheSameAsTheWholeFields) {
   EXPECT_GT(lit, sea.scene.width * sea.scene.height);
 }
 
-// The host's baselines (`lean`, `specaa`, `bruneton`: methods/host_cascades.h) read the
+// The baselines (`lean`, `specaa`, `bruneton`) read the
 // display time alone; their fields (CascadeReads::display_chain) are the whole fields'
 // display time, texel for texel (but level 0's instant 0 slopes, b.zw, which they leave 0),
 // the other instants 0, and the baselines' reads of them the same to the bit, at K = 1

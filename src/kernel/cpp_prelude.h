@@ -67,6 +67,12 @@ struct TableLine {
   const double* data = nullptr;
   int size = 0;
 };
+// A map of float texels (kernel/lean.glsl: the LEAN map's moments, five floats a texel);
+// in GLSL an R32F buffer, read with map_value.
+struct MapTexels {
+  const float* data = nullptr;
+  long size = 0;  // floats
+};
 
 }  // namespace sg::kernel_tables
 

@@ -104,6 +104,7 @@ using glm::tan;
 #endif
 using glm::transpose;
 using glm::umulExtended;
+using sg::kernel_tables::MapTexels;
 using sg::kernel_tables::R32Texture2D;
 using sg::kernel_tables::R32Texture3D;
 using sg::kernel_tables::TableLine;
@@ -141,6 +142,11 @@ inline vec4 texelFetch(const R32Texture3D& t, const ivec3& p, int) {
 
 // Value i of a 1-D table (GLSL: texelFetch of an R32F buffer).
 inline real line_value(const TableLine& t, int i) {
+  SG_COUNT(table_fetches, 1);
+  return real(t.data[i]);
+}
+// Float i of a map (GLSL: texelFetch of an R32F buffer).
+inline real map_value(const MapTexels& t, int i) {
   SG_COUNT(table_fetches, 1);
   return real(t.data[i]);
 }

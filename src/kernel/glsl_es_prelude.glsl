@@ -34,6 +34,7 @@ precision highp sampler2DArray;
 #define R32Texture2D sampler2D
 #define R32Texture3D sampler2DArray
 #define TableLine sampler2D
+#define MapTexels sampler2D
 
 const real kRealEpsilon = 1.1920928955078125e-07;
 const real kRealMax = 3.4028234663852886e+38;
@@ -53,6 +54,7 @@ vec4 sg_buffer_texel(sampler2D t, int i) {
 }
 #define wave_texel(waves, i) sg_buffer_texel(waves, i)
 #define line_value(line, i) sg_buffer_texel(line, i).x
+#define map_value(map, i) sg_buffer_texel(map, i).x
 
 // umulExtended(a, b, hi, lo): a * b = hi 2^32 + lo, by 16-bit halves (each partial product
 // and the middle sum fit in 32 bits).

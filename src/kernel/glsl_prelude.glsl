@@ -19,6 +19,8 @@
 #define R32Texture3D sampler2DArray
 #define TableLine samplerBuffer
 #define line_value(line, i) texelFetch(line, i).x
+#define MapTexels samplerBuffer
+#define map_value(map, i) texelFetch(map, i).x
 
 const real kRealEpsilon = 1.1920928955078125e-07;
 const real kRealMax = 3.4028234663852886e+38;

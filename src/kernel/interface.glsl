@@ -183,6 +183,21 @@ struct BrunetonParams {
   bool fresnel_integral;  // --bruneton-fresnel integral (Eq. 24; else the fit, Eq. 26)
 };
 
+// `lean` (lean.glsl): where the frame's LEAN map lies and what shading adds to it, from the
+// host (methods/lean.h: the map's region, the waves it holds and those it leaves out).
+struct LeanParams {
+  vec2 origin;    // camera-relative (x, z) of the map's corner, texel coordinates (0, 0)
+  real texel;     // metres per level-0 texel
+  int size;       // N: level 0's texels a side (a power of two)
+  int levels;     // L + 1: N, N / 2, ..., 1
+  bool empty;     // no water within the map's reach: every lookup is the border
+  bool aniso;     // --lean-filter aniso (else trilinear)
+  int max_aniso;  // --lean-max-aniso: the anisotropic filter's most probes
+  vec3 border;    // the border's second moments (xx, zz, xz), its mean slope 0
+  vec3 base;      // the slope covariance (xx, xz, zz, ndf.glsl's order) of the waves the
+                  // map leaves out
+};
+
 // The reflection at one pixel corner (microspec.glsl, microspec_corner): the water point
 // seen through an image-plane point at the display time, its normal, the mirrored view.
 // Neighbouring pixels share their corners (the CPU's tiles, the GL engine's shared memory).

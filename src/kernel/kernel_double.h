@@ -13,3 +13,11 @@ namespace sg::kd {
 #include "kernel/kernel.glsl"
 }  // namespace sg::kd
 #undef SG_CPU_WAVE_SUMS
+
+namespace sg::kd {
+// The LEAN map's level-0 slopes of a block of texels, lean_waves.glsl's lean_wave_slope over
+// the CPU's SIMD lanes (kernel/cpu/lane_passes.inc, LeanBlockPass, says the layout; width a
+// multiple of sg::wave_simd::kLanePadding).
+void lean_block_slopes(const double* amplitude, int nk, const double* rows, int row_count,
+                       const double* column_cos, const double* column_sin, int width, double* out);
+}  // namespace sg::kd

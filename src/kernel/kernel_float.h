@@ -32,6 +32,9 @@ FallbackResult float_microspec_pixel(const WaveBuffer& waves, const Frame& f,
 // `bruneton` (kernel/bruneton.glsl): a pixel.
 FallbackResult float_bruneton_pixel(const WaveBuffer& waves, const Frame& f,
                                     const BrunetonParams& p, int i, int j);
+// `lean` (kernel/lean.glsl): a pixel from the frame's map.
+FallbackResult float_lean_pixel(const WaveBuffer& waves, const Frame& f, const MapTexels& map,
+                                const LeanParams& p, int i, int j);
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,

@@ -63,6 +63,7 @@ TEST(KernelPrecision, FloatAgreesWithDoubleWithinTheMethodsOwnError) {
       {"specaa", "specaa", [](MethodOptions&) {}, false},
       {"microspec", "microspec", [](MethodOptions&) {}, true},
       {"bruneton", "bruneton", [](MethodOptions&) {}, false},
+      {"lean", "lean", [](MethodOptions& o) { o.lean.size = 512; }, false},
       {"supersample 6x6x1", "supersample",
        [](MethodOptions& o) {
          o.samples = {6, 6, 1};

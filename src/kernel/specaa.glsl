@@ -29,8 +29,9 @@
 // slopes map to NDF-plane points through the Jacobian of m(m~) = n - m~_x t - m~_y b
 // followed by q = (m.x, m.z) / m.y, at m~ = 0 (specaa_tangent_to_ndf_plane):
 // Sigma_ndf = J_G Sigma_ts J_G^T. The water is a mirror (no base roughness), so the kernel
-// alone is the lobe; mapped to the light plane (rdf.glsl, Eq. 16 of Podee et al.) its
-// mass in the disk is the light's share, its mass beyond the horizon's line the sea's.
+// alone is the lobe, shaded as ndf_lobe.glsl shades a Gaussian NDF (mapped to the light
+// plane, Eq. 16 of Podee et al.: its mass in the disk is the light's share, its mass
+// beyond the horizon's line the sea's).
 //
 // Per pixel, at the display time: the water point through the pixel centre (flat or
 // displaced, footprint.glsl), its gradient (the waves, and the cascades' fields where the
@@ -38,12 +39,7 @@
 // within the 2x2 pixel quad (`quad`: the method as published and run in real time), or by
 // the chain rule through the footprint's differentials and the height's Hessian
 // (`analytic`). A quad neighbour that misses the water or has the camera under the surface
-// leaves the pixel to the analytic form. A centre reflection more than 87 degrees from the
-// light (r . L < 0.05) has no light-plane image worth linearising: the light's share is 0
-// there (a lobe within the kappa clamp puts less than 1e-6 of its mass that far) and the
-// sea's share is the centre's point test.
-
-const real kSpecaaMinLightCos = 0.05;
+// leaves the pixel to the analytic form.
 
 // The shading frame of the water's normal for height gradient g: n = normalize(-g.x, 1,
 // -g.y), t = normalize(1, g.x, 0) (the surface's tangent along world x, perpendicular to
@@ -180,22 +176,10 @@ SG_FN vec4 specaa_analytic_derivatives(IN(WaveBuffer) waves, IN(Frame) f, IN(Spe
 SG_FN vec4 specaa_lobe_weights(IN(Frame) f, IN(SpecaaParams) p, IN(SpecaaSample) s, vec2 ddx,
                                vec2 ddy) {
   ShadingFrame fr = water_shading_frame(s.g);
-  vec3 v = s.view;
   mat2 cov_ts = specaa_kernel_covariance(ddx, ddy, p.sigma2, p.kappa, p.full_kernel);
   mat2 JG = specaa_tangent_to_ndf_plane(fr);
-  mat2 cov_ndf = JG * cov_ts * transpose(JG);
-  vec2 nc = -s.g;  // the centre normal on the NDF plane
-  vec3 rc = reflect_about_ndf_point(nc, v);
-  real in_light = 0.0;
-  real below = rc.y <= 0.0 ? 1.0 : 0.0;
-  if (dot(rc, f.light.L) >= kSpecaaMinLightCos) {
-    vec2 mean = light_to_plane(f.light, rc);
-    mat2 cov_r = rdf_covariance(ndf_to_light_plane_jacobian(nc, v, f.light), cov_ndf);
-    in_light = gaussian_disk_mass(mean, cov_r, f.light.tan_radius);
-    below = horizon_share(f.light, mean, cov_r);
-  }
-  real F = fresnel_factor(f.fresnel, dot(fr.n, v));
-  return combine_weights(f, F, in_light, below, rc.y);
+  // The lobe about the centre normal -g on the NDF plane (ndf_lobe.glsl).
+  return ndf_lobe_weights(f, s.view, -s.g, JG * cov_ts * transpose(JG));
 }
 
 // Pixel (i, j) from its own sample and those of its quad neighbours in x (i ^ 1) and in y

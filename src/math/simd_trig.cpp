@@ -39,34 +39,6 @@ void SinCosArray(const double* HWY_RESTRICT x, double* HWY_RESTRICT s, double* H
   }
 }
 
-void ShiftedCosineSums(const double* HWY_RESTRICT ac, const double* HWY_RESTRICT as,
-                       const double* HWY_RESTRICT bc, const double* HWY_RESTRICT bs,
-                       const double* HWY_RESTRICT cos_t, const double* HWY_RESTRICT sin_t,
-                       size_t nk, size_t nt, double* HWY_RESTRICT gx, double* HWY_RESTRICT gz) {
-  const hn::ScalableTag<double> d;
-  const size_t lanes = hn::Lanes(d);
-  size_t q = 0;
-  for (; q + lanes <= nt; q += lanes) {
-    auto x = hn::Zero(d), z = hn::Zero(d);
-    for (size_t k = 0; k < nk; ++k) {
-      const auto c = hn::LoadU(d, cos_t + k * nt + q), s = hn::LoadU(d, sin_t + k * nt + q);
-      x = hn::NegMulAdd(hn::Set(d, as[k]), s, hn::MulAdd(hn::Set(d, ac[k]), c, x));
-      z = hn::NegMulAdd(hn::Set(d, bs[k]), s, hn::MulAdd(hn::Set(d, bc[k]), c, z));
-    }
-    hn::StoreU(x, d, gx + q);
-    hn::StoreU(z, d, gz + q);
-  }
-  for (; q < nt; ++q) {
-    double x = 0, z = 0;
-    for (size_t k = 0; k < nk; ++k) {
-      x += ac[k] * cos_t[k * nt + q] - as[k] * sin_t[k * nt + q];
-      z += bc[k] * cos_t[k * nt + q] - bs[k] * sin_t[k * nt + q];
-    }
-    gx[q] = x;
-    gz[q] = z;
-  }
-}
-
 }  // namespace HWY_NAMESPACE
 }  // namespace sg
 HWY_AFTER_NAMESPACE();
@@ -74,13 +46,6 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace sg {
 HWY_EXPORT(SinCosArray);
-HWY_EXPORT(ShiftedCosineSums);
-
-void shifted_cosine_sums(const double* ac, const double* as, const double* bc, const double* bs,
-                         const double* cos_t, const double* sin_t, size_t nk, size_t nt, double* gx,
-                         double* gz) {
-  HWY_DYNAMIC_DISPATCH(ShiftedCosineSums)(ac, as, bc, bs, cos_t, sin_t, nk, nt, gx, gz);
-}
 
 void sincos_array(const double* x, double* s, double* c, size_t n) {
   HWY_DYNAMIC_DISPATCH(SinCosArray)(x, s, c, n);

@@ -15,18 +15,8 @@ namespace sg {
 // s[k] = sin(x[k]), c[k] = cos(x[k]) for k < n. The arrays may not overlap.
 void sincos_array(const double* x, double* s, double* c, size_t n);
 
-// The instruction set the two functions here run on, as Highway names it ("AVX3", "AVX2",
+// The instruction set sincos_array runs on, as Highway names it ("AVX3", "AVX2",
 // ...). Their last bits may differ between instruction sets.
 const char* simd_trig_target();
-
-// Sums of shifted cosines by angle addition, for the gradient of a sum of sines at many
-// times: for q < nt,
-//   gx[q] = sum_k (ac[k] cos_t[k*nt + q] - as[k] sin_t[k*nt + q])
-//   gz[q] = sum_k (bc[k] cos_t[k*nt + q] - bs[k] sin_t[k*nt + q])
-// With ac = A a cos(theta), as = A a sin(theta) (and b for z), and cos_t, sin_t of c t,
-// gx = sum A a cos(theta + c t) = dh/dx (Podee et al. 2021, Eq. 1 differentiated).
-void shifted_cosine_sums(const double* ac, const double* as, const double* bc, const double* bs,
-                         const double* cos_t, const double* sin_t, size_t nk, size_t nt, double* gx,
-                         double* gz);
 
 }  // namespace sg

@@ -106,7 +106,7 @@ TEST(FiniteProperty, EveryMethodIsFiniteOnRandomValidScenes) {
   }
 }
 
-// The same property on the GL engine: its seven methods (one program each, compiled once)
+// The same property on the GL engine: its nine methods (one program each, compiled once)
 // on the first 10 of the same random scenes (5 in the sanitizer build): llvmpipe compiles
 // the programs in about two minutes and takes up to seconds a render on the
 // displaced scenes (200 scenes took 592 s here, all finite); every pixel read back must be
@@ -125,7 +125,7 @@ TEST_F(FinitePropertyGl, GlEngineIsFiniteOnRandomValidScenes) {
   const MethodOptions opt = cheap_options();
   std::vector<std::pair<std::string, std::unique_ptr<Method>>> methods;
   for (const char* n : {"point", "supersample", "reference", "staa-temporal", "staa", "specaa",
-                        "microspec", "bruneton"})
+                        "microspec", "bruneton", "lean"})
     methods.emplace_back(n, make_method_on(Engine::gl, n, testing::with_tables(opt)));
   RenderSettings rs;
   rs.threads = 1;

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <bit>
 #include <iterator>
+#include <memory>
 #include <vector>
 
 #include "base/error.h"
 #include "kernel/kernel_counting.h"
 #include "methods/bruneton.h"
 #include "methods/kernel_inputs.h"
+#include "methods/lean.h"
 #include "methods/microspec.h"
 #include "methods/specaa.h"
 #include "methods/staa.h"
@@ -64,22 +66,24 @@ struct Sums {
 
 bool kernel_work_counted(const std::string& method) {
   return method == "point" || method == "supersample" || method == "staa-temporal" ||
-         method == "staa" || method == "specaa" || method == "microspec" || method == "bruneton";
+         method == "staa" || method == "specaa" || method == "microspec" || method == "bruneton" ||
+         method == "lean";
 }
 
 KernelWork count_kernel_work(const SceneModel& m, const std::string& method, const MethodOptions& o,
                              int frame) {
   if (!kernel_work_counted(method)) {
     throw Error("--counters: no counting render for method '" + method +
-                "' (point, supersample, staa-temporal, staa, specaa, microspec and bruneton have "
-                "one)");
+                "' (point, supersample, staa-temporal, staa, specaa, microspec, bruneton and lean "
+                "have one)");
   }
   validate(o);
   const bool super = method == "supersample";
   const int segments = method == "staa" || method == "staa-temporal" ? o.staa.segments : 1;
-  // bruneton: the cascades' fields on flat water only (shading/cascade_fields.h).
+  // bruneton and lean: the cascades' fields on flat water only (shading/cascade_fields.h).
+  const bool filtered = method == "bruneton" || method == "lean";
   const bool fields =
-      o.cascade_fields && (!super || o.samples.st == 1) && (method != "bruneton" || !m.displaced());
+      o.cascade_fields && (!super || o.samples.st == 1) && (!filtered || !m.displaced());
   KernelFrameInputs inputs(
       segments, Precision::float64,
       super ? stratified_intersect_tolerance(o) : intersect_tolerance_for(o, method), 1, fields);
@@ -109,6 +113,15 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
   const kc::SpecaaParams sparams =
       same_struct<kc::SpecaaParams>(specaa_kernel_params<kd::SpecaaParams>(o.specaa));
 
+  // lean: the frame's map, built by the method (its texels per frame, not per pixel, are
+  // not counted); the pixels read it.
+  std::unique_ptr<LeanMethod> lean;
+  kc::LeanParams lparams{};
+  if (method == "lean") {
+    lean = std::make_unique<LeanMethod>(o.lean, Precision::float64, o.cascade_fields);
+    lean->begin_frame(ctx);
+    lparams = same_struct<kc::LeanParams>(lean->params());
+  }
   const int w = m.scene.width, h = m.scene.height;
   std::vector<Sums> rows(static_cast<size_t>(h));
   tbb::parallel_for(0, h, [&](int j) {
@@ -145,6 +158,8 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
         kc::microspec_shade(waves, f, mparams, corners, i, j);
       } else if (method == "bruneton") {
         kc::bruneton_pixel(waves, f, bparams, i, j);
+      } else if (method == "lean") {
+        kc::lean_pixel(waves, f, lean->map().texels(), lparams, i, j);
       } else {
         kc::StaaPath path;
         const kc::StaaResult r = kc::staa_pixel(waves, tables->f_texture(), tables->s_texture(),

@@ -1,7 +1,8 @@
 // The kernel's work counters (methods/kernel_counts.h) against scenes whose counts are
 // known: `point` on flat water visits each of its N waves once per pixel that sees water
 // and none where the pixel sees the sky; `supersample` S_x S_y times that; `specaa` once with
-// its quads' derivatives and twice with the analytic ones; the counting
+// its quads' derivatives and twice with the analytic ones; `lean` none (its map's 40 floats
+// a trilinear lookup); the counting
 // build renders what the double kernel renders; displaced water counts march steps and
 // flat water none.
 #include "methods/kernel_counts.h"
@@ -163,9 +164,31 @@ TEST(KernelCounts, TheCountingKernelRendersWhatTheDoubleKernelRenders) {
   }
 }
 
+TEST(KernelCounts, LeanReadsItsMapAndVisitsNoWave) {
+  // On flat water a pixel reads the map (a trilinear lookup: two levels of four texels of
+  // five floats, 40 floats; one level where the level of detail is clamped) and visits no
+  // wave, however many waves the map holds; anisotropic probes read up to --lean-max-aniso
+  // lookups.
+  for (int n : {1, 33}) {
+    const SceneModel m(water_only(n));
+    MethodOptions o;
+    o.lean.size = 64;
+    const KernelWork k = count_kernel_work(m, "lean", testing::with_tables(o), 2);
+    EXPECT_EQ(k.waves.max, 0u) << n;
+    EXPECT_EQ(k.table_fetches.max, 40u) << n;
+    EXPECT_GE(k.table_fetches.mean, 20.0) << n;
+    o.lean.filter = LeanFilter::aniso;
+    o.lean.max_aniso = 4;
+    const KernelWork a = count_kernel_work(m, "lean", testing::with_tables(o), 2);
+    EXPECT_EQ(a.waves.max, 0u) << n;
+    EXPECT_LE(a.table_fetches.max, 4u * 40u) << n;
+    EXPECT_GT(a.table_fetches.mean, k.table_fetches.mean) << n;
+  }
+}
+
 TEST(KernelCounts, MethodsWithoutACountingRenderAreRefused) {
   const SceneModel m(water_only(2));
-  EXPECT_THROW(count_kernel_work(m, "lean", testing::with_tables({}), 0), Error);
+  EXPECT_THROW(count_kernel_work(m, "taa", testing::with_tables({}), 0), Error);
   EXPECT_THROW(count_kernel_work(m, "reference", testing::with_tables({}), 0), Error);
 }
 

@@ -19,44 +19,29 @@
 // "colour"): the caller sets them to what lies beyond the map (lean.h: the analytic moments
 // of the unbounded wave field).
 //
-// Filters (positions and footprints in level-0 texel units):
-//   bilinear(l, s)   the four level-l texels around s, bilinear weights (they sum to 1).
-//   trilinear(s, lambda)  lambda clamped to [0, L]; bilinear at floor(lambda) and the next
-//                    level, blended by the fraction (GL's LINEAR_MIPMAP_LINEAR).
-//   lookup, trilinear: lambda = log2(max(|ds/dpx|, |ds/dpy|)) (the GL level of detail).
-//   lookup, aniso:   GL EXT_texture_filter_anisotropic: P_max, P_min the longer and shorter
-//                    of |ds/dpx|, |ds/dpy|; N = min(ceil(P_max / P_min), max_aniso) trilinear
-//                    probes at lambda = log2(P_max / N), equally spaced along the longer
-//                    derivative, at offsets ((k + 1/2)/N - 1/2) of it, k < N, equally
-//                    weighted: the footprint parallelogram cut into N strips (the pixel's box
-//                    filter; Feline, McCormack et al. 1999, places probes the same way with
-//                    Gaussian weights for a Gaussian filter).
+// The filters and the chain's texels are the kernel's (kernel/lean.glsl, which states them);
+// this class holds the texels on the host and builds the chain.
 #pragma once
 
 #include <cstddef>
 #include <functional>
 #include <vector>
 
+#include "kernel/kernel_double.h"
 #include "math/vec.h"
 #include "methods/options.h"
 
 namespace sg {
 
-// One texel, single precision: b_x, b_z, b_x^2, b_z^2, b_x b_z (20 bytes).
+// One texel, single precision: b_x, b_z, b_x^2, b_z^2, b_x b_z (20 bytes; the kernel reads
+// them as five floats, kernel/lean.glsl).
 struct LeanTexel {
   float bx = 0, bz = 0, mxx = 0, mzz = 0, mxz = 0;
 };
 
-// Filtered moments in double precision.
-struct LeanMoments {
-  vec2 B{0, 0};
-  vec3 M{0, 0, 0};  // (xx, zz, xz)
-
-  // Sigma = M - B B^T, made positive semi-definite (single-precision storage can leave a
-  // variance of -1e-8 where the true one is 0).
-  mat2 covariance() const;
-  static LeanMoments of_slope(const vec2& b);  // a single slope: M = b b^T
-};
+// Filtered moments in double precision: the kernel's (B, M = (xx, zz, xz)).
+using LeanMoments = kd::LeanMoments;
+LeanTexel to_texel(const LeanMoments& m);
 
 class LeanMap {
  public:
@@ -78,24 +63,21 @@ class LeanMap {
   // Levels 1..L, each the 2 x 2 box mean of the one before (parallel).
   void build_mips();
 
+  // The kernel's view of the texels, and its filters over them (kernel/lean.glsl) with the
+  // map's size and border; the filter's options where one applies.
+  kd::MapTexels texels() const;
+  kd::LeanParams params(LeanFilter filter = LeanFilter::trilinear, int max_aniso = 16) const;
   LeanMoments texel(int level, int i, int j) const;  // border outside the level
   LeanMoments bilinear(int level, const vec2& s) const;
   LeanMoments trilinear(const vec2& s, double lambda) const;
   LeanMoments lookup(const vec2& s, const vec2& ds_dpx, const vec2& ds_dpy, LeanFilter filter,
                      int max_aniso) const;
 
-  // Bilinear taps of level `level` at s: texel indices and weights (for tests).
-  struct Taps {
-    int i0 = 0, j0 = 0;
-    double w[4] = {0, 0, 0, 0};  // (i0, j0), (i0+1, j0), (i0, j0+1), (i0+1, j0+1)
-  };
-  static Taps bilinear_taps(int level, const vec2& s);
-
  private:
   int size_ = 0;
   std::vector<size_t> offsets_;
   std::vector<LeanTexel> texels_;
-  LeanMoments border_;
+  LeanMoments border_{};
 };
 
 }  // namespace sg

@@ -5,7 +5,8 @@
 //  - MIP filtering: a level-l texel (the lookup at its centre) equals the brute-force mean
 //    of the 2^l x 2^l finest texels it covers; filter weights sum to 1; anisotropic probes
 //    follow the box footprint where trilinear over-blurs.
-//  - The wave map's texels are WaveField::gradient at their centres.
+//  - The wave map's texels (the CPU's lanes) are the mapped waves' gradient at their
+//    centres and the GL engine's text (kernel/lean.glsl, lean_level0_texel).
 //  - Coverage: the map holds the visible water within D; pixels beyond the map get the
 //    uniform NDF of Eq. 3 (border moments), as documented.
 //  - Calm water against the analytic mirrored disk; the shared scenes and a displaced,
@@ -23,7 +24,6 @@
 #include "methods/point.h"
 #include "methods/supersample.h"
 #include "shading/ndf.h"
-#include "shading/ndf_radiance.h"
 #include "shading/radiance.h"
 #include "shading/water_geometry.h"
 #include "testing/calm_water.h"
@@ -42,7 +42,7 @@ double compare_rmse(const Image& a, const Image& b) {
 void expect_moments_near(const LeanMoments& a, const vec2& B, const mat2& cov, double tol) {
   EXPECT_NEAR(a.B.x, B.x, tol);
   EXPECT_NEAR(a.B.y, B.y, tol);
-  const mat2 c = a.covariance();
+  const mat2 c = kd::lean_covariance(a);
   EXPECT_NEAR(c[0][0], cov[0][0], tol);
   EXPECT_NEAR(c[1][1], cov[1][1], tol);
   EXPECT_NEAR(c[0][1], cov[0][1], tol);
@@ -55,19 +55,16 @@ TEST(LeanMap, ConstantSlopesHaveNoSpreadAtAnyLevel) {
   const vec2 b(0.13, -0.07);
   map.fill([&](int, int) { return b; });
   map.build_mips();
-  map.set_border(LeanMoments::of_slope(b));
   Pcg32 rng(1, 2);
   for (int k = 0; k < 200; ++k) {
-    const vec2 s(64 * rng.uniform(), 64 * rng.uniform());
+    // Inside the map by more than the filters' reach (the border's mean slope is 0).
+    const vec2 s(20 + 24 * rng.uniform(), 20 + 24 * rng.uniform());
     const vec2 dx(8 * rng.uniform(), rng.uniform()), dy(-rng.uniform(), 3 * rng.uniform());
     for (LeanFilter f : {LeanFilter::trilinear, LeanFilter::aniso}) {
       // Any filter of constant moments returns them: the weights sum to 1.
       expect_moments_near(map.lookup(s, dx, dy, f, 16), b, mat2(0.0), 1e-7);
     }
-    const LeanMap::Taps t = LeanMap::bilinear_taps(k % 7, s);
-    EXPECT_NEAR(t.w[0] + t.w[1] + t.w[2] + t.w[3], 1.0, 1e-15);
-    for (double w : t.w)
-      EXPECT_GE(w, 0.0);
+    expect_moments_near(map.bilinear(k % 5, s), b, mat2(0.0), 1e-7);
   }
 }
 
@@ -108,7 +105,7 @@ TEST(LeanMap, MipTexelsAreBoxMeansOfTheFinestTexels) {
     const int n = map.level_size(level), w = 1 << level;
     for (int k = 0; k < 10; ++k) {
       const int I = static_cast<int>(rng.uniform() * n), J = static_cast<int>(rng.uniform() * n);
-      LeanMoments brute;
+      LeanMoments brute{};
       for (int j = J * w; j < (J + 1) * w; ++j) {
         for (int i = I * w; i < (I + 1) * w; ++i) {
           const LeanMoments t = map.texel(0, i, j);  // the stored (float) finest texels
@@ -119,7 +116,7 @@ TEST(LeanMap, MipTexelsAreBoxMeansOfTheFinestTexels) {
       // The lookup at the level-l texel centre, level of detail exactly l.
       const vec2 centre((I + 0.5) * w, (J + 0.5) * w);
       const LeanMoments look = map.trilinear(centre, level);
-      expect_moments_near(look, brute.B, brute.covariance(), 2e-7);
+      expect_moments_near(look, brute.B, kd::lean_covariance(brute), 2e-7);
       EXPECT_NEAR(look.M.z, brute.M.z, 2e-7);
     }
   }
@@ -144,8 +141,8 @@ TEST(LeanMap, AnisotropicProbesFollowTheFootprintWhereTrilinearOverBlurs) {
     ++count;
   }
   const double var = brute2 / count - sqr(brute / count);
-  const double tri = map.lookup(s, dx, dy, LeanFilter::trilinear, 16).covariance()[1][1];
-  const double ani = map.lookup(s, dx, dy, LeanFilter::aniso, 16).covariance()[1][1];
+  const double tri = kd::lean_covariance(map.lookup(s, dx, dy, LeanFilter::trilinear, 16))[1][1];
+  const double ani = kd::lean_covariance(map.lookup(s, dx, dy, LeanFilter::aniso, 16))[1][1];
   EXPECT_NEAR(tri, 0.045, 0.002);  // two whole periods: A^2 / 2
   EXPECT_LT(std::fabs(ani - var), 0.2 * std::fabs(tri - var)) << ani << " " << var << " " << tri;
   // Slopes varying along the footprint's long side (a ramp in x): the 16 probes sit on the
@@ -156,8 +153,8 @@ TEST(LeanMap, AnisotropicProbesFollowTheFootprintWhereTrilinearOverBlurs) {
   ramp.fill([](int i, int) { return vec2(0.01 * (i + 0.5), 0.0); });
   ramp.build_mips();
   const double ramp_var = sqr(0.01) * (16 * 16 - 1) / 12.0;  // 16 equally spaced values
-  const mat2 ac = ramp.lookup(s, dx, dy, LeanFilter::aniso, 16).covariance();
-  const mat2 tc = ramp.lookup(s, dx, dy, LeanFilter::trilinear, 16).covariance();
+  const mat2 ac = kd::lean_covariance(ramp.lookup(s, dx, dy, LeanFilter::aniso, 16));
+  const mat2 tc = kd::lean_covariance(ramp.lookup(s, dx, dy, LeanFilter::trilinear, 16));
   EXPECT_NEAR(ac[0][0], ramp_var, 1e-6);
   EXPECT_GT(tc[0][0], 2 * ramp_var);
   // An isotropic footprint takes one probe: aniso equals trilinear.
@@ -168,32 +165,53 @@ TEST(LeanMap, AnisotropicProbesFollowTheFootprintWhereTrilinearOverBlurs) {
 }
 
 TEST(LeanWaves, TexelsAreTheGradientAndWholePeriodsGiveEq3) {
-  // One wave with whole periods across a 256-texel map: 5 in x and 3 in z.
+  // One wave with whole periods across a 256-texel map: 5 in x and 3 in z; a second one
+  // finer than the grid (left to the base term). The CPU's fill (SIMD lanes, angle addition)
+  // against the gradient of the mapped wave and against the GL engine's text
+  // (lean_level0_texel) at every 29th / 37th texel.
   const double texel = 0.05, side = 256 * texel;
   const vec2 k(kTwoPi * 5 / side, kTwoPi * 3 / side);
-  std::vector<Wave> waves = {Wave{0.02, k, 1.7, 0.4}};
-  WaveField w(waves);
+  Scene s = testing::small_scene(
+      {Wave{0.02, k, 1.7, 0.4}, Wave{0.001, vec2(kTwoPi / (1.5 * texel), 0.0), 9.0, 0.2}}, 64, 36);
+  SceneModel m(s);
+  KernelInputsD in;
+  build_kernel_inputs(m, frame_time(s, 3), 1, 0, in);
+  const kd::WaveBuffer waves = wave_buffer(in);
   LeanMapRegion region;
   region.origin = vec2(-3.0, -40.0);
   region.texel = texel;
+  LeanOptions o;
+  const kd::LeanParams p =
+      lean_frame_params(region, o, 256, kernel_frame_waves(in), vec2(in.origin.x, in.origin.z));
+  EXPECT_EQ(p.levels, 9);
   LeanMap map;
   map.allocate(256);
-  const std::vector<double> weights = {1.0};
-  const double t = 0.37;
-  fill_lean_map_from_waves(map, region, w, weights, t);
+  fill_lean_map(map, p, kernel_frame_waves(in));
   map.build_mips();
+  // The mapped wave alone (the buffer is sorted by |k|: it is wave 0).
+  const kd::Wave w0 = kd::wave_at(waves, in.frame, 0);
+  ASSERT_NEAR(w0.A, 0.02, 1e-15);
   for (int j = 0; j < 256; j += 37) {
     for (int i = 0; i < 256; i += 29) {
-      const vec2 g =
-          w.gradient(region.origin.x + (i + 0.5) * texel, region.origin.y + (j + 0.5) * texel, t);
-      const LeanMoments m = map.texel(0, i, j);
-      EXPECT_NEAR(m.B.x, g.x, 1e-7 + 1e-6 * std::fabs(g.x));
-      EXPECT_NEAR(m.B.y, g.y, 1e-7 + 1e-6 * std::fabs(g.y));
+      const kd::vec2 xz = kd::lean_texel_centre(p, i, j);
+      const kd::vec2 g = kd::wave_gradient_of(w0, xz.x, xz.y, 0.0);
+      const LeanMoments t = map.texel(0, i, j);
+      EXPECT_NEAR(t.B.x, g.x, 1e-7 + 1e-6 * std::fabs(g.x));
+      EXPECT_NEAR(t.B.y, g.y, 1e-7 + 1e-6 * std::fabs(g.y));
+      const LeanMoments gl = kd::lean_level0_texel(waves, in.frame, p, i, j);
+      EXPECT_NEAR(t.B.x, gl.B.x, 1e-7 + 1e-6 * std::fabs(g.x));
+      EXPECT_NEAR(t.M.z, gl.M.z, 1e-8 + 1e-6 * std::fabs(gl.M.z));
     }
   }
-  const mat2 eq3 = uniform_ndf_covariance(w, weights);
+  const mat2 eq3 = 0.5 * 0.02 * 0.02 * glm::outerProduct(k, k);
   const LeanMoments top = map.texel(map.levels() - 1, 0, 0);
   expect_moments_near(top, vec2(0), eq3, 1e-6 * eq3[1][1]);
+  // The border holds Eq. 3 of the mapped wave, the base term the finer wave's.
+  EXPECT_NEAR(p.border.x, eq3[0][0], 1e-15);
+  EXPECT_NEAR(p.border.y, eq3[1][1], 1e-15);
+  EXPECT_NEAR(p.border.z, eq3[0][1], 1e-15);
+  EXPECT_NEAR(p.base.x, 0.5 * 1e-6 * sqr(kTwoPi / (1.5 * texel)), 1e-12);
+  EXPECT_EQ(p.base.y, 0.0);
 }
 
 TEST(LeanCoverage, VisibleWaterBoundsAreTheBoxOfTheVisibleWaterWithinD) {
@@ -269,22 +287,34 @@ TEST(Lean, WavesTheTexelGridCannotSampleGoToTheBaseRoughness) {
   FrameContext ctx{m, frame_time(s, 3), 0};
   lean.begin_frame(ctx);
   const double texel = lean.region().texel;
-  std::vector<double> base(m.waves.size());
+  const kd::LeanParams& p = lean.params();
+  const kd::WaveBuffer waves = wave_buffer(lean.inputs());
+  const kd::Frame& f = lean.inputs().frame;
+  ASSERT_EQ(f.wave_count, static_cast<int>(m.waves.size()));
   int mapped = 0;
-  for (size_t k = 0; k < m.waves.size(); ++k) {
-    const double f = std::max(std::fabs(m.waves.a[k]), std::fabs(m.waves.b[k])) * texel / kTwoPi;
-    EXPECT_EQ(lean.mapped_waves()[k], f <= 0.5 ? 1.0 : 0.0) << k;
-    base[k] = 1.0 - lean.mapped_waves()[k];
-    mapped += f <= 0.5;
+  mat2 base(0.0);
+  const kd::vec2 xz = kd::lean_texel_centre(p, 10, 20);
+  kd::vec2 g(0.0);
+  for (int k = 0; k < f.wave_count; ++k) {
+    const kd::Wave w = kd::wave_at(waves, f, k);
+    const double fr = std::max(std::fabs(w.a), std::fabs(w.b)) * texel / kTwoPi;
+    const bool in_map = fr <= 0.5;
+    EXPECT_EQ(kd::lean_wave_amplitude(w, texel) != kd::vec2(0.0), in_map) << k;
+    mapped += in_map;
+    if (in_map) {
+      g += kd::wave_gradient_of(w, xz.x, xz.y, 0.0);
+    } else {
+      base += 0.5 * w.A * w.A * glm::outerProduct(vec2(w.a, w.b), vec2(w.a, w.b));
+    }
   }
   EXPECT_GT(mapped, 0);
-  EXPECT_LT(mapped, static_cast<int>(m.waves.size()));
-  const mat2 expect = uniform_ndf_covariance(m.waves, base);
-  EXPECT_EQ(lean.base_covariance(), expect);
+  EXPECT_LT(mapped, f.wave_count);
+  const mat2 got = kd::sym2(p.base);
+  for (int a = 0; a < 2; ++a) {
+    for (int b = 0; b < 2; ++b)
+      EXPECT_NEAR(got[a][b], base[a][b], 1e-12 * base[1][1] + 1e-18);
+  }
   // A texel's slope is the gradient of the mapped waves only.
-  const vec2 g = m.waves.gradient_weighted(lean.region().origin.x + 10.5 * texel,
-                                           lean.region().origin.y + 20.5 * texel, ctx.time.end,
-                                           lean.mapped_waves());
   EXPECT_NEAR(lean.map().texel(0, 10, 20).B.x, g.x, 1e-6 * (1 + std::fabs(g.x)));
   EXPECT_NEAR(lean.map().texel(0, 10, 20).B.y, g.y, 1e-6 * (1 + std::fabs(g.y)));
 }
@@ -305,9 +335,10 @@ TEST(Lean, PixelsBeyondTheMapGetTheUniformNdfOfEq3) {
     int checked = 0;
     for (int j = 0; j < m.height(); ++j) {
       for (int i = 0; i < m.width(); ++i) {
-        const PixelFootprint fp = pixel_footprint(m, i + 0.5, j + 0.5, ctx.time.end);
+        const kd::Footprint fp = kd::pixel_footprint(
+            wave_buffer(lean.inputs()), lean.inputs().frame, i + 0.5, j + 0.5, 0.0, false);
         if (!fp.hit) continue;
-        const vec2 st = lean.region().to_texels(vec2(fp.point.x, fp.point.z));
+        const vec2 st = (vec2(fp.point.x, fp.point.z) - lean.params().origin) / lean.params().texel;
         // Every tap of the lookup lies outside the map when the footprint centre is further
         // out than the filter's reach (twice the footprint's longer side in texels, plus 2
         // texels of the coarser level's bilinear taps).
@@ -318,13 +349,15 @@ TEST(Lean, PixelsBeyondTheMapGetTheUniformNdfOfEq3) {
         if (out <= reach) continue;
         const LeanMoments mo = lean.lookup(fp);
         EXPECT_EQ(mo.B, vec2(0.0));
-        const mat2 cov = mo.covariance() + lean.base_covariance();
+        const mat2 cov = kd::lean_covariance(mo) + kd::sym2(lean.params().base);
         for (int a = 0; a < 2; ++a) {
           for (int b = 0; b < 2; ++b)
             EXPECT_NEAR(cov[a][b], eq3[a][b], 1e-7 * eq3[1][1]);
         }
         EXPECT_NEAR(lean.shade(ctx, i, j),
-                    grey_value(m, shade_gaussian_ndf(m, fp.view, vec2(0), eq3).weights), 1e-9);
+                    grey_value(m, to_weights(kd::ndf_lobe_weights(lean.inputs().frame, fp.view,
+                                                                  vec2(0), eq3))),
+                    1e-9);
         ++checked;
       }
     }

@@ -7,12 +7,11 @@
 // cascade (kernel/cascade_grid.glsl has the layout). The per-pixel cost is then a few
 // fetches per cascade whatever its waves (docs/ocean.md, "Shading from the cascades").
 //
-// Which methods read them: `point`, `supersample` with T = 1, `staa-temporal` and `staa`
-// (both engines, flat and displaced water), `lean`, `specaa` and `bruneton` (CPU engine,
-// flat water, through methods/host_cascades.h). Elsewhere (`reference` and `supersample`
-// with T > 1, whose rays take other times, the host baselines on displaced water, `taa`,
-// `microspec`) the cascades are their lattice sines among the waves, exactly, at a cost
-// that follows the waves.
+// Which methods read them: `point`, `supersample` with T = 1, `staa-temporal`, `staa` and
+// `specaa` (both engines, flat and displaced water), `lean` and `bruneton` (both engines,
+// flat water). Elsewhere (`reference` and `supersample` with T > 1, whose rays take other
+// times, `lean` and `bruneton` on displaced water, `taa`, `microspec`) the cascades are their
+// lattice sines among the waves, exactly, at a cost that follows the waves.
 #pragma once
 
 #include <array>
@@ -84,8 +83,7 @@ inline double cascade_instant(const FrameTime& ft, int segments, int k) {
 //   display_level0: level 0 of the display time, its slopes and height (`point`,
 //     `supersample` with T = 1);
 //   display_chain: the display time's whole chain alone (`specaa`, whose kernel reads level
-//     0's Hessian; `bruneton`, the footprint's moments; the host's `lean`:
-//     methods/host_cascades.h), its
+//     0's Hessian; `bruneton` and `lean`, the footprint's moments), its
 //     texels those of `all`, the other instants' 0
 //     (CascadeFields.DisplayChainIsTheWholeFieldsDisplayTime).
 // With the level-0 reads, level 0 holds (s_x, s_z, 0, 0), (0, h, 0, 0) at the display time and
@@ -99,10 +97,10 @@ inline CascadeReads cascade_reads_of(const std::string& method) {
   if (method == "staa") return CascadeReads::all;
   if (method == "staa-temporal") return CascadeReads::instants_level0;
   if (method == "specaa") return CascadeReads::display_chain;  // level 0's Hessian
-  // The footprint's moments (kernel/bruneton.glsl): its chain. On flat water only: the
-  // filtered displaced surface weighs each wave's height by its own weight, which a
-  // cascade's field does not have; there its lattice is sines among the waves.
-  if (method == "bruneton") return CascadeReads::display_chain;
+  // The footprint's moments (kernel/bruneton.glsl, kernel/lean.glsl): its chain. On flat
+  // water only: the filtered displaced surface weighs each wave's height by its own weight,
+  // which a cascade's field does not have; there its lattice is sines among the waves.
+  if (method == "bruneton" || method == "lean") return CascadeReads::display_chain;
   return CascadeReads::display_level0;
 }
 

@@ -209,8 +209,8 @@ expect_refused "OpenGL below 4.5" "no OpenGL 4.5 core window" "$shot" \
   --screenshot "$shot"
 expect_refused "bad scene" "amplitude" "$shot" \
   "$bin" view "$src/tests/scenes/bad/amplitude_negative.json" --frames 1 --screenshot "$shot"
-expect_refused "not a GL method" "--method lean: the viewer renders on the GL engine" "$shot" \
-  "$bin" view "$scene" -m lean --frames 1 --screenshot "$shot"
+expect_refused "not a GL method" "--method taa: the viewer renders on the GL engine" "$shot" \
+  "$bin" view "$scene" -m taa --frames 1 --screenshot "$shot"
 expect_refused "screenshot not png" "--screenshot: must be a .png" "$work/refused.exr" \
   "$bin" view "$scene" --frames 1 --screenshot "$work/refused.exr"
 expect_refused "edit out of range" "--sun-radius" "$shot" \

@@ -72,6 +72,46 @@ vec4 specaa_quad_pixel(ivec2 p) {
 #if defined(SG_METHOD_BRUNETON)
 uniform BrunetonParams bparams;
 #endif
+#if defined(SG_METHOD_LEAN) || defined(SG_METHOD_LEAN_MAP)
+// `lean`'s map (gl_engine/lean_map_gl.h): its texels, five floats each, read with the
+// kernel's filters; the map program writes a level through the storage buffer from the
+// waves (level 0) or from the level before (read through the texture).
+uniform LeanParams lparams;
+layout(binding = 6) uniform samplerBuffer lean_map;
+#endif
+#if defined(SG_METHOD_LEAN_MAP)
+// A pass writes the rows [lean_row0, lean_row0 + lean_rows) of level lean_level through a
+// window of the map's buffer that starts at float lean_out_base (gl_engine/lean_map_gl.h).
+uniform int lean_level;
+uniform int lean_row0;
+uniform int lean_rows;
+uniform int lean_out_base;
+layout(std430, binding = 7) writeonly buffer LeanMapOut {
+  float lean_out[];
+};
+
+void lean_map_main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, lean_row0);
+  int n = lparams.size >> lean_level;
+  if (p.x >= n || int(gl_GlobalInvocationID.y) >= lean_rows) return;
+  LeanMoments t;
+  if (lean_level == 0) {
+    t = lean_level0_texel(waves, frame, lparams, p.x, p.y);
+  } else {
+    int np = 2 * n;
+    int c = lean_level_offset(lparams.size, lean_level - 1) + 2 * p.y * np + 2 * p.x;
+    t = lean_parent(lean_map_texel(lean_map, c), lean_map_texel(lean_map, c + 1),
+                    lean_map_texel(lean_map, c + np), lean_map_texel(lean_map, c + np + 1));
+  }
+  int at = kLeanTexelFloats * (lean_level_offset(lparams.size, lean_level) + p.y * n + p.x) -
+           lean_out_base;
+  lean_out[at] = t.B.x;
+  lean_out[at + 1] = t.B.y;
+  lean_out[at + 2] = t.M.x;
+  lean_out[at + 3] = t.M.y;
+  lean_out[at + 4] = t.M.z;
+}
+#endif
 #if defined(SG_METHOD_MICROSPEC)
 uniform MicrospecParams mparams;
 // `microspec`'s corners: the workgroup's 8 x 8 pixels have 9 x 9 corners, each traced once
@@ -97,6 +137,10 @@ vec4 microspec_group_pixel(ivec2 p) {
 #endif
 
 void main() {
+#if defined(SG_METHOD_LEAN_MAP)
+  lean_map_main();
+  return;
+#endif
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
 #if defined(SG_METHOD_SPECAA) && SG_SPECAA_QUAD
   // Before the image's edge test: the quad's barrier is every invocation's.
@@ -139,6 +183,8 @@ void main() {
   w = corner_weights;
 #elif defined(SG_METHOD_BRUNETON)
   w = bruneton_pixel(waves, frame, bparams, p.x, p.y).weights;
+#elif defined(SG_METHOD_LEAN)
+  w = lean_pixel(waves, frame, lean_map, lparams, p.x, p.y).weights;
 #endif
   imageStore(weights_out, p, w);
 }

@@ -56,6 +56,10 @@ FallbackResult float_bruneton_pixel(const WaveBuffer& waves, const Frame& f,
                                     const BrunetonParams& p, int i, int j) {
   return bruneton_pixel(waves, f, p, i, j);
 }
+FallbackResult float_lean_pixel(const WaveBuffer& waves, const Frame& f, const MapTexels& map,
+                                const LeanParams& p, int i, int j) {
+  return lean_pixel(waves, f, map, p, i, j);
+}
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,

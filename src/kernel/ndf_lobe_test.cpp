@@ -1,21 +1,22 @@
-// The shading of a Gaussian NDF (ndf_radiance.h) against Monte Carlo: normals drawn from
-// the Gaussian, each reflected exactly and shaded with the scene spec's rules.
-#include "shading/ndf_radiance.h"
-
+// The shading of a Gaussian NDF (kernel/ndf_lobe.glsl, `specaa`'s and `lean`'s lobes)
+// against Monte Carlo: normals drawn from the Gaussian, each reflected exactly and shaded
+// with the scene spec's rules (the light's cone, the horizon); and its weights against the
+// spec's combination with Fresnel, the sky and the sea.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
+#include "kernel/kernel_double.h"
 #include "math/rng.h"
-#include "shading/radiance.h"
-#include "shading/rdf.h"
+#include "scene/model.h"
+#include "shading/kernel_frame.h"
 #include "testing/testing.h"
 
 namespace sg {
 namespace {
 
-// Draws n ~ N(centre, cov) (Cholesky) and returns the spec's radiance for that normal.
+// Draws n ~ N(centre, cov) (Cholesky).
 struct NdfSampler {
   vec2 centre;
   double l11, l21, l22;
@@ -32,15 +33,23 @@ struct NdfSampler {
   }
 };
 
-TEST(NdfRadiance, LightAndHorizonFractionsMatchMonteCarlo) {
-  Scene s = testing::small_scene({});
+kd::Frame frame_of(const Scene& s) {
   SceneModel m(s);
+  KernelInputsD in;
+  build_kernel_inputs(m, frame_time(s, 0), 1, 0, in);
+  return in.frame;
+}
+
+TEST(NdfLobe, LightAndHorizonFractionsMatchMonteCarlo) {
+  // No Fresnel: the weights are (in_light, sky..., below).
+  const kd::Frame f = frame_of(testing::small_scene({}));
+  ASSERT_EQ(f.fresnel, 0);
   // A grazing view; centre normals that mirror it inside the light disk and 3 disk radii
   // away from it. Inside: slope covariances of growing spread. Away: covariances whose
   // RDF (Eq. 16) has a chosen shape, elongated along or across the offset, so that the
   // light fraction depends on the RDF's orientation.
   const vec3 v = normalize(vec3(0.01, 0.06, 1.0));
-  const double R = m.light.tan_radius;
+  const double R = f.light.tan_radius;
   Pcg32 rng(5, 9);
   struct Case {
     vec2 target;   // light-plane point of the centre reflection
@@ -58,8 +67,8 @@ TEST(NdfRadiance, LightAndHorizonFractionsMatchMonteCarlo) {
   for (const Case& cs : cases) {
     vec2 nc(0, 0);
     for (int it = 0; it < 50; ++it) {
-      vec2 p = ndf_to_light_plane(nc, v, m.light);
-      nc -= glm::inverse(ndf_to_light_plane_jacobian(nc, v, m.light)) * (p - cs.target);
+      const vec2 p = kd::light_to_plane(f.light, kd::reflect_about_ndf_point(nc, v));
+      nc -= glm::inverse(kd::ndf_to_light_plane_jacobian(nc, v, f.light)) * (p - cs.target);
     }
     const double sd = cs.sd;
     mat2 cov;
@@ -70,32 +79,32 @@ TEST(NdfRadiance, LightAndHorizonFractionsMatchMonteCarlo) {
       // RDF: 2 R along the larger axis, `ratio` the variance of e2 over e1.
       const double v1 = sqr(2 * R) * std::min(1.0, 1 / cs.ratio), v2 = v1 * cs.ratio;
       const double c12 = cs.c * std::sqrt(v1 * v2);
-      const mat2 Jinv = glm::inverse(ndf_to_light_plane_jacobian(nc, v, m.light));
+      const mat2 Jinv = glm::inverse(kd::ndf_to_light_plane_jacobian(nc, v, f.light));
       cov = Jinv * mat2(vec2(v1, c12), vec2(c12, v2)) * glm::transpose(Jinv);
     }
-    const GaussianNdfShading g = shade_gaussian_ndf(m, v, nc, cov);
+    const kd::vec4 w = kd::ndf_lobe_weights(f, v, nc, cov);
     NdfSampler sampler(nc, cov);
     const int n = 200000;
     int light = 0, below = 0;
     for (int k = 0; k < n; ++k) {
-      const vec3 r = normalize(reflect_about_ndf_point(sampler.draw(rng), v));
+      const vec3 r = normalize(kd::reflect_about_ndf_point(sampler.draw(rng), v));
       if (r.y <= 0) {
         ++below;
       } else {
-        light += m.light.contains(r);
+        light += kd::light_contains(f.light, r);
       }
     }
     const double pl = double(light) / n, pb = double(below) / n;
     std::printf(
         "centre (%.1f, %.1f) R, slope sd %g, ratio %g: light %.5f (MC %.5f), "
         "below %.5f (MC %.5f)\n",
-        cs.target.x / R, cs.target.y / R, sd, cs.ratio, g.in_light, pl, g.below, pb);
+        cs.target.x / R, cs.target.y / R, sd, cs.ratio, w.x, pl, w.w, pb);
     // 4 standard errors plus a linearisation allowance: 3% of the value (as rdf_test) up to
-    // slope deviations of 0.02, 10% beyond, where the first-order maps (Podee Eq. 11, and
-    // r_y's) bend over the spread (measured: 6% at 0.1, 12% of a 0.3% tail at 0.05).
+    // slope deviations of 0.02, 10% beyond, where the first-order maps (Podee Eq. 11 and
+    // the horizon's line on the light plane) bend over the spread.
     const double lin = sd <= 0.02 ? 0.03 : 0.1;
-    EXPECT_NEAR(g.in_light, pl, 4 * std::sqrt(pl * (1 - pl) / n) + lin * pl + 1e-4) << sd;
-    EXPECT_NEAR(g.below, pb, 4 * std::sqrt(pb * (1 - pb) / n) + lin * pb + 1e-4) << sd;
+    EXPECT_NEAR(w.x, pl, 4 * std::sqrt(pl * (1 - pl) / n) + lin * pl + 1e-4) << sd;
+    EXPECT_NEAR(w.w, pb, 4 * std::sqrt(pb * (1 - pb) / n) + lin * pb + 1e-4) << sd;
     if (sd == 0.1) {
       EXPECT_GT(pb, 0.05);  // the case exercises the horizon
     }
@@ -113,27 +122,31 @@ TEST(NdfRadiance, LightAndHorizonFractionsMatchMonteCarlo) {
   }
 }
 
-TEST(NdfRadiance, ValueCombinesFractionsWithFresnelSkyAndSea) {
+TEST(NdfLobe, WeightsCombineFractionsWithFresnelSkyAndSea) {
   Scene s = testing::small_scene({});
-  s.light.radiance = Rgb(40);
-  s.sky = SkyDesc::constant(Rgb(0.2));
-  s.surface.sea_radiance = Rgb(0.05);
   s.surface.fresnel = FresnelMode::schlick;
-  SceneModel m(s);
+  s.sky = SkyDesc::constant(Rgb(0.2));
+  const kd::Frame f = frame_of(s);
+  const kd::Frame plain = frame_of(testing::small_scene({}));
   const vec3 v = normalize(vec3(0.0, 0.1, 1.0));
   const vec2 nc(0.01, -0.02);
   const mat2 cov(vec2(4e-4, 1e-4), vec2(1e-4, 3e-4));
-  const GaussianNdfShading g = shade_gaussian_ndf(m, v, nc, cov);
-  const double F = fresnel_schlick(dot(normalize(vec3(nc.x, 1, nc.y)), v));
-  EXPECT_DOUBLE_EQ(g.F, F);
-  EXPECT_DOUBLE_EQ(grey_value(m, g.weights),
-                   grey_value(m, combine_weights(m, F, g.in_light, g.below, 1.0)));
+  // The fractions from the frame without Fresnel, F from the centre normal.
+  const kd::vec4 fractions = kd::ndf_lobe_weights(plain, v, nc, cov);
+  const double F = kd::fresnel_schlick(dot(normalize(vec3(nc.x, 1, nc.y)), v));
+  const kd::vec4 w = kd::ndf_lobe_weights(f, v, nc, cov);
+  const kd::vec4 expect =
+      kd::combine_weights(f, F, fractions.x, fractions.w, kd::reflect_about_ndf_point(nc, v).y);
+  for (int c = 0; c < 4; ++c)
+    EXPECT_NEAR(w[c], expect[c], 1e-15) << c;
+  EXPECT_LT(F, 0.9);  // Fresnel matters here
   // A single normal (zero covariance) is shaded like the spec's point sample.
   for (double dz : {-0.2, -0.02, 0.0, 0.1}) {
     const vec2 n(0.003, dz);
-    EXPECT_NEAR(grey_value(m, shade_gaussian_ndf(m, v, n, mat2(0.0)).weights),
-                grey_value(m, water_weights(m, vec3(n.x, 1, n.y), v)), 1e-12)
-        << dz;
+    const kd::vec4 a = kd::ndf_lobe_weights(f, v, n, mat2(0.0));
+    const kd::vec4 b = kd::water_weights(f, vec3(n.x, 1, n.y), v);
+    for (int c = 0; c < 4; ++c)
+      EXPECT_NEAR(a[c], b[c], 1e-12) << dz << " " << c;
   }
 }
 
