@@ -579,6 +579,25 @@ TEST_F(GlEngineTest, LeanMapIsTheCpusInAnyBands) {
   EXPECT_TRUE(a == b) << "the bands wrote other values";
 }
 
+TEST_F(GlEngineTest, LeanMapPastTheBufferLimitIsRefusedNamingTheFlag) {
+  // An 8192 map is 447 million floats: past GL_MAX_TEXTURE_BUFFER_SIZE where that is 2^27
+  // (llvmpipe, NVIDIA), refused with the flag's name before any allocation.
+  // (A context that holds it allocates it.)
+  const long floats = 5L * (8192L * 8192L * 4 / 3 + 1);
+  const bool holds = floats <= long(gl::max_texture_buffer_texels());
+  gl_engine::LeanMapGl map;
+  try {
+    map.allocate(8192);
+    EXPECT_TRUE(holds) << "an 8192 map was allocated past the limit";
+  } catch (const Error& e) {
+    EXPECT_FALSE(holds) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--lean-size 8192"), std::string::npos) << e.what();
+  }
+  map.allocate(64);  // a map within the limit still is
+  EXPECT_EQ(map.texels().texels(),
+            size_t(5 * (64 * 64 + 32 * 32 + 16 * 16 + 8 * 8 + 4 * 4 + 2 * 2 + 1)));
+}
+
 TEST_F(GlEngineTest, DisplacedMarchAdvancesFarFromTheCameraInFloat) {
   // tests/scenes/gl-reference/far-float-march.json (the engines' agreement run, seed 7,
   // scene 96): 347 displaced waves seen from 2954 m up, the water 3.7 km along the rays,
