@@ -581,7 +581,7 @@ TEST_F(GlEngineTest, LeanMapIsTheCpusInAnyBands) {
 
 TEST_F(GlEngineTest, LeanMapPastTheBufferLimitIsRefusedNamingTheFlag) {
   // An 8192 map is 447 million floats: past GL_MAX_TEXTURE_BUFFER_SIZE where that is 2^27
-  // (llvmpipe, NVIDIA), refused with the flag's name before any allocation.
+  // (llvmpipe), refused with the flag's name before any allocation.
   // (A context that holds it allocates it.)
   const long floats = 5L * (8192L * 8192L * 4 / 3 + 1);
   const bool holds = floats <= long(gl::max_texture_buffer_texels());

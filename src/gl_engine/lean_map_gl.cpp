@@ -17,10 +17,10 @@ LeanMapGl::LeanMapGl() : program_(kernel_program(KernelEntry::lean_map, ProgramO
 
 void LeanMapGl::allocate(int size) {
   if (size == size_) return;
-  size_t texels = 0;
-  for (int n = size; n >= 1; n /= 2)
-    texels += size_t(n) * size_t(n);
-  const size_t floats = texels * size_t(kd::kLeanTexelFloats);
+  int levels = 0;
+  while ((size >> levels) >= 1)
+    ++levels;
+  const size_t floats = size_t(kd::lean_level_offset(size, levels)) * size_t(kd::kLeanTexelFloats);
   if (floats > size_t(gl::max_texture_buffer_texels())) {
     throw Error("--lean-size " + std::to_string(size) + ": the map's " + std::to_string(floats) +
                 " floats exceed this GL context's GL_MAX_TEXTURE_BUFFER_SIZE of " +

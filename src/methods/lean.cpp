@@ -150,7 +150,7 @@ void LeanMethod::begin_frame(const FrameContext& ctx) {
   params_ = lean_frame_params(region_, options_, options_.size, waves, vec2(origin.x, origin.z));
   params_f_ = lean_params_float(params_);
   map_.allocate(options_.size);
-  map_.set_border(LeanMoments{vec2(0), params_.border});
+  map_.set_border(params_.border);
   if (region_.empty) return;  // no visible water: the map is never looked up
   fill_lean_map(map_, params_, waves);
   map_.build_mips();

@@ -73,7 +73,7 @@ kd::LeanParams LeanMap::params(LeanFilter filter, int max_aniso) const {
   p.levels = levels();
   p.aniso = filter == LeanFilter::aniso;
   p.max_aniso = max_aniso;
-  p.border = border_.M;
+  p.border = border_;
   return p;
 }
 

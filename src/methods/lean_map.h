@@ -52,8 +52,9 @@ class LeanMap {
   int level_size(int level) const { return size_ >> level; }
   size_t bytes() const { return texels_.capacity() * sizeof(LeanTexel); }
 
-  void set_border(const LeanMoments& m) { border_ = m; }
-  const LeanMoments& border() const { return border_; }
+  // The border's second moments (xx, zz, xz); its mean slope is 0 (kernel/lean.glsl).
+  void set_border(const vec3& m) { border_ = m; }
+  const vec3& border() const { return border_; }
 
   // Level-0 texels, row-major (row j = texel coordinate z from j to j + 1).
   LeanTexel* level0() { return texels_.data(); }
@@ -77,7 +78,7 @@ class LeanMap {
   int size_ = 0;
   std::vector<size_t> offsets_;
   std::vector<LeanTexel> texels_;
-  LeanMoments border_{};
+  vec3 border_{0.0};
 };
 
 }  // namespace sg
