@@ -152,8 +152,8 @@ void run_bench(BenchArgs& a) {
         if (!kernel_work_counted(v.name)) {
           throw Error(
               "--counters: no counting render for '" + v.label +
-              "' (point, supersample, staa-temporal, staa, specaa, microspec and bruneton have "
-              "one)");
+              "' (point, supersample, staa-temporal, staa, specaa, microspec, bruneton, lean and "
+              "taa have one)");
         }
       }
     });
@@ -240,12 +240,12 @@ void add_bench_command(CLI::App& app) {
   c->add_option("--repeat", a->repeat, "Runs per method; the fastest counts")
       ->capture_default_str()
       ->check(integer_in(1, 1000));
-  c->add_flag(
-      "--counters", a->counters,
-      "Count the kernel's work per pixel instead of timing (waves visited, texel "
-      "fetches, quadrature nodes, transcendentals, march steps; point, supersample, "
-      "staa-temporal, staa, specaa, microspec, bruneton) with a predicted 1920x1080 time on an "
-      "H200");
+  c->add_flag("--counters", a->counters,
+              "Count the kernel's work per pixel instead of timing (waves visited, texel "
+              "fetches, quadrature nodes, transcendentals, march steps; point, supersample, "
+              "staa-temporal, staa, specaa, microspec, bruneton, lean, taa) with a predicted "
+              "1920x1080 time on an "
+              "H200");
   add_method_flags(*c, a->flags);
   c->callback([a] { run_bench(*a); });
 }

@@ -29,7 +29,7 @@
 #include "image/image_io.h"
 #include "image/sequence.h"
 #include "image/tonemap.h"
-#include "methods/host_method.h"
+#include "methods/fallback.h"
 #include "methods/method.h"
 #include "methods/reference.h"
 #include "report/video.h"

@@ -116,16 +116,16 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
       ->check(integer_in(0, std::numeric_limits<long long>::max()));
   choice(app, "--precision", o.precision,
          {{"double", Precision::float64}, {"float", Precision::float32}},
-         "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton, lean: "
-         "the shading kernel's precision on the CPU (float is what a GPU computes)");
+         "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton, lean, "
+         "taa: the shading kernel's precision on the CPU (float is what a GPU computes)");
   f.intersect_tolerance_option =
-      app.add_option(
-             "--intersect-tolerance", o.intersect_tolerance,
-             "point, supersample, reference, staa-temporal, staa, specaa, microspec on displaced "
-             "water: "
-             "leave out of the intersection the shortest waves whose amplitudes sum to "
-             "at most this many pixels of the ray's footprint (0: every wave, the "
-             "default of all but staa, whose default is 0.25)")
+      app.add_option("--intersect-tolerance", o.intersect_tolerance,
+                     "point, supersample, reference, staa-temporal, staa, specaa, microspec, taa "
+                     "on displaced "
+                     "water: "
+                     "leave out of the intersection the shortest waves whose amplitudes sum to "
+                     "at most this many pixels of the ray's footprint (0: every wave, the "
+                     "default of all but staa, whose default is 0.25)")
           ->check(number_in(0, 16));
   choice(app, "--cascades", o.cascade_fields, {{"fields", true}, {"waves", false}},
          "point, supersample with T = 1, staa-temporal, staa, specaa (flat and displaced water), "
@@ -257,7 +257,7 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
 
 static void scope_method_flags(const std::vector<const CLI::Option*>& options, MethodFlags& f) {
   const std::vector<std::string> kernel = {"point", "supersample", "reference", "staa-temporal",
-                                           "staa",  "specaa",      "microspec"};
+                                           "staa",  "specaa",      "microspec", "taa"};
   std::vector<std::string> with_baselines = kernel;
   with_baselines.push_back("bruneton");
   with_baselines.push_back("lean");

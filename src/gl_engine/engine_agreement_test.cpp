@@ -7,7 +7,8 @@
 // each, every method of the GL engine on both engines:
 //   - point, supersample (2x2x2), staa-temporal, staa, specaa and microspec (their quads'
 //     derivatives and their corners, the GL's shared in the workgroup's memory, the CPU's in
-//     its tiles): the GL image against the CPU engine
+//     its tiles), bruneton, lean and taa (after 2 warm-up frames: its resolve against a
+//     history): the GL image against the CPU engine
 //     in float, within float's tolerance: at most 2% of the values (and at least one) may
 //     differ by more than 1e-3 of the image's largest value (a binary test at the disk's
 //     rim or a displaced ray's crest that float rounding tips either way), and the RMSE of
@@ -203,8 +204,9 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   MethodOptions ro = of;
   ro.samples = {2, 2, 1};
   ro.batches = 8;
-  const char* kDeterministic[] = {"point",  "supersample", "staa-temporal", "staa",
-                                  "specaa", "microspec",   "bruneton",      "lean"};
+  o.taa.warmup = 2;  // three frames a scene: the resolve and its history in play
+  const char* kDeterministic[] = {"point",     "supersample", "staa-temporal", "staa", "specaa",
+                                  "microspec", "bruneton",    "lean",          "taa"};
   std::map<std::string, std::unique_ptr<Method>> gl, cpu, cpu_double;
   for (const char* n : kDeterministic) {
     gl[n] = make_method_on(Engine::gl, n, testing::with_tables(o));

@@ -17,6 +17,7 @@
 #include "methods/specaa.h"
 #include "methods/staa.h"
 #include "methods/supersample.h"
+#include "methods/taa.h"
 #include "shading/kernel_frame.h"
 #include "shading/kernel_table.h"
 #include "shading/path_table.h"
@@ -50,7 +51,8 @@ int pass_samples(int waves, int segments, bool displaced, int cascades) {
 }
 
 const char* gl_methods() {
-  return "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton, lean";
+  return "point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton, lean, "
+         "taa";
 }
 
 GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
@@ -111,6 +113,10 @@ GlVariant gl_variant(const std::string& method, const MethodOptions& o) {
     validate_lean_options(o.lean);
     v.entry = KernelEntry::lean;
     v.lean = o.lean;
+  } else if (method == "taa") {
+    validate_taa_options(o.taa);
+    v.entry = KernelEntry::taa;
+    v.taa = o.taa;
   } else {
     throw Error("--method " + method + ": not on the GL engine (it runs " + gl_methods() +
                 "; use --engine cpu)");
@@ -145,6 +151,11 @@ GlEngine::GlEngine(const std::string& method, const MethodOptions& o)
   // compiled at the first frame, for whether its water needs the smooth terms (upload).
   if (v_.entry != KernelEntry::staa) {
     use_program(program_options(v_));
+    if (v_.entry == KernelEntry::taa) {
+      watch_->resume();
+      taa_resolve_ = kernel_program(KernelEntry::taa_resolve, program_options(v_));
+      watch_->pause();
+    }
   } else {
     const PathTables& t = required_path_tables(o, method);
     const kernel_tables::R32Texture2D f = t.f_texture();
@@ -255,6 +266,53 @@ void GlEngine::upload(const FrameContext& ctx) {
     set_uniforms(u, "tinfo", tinfo_);
     set_uniforms(u, "finfo", finfo_);
   }
+  if (v_.entry == KernelEntry::taa) {
+    upload_taa(ctx);
+    const kd::TaaParams p = taa_frame_params(ctx.model, ctx.time, v_.taa, inputs_->origin);
+    set_uniforms(u, "tparams", taa_params_float(p));
+    for (int c = 0; c < 3; ++c)
+      u.set("radiance_channel[" + std::to_string(c) + "]",
+            kf::vec4(ctx.model.radiances.channel(c)));
+  }
+}
+
+void GlEngine::upload_taa(const FrameContext& ctx) {
+  const SceneModel& m = ctx.model;
+  const int channels = m.scene.grey() ? 1 : 3;
+  if (taa_motion_.id() == 0 || taa_rparams_.size != kf::ivec2(m.width(), m.height())) {
+    const int w = not_power_of_two(m.width()), h = not_power_of_two(m.height());
+    taa_motion_ = gl::Texture::image_2d(w, h, GL_RGBA32F);
+    for (gl::Texture& t : taa_out_)
+      t = gl::Texture::image_2d(w, h, GL_RGBA32F);
+    taa_history_ = false;
+  }
+  // A cut: the history belongs to another sequence (methods/taa.h).
+  if (ctx.time.frame != taa_frame_ + 1 || channels != taa_channels_) taa_history_ = false;
+  taa_frame_ = ctx.time.frame;
+  taa_channels_ = channels;
+  taa_rparams_ =
+      taa_resolve_params_float(taa_resolve_params(v_.taa, m.width(), m.height(), channels));
+  UniformWriter r(taa_resolve_);
+  r.set("image_size", kf::ivec2(m.width(), m.height()));
+  set_uniforms(r, "rparams", taa_rparams_);
+}
+
+void GlEngine::run_taa_resolve() {
+  gl::barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  // The samples, then the last output as the history; the output in the other texture.
+  const int write = taa_history_ ? 1 - taa_write_ : taa_write_;
+  weights_.bind_texture(2);
+  taa_out_[1 - write].bind_texture(3);
+  taa_motion_.bind_texture(4);
+  taa_out_[write].bind_image(0, GL_WRITE_ONLY);
+  taa_resolve_.set("taa_has_history", taa_history_ ? 1 : 0);
+  gl::dispatch_2d(taa_resolve_, width_, height_);
+  taa_write_ = write;
+  taa_history_ = true;
+}
+
+const gl::Texture& GlEngine::output_texture() const {
+  return v_.entry == KernelEntry::taa ? taa_out_[taa_write_] : weights_;
 }
 
 void GlEngine::upload_lean(const FrameContext& ctx) {
@@ -278,6 +336,7 @@ void GlEngine::bind() {
   }
   if (v_.entry == KernelEntry::reference) busy_.bind_image(5, GL_READ_WRITE);
   if (v_.entry == KernelEntry::lean) lean_map_->texels().bind(6);
+  if (v_.entry == KernelEntry::taa) taa_motion_.bind_image(5, GL_WRITE_ONLY);
   waves_.bind(1);
   if (v_.entry == KernelEntry::staa) {
     table_f_.bind_texture(2);
@@ -293,6 +352,7 @@ void GlEngine::run() {
   bind();
   if (v_.entry != KernelEntry::reference && v_.entry != KernelEntry::stratified) {
     gl::dispatch_2d(program_, width_, height_);
+    if (v_.entry == KernelEntry::taa) run_taa_resolve();
     return;
   }
   // The samples in passes of pass_samples_ per pixel, each adding to the weights
@@ -339,7 +399,7 @@ void GlEngine::dispatch(const FrameContext& ctx) {
 }
 
 std::vector<float> GlEngine::read_weights() const {
-  return weights_.read_region(width_, height_);
+  return output_texture().read_region(width_, height_);
 }
 
 GlEngine::FrameTimes GlEngine::time_frames(const FrameContext& ctx, int warmup, int repeats) {

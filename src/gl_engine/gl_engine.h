@@ -2,8 +2,9 @@
 // pixel, in float (docs/gpu.md). It runs `point`, `supersample`, `reference`,
 // `staa-temporal`, `staa` (both NDFs, `--footprint none|gaussian`, every kernel count
 // and fallback) and the baselines `specaa` and `microspec` with the CPU engine's estimators
-// and seeds, and the baselines `bruneton` and `lean` (its map built on the GPU,
-// gl_engine/lean_map_gl.h); anything else
+// and seeds, the baselines `bruneton` and `lean` (its map built on the GPU,
+// gl_engine/lean_map_gl.h), and `taa` (its samples, then its resolve against the history it
+// keeps on the GPU; its output is radiances, not weights); anything else
 // is refused with a message naming the method or flag, never rendered elsewhere. Its `reference` is
 // the CPU engine's estimator (kernel/reference.glsl, its K per frame from the waves and the
 // shutter) but does not report its noise: the batches' spread stays on the GPU.
@@ -51,6 +52,7 @@ struct GlVariant {
   kf::MicrospecParams microspec{};
   kf::BrunetonParams bruneton{};
   LeanOptions lean{};              // `lean`: the map's options (its parameters are the frame's)
+  TaaOptions taa{};                // `taa`: its options (its parameters are the frame's)
   double intersect_tolerance = 0;  // --intersect-tolerance (shading/kernel_frame.h)
   // --cascades fields: point, staa-temporal, staa and specaa read a scene's cascades from their
   // FFT fields in the wave buffer (shading/cascade_fields.h, built on the host).
@@ -85,12 +87,18 @@ class GlEngine {
   GlEngine(const std::string& method, const MethodOptions& options);
   ~GlEngine();
 
-  // Builds the frame's inputs and dispatches; the weights are then in weights_texture().
+  // Builds the frame's inputs and dispatches; the weights are then in output_texture().
   void dispatch(const FrameContext& ctx);
-  // The weights of the last dispatch, row 0 at the top, (light, zenith, horizon, sea) per
-  // pixel; waits for the GPU.
+  // Whether the output is radiances (`taa`: (r, g, b, 0) per pixel, grey in r) rather than
+  // weights.
+  bool outputs_radiances() const { return v_.entry == KernelEntry::taa; }
+  // The output of the last dispatch, row 0 at the top: the weights (light, zenith, horizon,
+  // sea) per pixel, or the radiances (outputs_radiances); waits for the GPU.
   std::vector<float> read_weights() const;
-  const gl::Texture& weights_texture() const { return weights_; }
+  const gl::Texture& output_texture() const;
+  // `taa`: forgets the history (the next frame starts a sequence). A frame that does not
+  // follow the last one, or of another size or channel count, forgets it too.
+  void reset_history() { taa_history_ = false; }
   // `repeats` whole frames of ctx after `warmup` dispatches: per frame the GPU time of its
   // dispatch (timer queries) and the wall time of the whole frame around it (upload,
   // dispatch, read-back), so that a frame's GPU time never exceeds its wall time; the
@@ -103,11 +111,17 @@ class GlEngine {
   double last_gpu_ms() const { return last_ms_; }
   // The program of the last frame (staa's is compiled at its first frame: before it, none).
   const gl::Program& program() const { return program_; }
+  // `taa`'s resolve program (none for the other methods).
+  const gl::Program& taa_resolve_program() const { return taa_resolve_; }
 
  private:
   void upload(const FrameContext& ctx);
   // `lean`: the frame's map parameters and its map (after the wave buffer's upload).
   void upload_lean(const FrameContext& ctx);
+  // `taa`: the frame's parameters, its images and whether the history carries over.
+  void upload_taa(const FrameContext& ctx);
+  // `taa`'s resolve, after its samples.
+  void run_taa_resolve();
   void bind();
   void run();
   // Before the first dispatch: one workgroup dispatched and waited for, where a driver that
@@ -136,7 +150,17 @@ class GlEngine {
   std::unique_ptr<CascadeFieldsGl> fields_;  // the cascades' transforms, on the first need
   std::unique_ptr<LeanMapGl> lean_map_;      // `lean`'s map
   kf::LeanParams lean_params_{};             // `lean`: the frame's map parameters
-  std::vector<float> upload_;                // the host's texels, as floats
+  // `taa`: its resolve's program, the samples' motion, the outputs of the last two frames
+  // (the one the frame writes, the history it reads), whether the history is the frame
+  // before's, and the frame's resolve parameters.
+  gl::Program taa_resolve_;
+  gl::Texture taa_motion_, taa_out_[2];
+  int taa_write_ = 0;
+  bool taa_history_ = false;
+  int taa_frame_ = 0;
+  int taa_channels_ = 0;
+  kf::TaaResolveParams taa_rparams_{};
+  std::vector<float> upload_;  // the host's texels, as floats
 };
 
 }  // namespace sg::gl_engine

@@ -45,6 +45,10 @@ const char* entry_name(KernelEntry e) {
       return "lean";
     case KernelEntry::lean_map:
       return "lean-map";
+    case KernelEntry::taa:
+      return "taa";
+    case KernelEntry::taa_resolve:
+      return "taa-resolve";
   }
   return "?";
 }
@@ -71,6 +75,10 @@ const char* entry_define(KernelEntry e) {
       return "SG_METHOD_LEAN";
     case KernelEntry::lean_map:
       return "SG_METHOD_LEAN_MAP";
+    case KernelEntry::taa:
+      return "SG_METHOD_TAA";
+    case KernelEntry::taa_resolve:
+      return "SG_METHOD_TAA_RESOLVE";
   }
   return "";
 }

@@ -21,7 +21,9 @@ enum class KernelEntry {
   microspec,
   bruneton,
   lean,
-  lean_map  // `lean`'s map: level 0 from the waves, then the MIP chain (gl_engine/lean_map_gl.h)
+  lean_map,    // `lean`'s map: level 0 from the waves, then the MIP chain (gl_engine/lean_map_gl.h)
+  taa,         // `taa`'s samples: each pixel's radiances and motion vector
+  taa_resolve  // `taa`'s resolve: the history reprojected, rectified and blended
 };
 
 const char* entry_name(KernelEntry e);

@@ -31,16 +31,24 @@ void UniformWriter::set(const std::string& name, const kf::ivec2& v) {
   if (int l = location(name); l >= 0) glProgramUniform2i(program_.id(), l, v.x, v.y);
 }
 
+void UniformWriter::set(const std::string& name, const kf::vec4& v) {
+  if (int l = location(name); l >= 0) glProgramUniform4f(program_.id(), l, v.x, v.y, v.z, v.w);
+}
+
+void set_uniforms(UniformWriter& u, const std::string& n, const kf::Camera& c) {
+  u.set(n + ".position", c.position);
+  u.set(n + ".forward", c.forward);
+  u.set(n + ".right", c.right);
+  u.set(n + ".up", c.up);
+  u.set(n + ".half_w", c.half_w);
+  u.set(n + ".half_h", c.half_h);
+  u.set(n + ".width", c.width);
+  u.set(n + ".height", c.height);
+}
+
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::Frame& f) {
-  const std::string c = n + ".camera.", l = n + ".light.";
-  u.set(c + "position", f.camera.position);
-  u.set(c + "forward", f.camera.forward);
-  u.set(c + "right", f.camera.right);
-  u.set(c + "up", f.camera.up);
-  u.set(c + "half_w", f.camera.half_w);
-  u.set(c + "half_h", f.camera.half_h);
-  u.set(c + "width", f.camera.width);
-  u.set(c + "height", f.camera.height);
+  const std::string l = n + ".light.";
+  set_uniforms(u, n + ".camera", f.camera);
   const std::string k = n + ".camera_keys.";
   u.set(k + "count", f.camera_keys.count);
   u.set(k + "up", f.camera_keys.up);
@@ -123,6 +131,22 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::LeanParams& 
   u.set(n + ".max_aniso", p.max_aniso);
   u.set(n + ".border", p.border);
   u.set(n + ".base", p.base);
+}
+
+void set_uniforms(UniformWriter& u, const std::string& n, const kf::TaaParams& p) {
+  u.set(n + ".jitter", p.jitter);
+  u.set(n + ".dt_prev", p.dt_prev);
+  u.set(n + ".prev_camera_differs", p.prev_camera_differs);
+  set_uniforms(u, n + ".prev_camera", p.prev_camera);
+}
+
+void set_uniforms(UniformWriter& u, const std::string& n, const kf::TaaResolveParams& p) {
+  u.set(n + ".size", p.size);
+  u.set(n + ".channels", p.channels);
+  u.set(n + ".alpha", p.alpha);
+  u.set(n + ".gamma", p.gamma);
+  u.set(n + ".clamp", p.clamp);
+  u.set(n + ".catmull_rom", p.catmull_rom);
 }
 
 void set_uniforms(UniformWriter& u, const std::string& n, const kf::SampleCounts& c) {

@@ -24,6 +24,7 @@ class UniformWriter {
   void set(const std::string& name, const kf::vec3& v);
   void set(const std::string& name, const kf::uvec2& v);
   void set(const std::string& name, const kf::ivec2& v);
+  void set(const std::string& name, const kf::vec4& v);
   // Every name passed to set, active or not.
   const std::set<std::string>& written() const { return written_; }
 
@@ -33,12 +34,15 @@ class UniformWriter {
   std::set<std::string> written_;
 };
 
+void set_uniforms(UniformWriter& u, const std::string& name, const kf::Camera& c);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::Frame& f);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::StaaParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::SpecaaParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::MicrospecParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::BrunetonParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::LeanParams& p);
+void set_uniforms(UniformWriter& u, const std::string& name, const kf::TaaParams& p);
+void set_uniforms(UniformWriter& u, const std::string& name, const kf::TaaResolveParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::SampleCounts& n);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::ReferenceParams& p);
 void set_uniforms(UniformWriter& u, const std::string& name, const kf::PathTableInfo& t);

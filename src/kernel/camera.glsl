@@ -73,6 +73,26 @@ SG_FN vec3 camera_ddir_dpy(IN(Camera) c) {
   return (-2.0 * c.half_h / c.height) * c.up;
 }
 
+// Where a direction meets the image plane (camera_direction's inverse, up to the
+// direction's length): the image-plane point (px, py) in pixel units, and whether the
+// direction points into the image plane's half-space at all (seen).
+struct ImagePoint {
+  bool seen;
+  vec2 p;
+};
+
+SG_FN ImagePoint camera_project(IN(Camera) c, vec3 dir) {
+  ImagePoint q;
+  real fw = dot(dir, c.forward);
+  q.seen = fw > 0.0;
+  q.p = vec2(0.0);
+  if (!q.seen) return q;
+  real x = dot(dir, c.right) / fw / c.half_w;  // -1..1 across the image
+  real y = dot(dir, c.up) / fw / c.half_h;
+  q.p = vec2((x + 1.0) * 0.5 * c.width, (1.0 - y) * 0.5 * c.height);
+  return q;
+}
+
 // Transfer of a ray differential onto a surface (Igehy 1999, Eq. 10 for a plane): for a
 // ray p(s) = o + s d hitting, at parameter s, a surface whose tangent plane has normal m,
 // the hit point moves by s (dd - d (m . dd) / (m . d)) when the direction moves by dd.

@@ -73,6 +73,13 @@ struct MapTexels {
   const float* data = nullptr;
   long size = 0;  // floats
 };
+// An image of float texels, its channels interleaved (kernel/taa.glsl: the current samples'
+// radiances and the history): channel c of texel (x, y) = data[(y * width + x) * channels +
+// c]. In GLSL an RGBA32F sampler2D, read with plane_value.
+struct ImagePlanes {
+  const float* data = nullptr;
+  int width = 0, channels = 1;
+};
 
 }  // namespace sg::kernel_tables
 

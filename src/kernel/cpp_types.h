@@ -104,6 +104,7 @@ using glm::tan;
 #endif
 using glm::transpose;
 using glm::umulExtended;
+using sg::kernel_tables::ImagePlanes;
 using sg::kernel_tables::MapTexels;
 using sg::kernel_tables::R32Texture2D;
 using sg::kernel_tables::R32Texture3D;
@@ -149,6 +150,11 @@ inline real line_value(const TableLine& t, int i) {
 inline real map_value(const MapTexels& t, int i) {
   SG_COUNT(table_fetches, 1);
   return real(t.data[i]);
+}
+// Channel c of texel (x, y) of an image (GLSL: texelFetch of an RGBA32F sampler2D).
+inline real plane_value(const ImagePlanes& t, int x, int y, int c) {
+  SG_COUNT(table_fetches, 1);
+  return real(t.data[(size_t(y) * size_t(t.width) + size_t(x)) * size_t(t.channels) + size_t(c)]);
 }
 
 // The precision's constants (the GLSL prelude defines the float ones).

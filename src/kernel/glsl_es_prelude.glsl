@@ -35,6 +35,8 @@ precision highp sampler2DArray;
 #define R32Texture3D sampler2DArray
 #define TableLine sampler2D
 #define MapTexels sampler2D
+#define ImagePlanes sampler2D
+#define plane_value(img, x, y, c) texelFetch(img, ivec2(x, y), 0)[c]
 
 const real kRealEpsilon = 1.1920928955078125e-07;
 const real kRealMax = 3.4028234663852886e+38;

@@ -21,6 +21,8 @@
 #define line_value(line, i) texelFetch(line, i).x
 #define MapTexels samplerBuffer
 #define map_value(map, i) texelFetch(map, i).x
+#define ImagePlanes sampler2D
+#define plane_value(img, x, y, c) texelFetch(img, ivec2(x, y), 0)[c]
 
 const real kRealEpsilon = 1.1920928955078125e-07;
 const real kRealMax = 3.4028234663852886e+38;

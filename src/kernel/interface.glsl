@@ -198,6 +198,47 @@ struct LeanParams {
                   // map leaves out
 };
 
+// `taa`'s frame (taa.glsl): where its sample lies in the pixel and what its motion vectors
+// need of the frame before, from the host (methods/taa.h).
+struct TaaParams {
+  vec2 jitter;               // the sample's offset from the pixel centre, pixels (taa_jitter)
+  real dt_prev;              // the previous frame's display time minus this frame's
+  bool prev_camera_differs;  // the previous frame's camera is not this one (--taa-motion full)
+  Camera prev_camera;        // that camera, in this frame's camera-relative coordinates
+};
+
+// A motion that puts the reprojected point off any image: no history.
+const real kTaaNoHistory = 1.0e30;
+
+// `taa`'s sample of a pixel (taa.glsl, taa_sample): its weights and its motion vector
+// (image-plane pixels, current minus previous position).
+struct TaaSample {
+  vec4 weights;
+  vec2 motion;
+};
+
+// A pixel resolved (taa.glsl, taa_resolve_pixel): its channels (those past the image's count
+// 0), and whether a blend was not finite (its channel then shows the current sample: the
+// method's fallback).
+struct TaaResolved {
+  vec4 value;
+  bool fallback;
+};
+
+// `taa`'s resolve (taa.glsl, taa_resolve_pixel): the options (methods/options.h, TaaOptions)
+// and the image's size.
+const int kTaaClampNone = 0;
+const int kTaaClampMinmax = 1;
+const int kTaaClampVariance = 2;
+struct TaaResolveParams {
+  ivec2 size;        // the image's width and height, pixels
+  int channels;      // 1 (grey) or 3 (RGB)
+  real alpha;        // --taa-alpha: the current sample's share of the blend
+  real gamma;        // --taa-gamma: the variance box's half-width in standard deviations
+  int clamp;         // --taa-clamp: kTaaClampNone, kTaaClampMinmax or kTaaClampVariance
+  bool catmull_rom;  // --taa-history catmull-rom (else bilinear)
+};
+
 // The reflection at one pixel corner (microspec.glsl, microspec_corner): the water point
 // seen through an image-plane point at the display time, its normal, the mirrored view.
 // Neighbouring pixels share their corners (the CPU's tiles, the GL engine's shared memory).

@@ -45,6 +45,7 @@
 #include "kernel/bruneton.glsl"
 #include "kernel/lean_waves.glsl"
 #include "kernel/lean.glsl"
+#include "kernel/taa.glsl"
 #include "kernel/reference_path.glsl"
 #include "kernel/poly6_roots.glsl"
 #include "kernel/light_conic.glsl"

@@ -35,6 +35,12 @@ FallbackResult float_bruneton_pixel(const WaveBuffer& waves, const Frame& f,
 // `lean` (kernel/lean.glsl): a pixel from the frame's map.
 FallbackResult float_lean_pixel(const WaveBuffer& waves, const Frame& f, const MapTexels& map,
                                 const LeanParams& p, int i, int j);
+// `taa` (kernel/taa.glsl): a pixel's sample and motion; a pixel's resolve.
+TaaSample float_taa_sample(const WaveBuffer& waves, const Frame& f, const TaaParams& p, int i,
+                           int j);
+TaaResolved float_taa_resolve_pixel(const ImagePlanes& current, const ImagePlanes& history,
+                                    const TaaResolveParams& p, bool has_history, vec2 motion, int i,
+                                    int j);
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,

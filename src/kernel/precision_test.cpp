@@ -4,7 +4,7 @@
 // reference (docs/porting.md states the measured figures).
 //  - staa, staa-temporal, specaa (smooth in the waves): RMSE(float - double) <= 0.05
 //    RMSE(double - reference);
-//  - point, supersample, microspec (a binary test at the disk's rim per sample or corner
+//  - point, supersample, microspec, taa (a binary test at the disk's rim per sample or corner
 //    quad, where float's rounding flips a few samples, each by a whole pixel's or sample's
 //    worth): at most 0.5%
 //    of pixels differ by more than 1e-4, and the two RMSEs against the reference within 5%
@@ -64,6 +64,7 @@ TEST(KernelPrecision, FloatAgreesWithDoubleWithinTheMethodsOwnError) {
       {"microspec", "microspec", [](MethodOptions&) {}, true},
       {"bruneton", "bruneton", [](MethodOptions&) {}, false},
       {"lean", "lean", [](MethodOptions& o) { o.lean.size = 512; }, false},
+      {"taa", "taa", [](MethodOptions&) {}, true},
       {"supersample 6x6x1", "supersample",
        [](MethodOptions& o) {
          o.samples = {6, 6, 1};

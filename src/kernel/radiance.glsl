@@ -28,6 +28,13 @@ SG_FN real fresnel_factor(int mode, real n_dot_v) {
   return mode == 0 ? 1.0 : fresnel_schlick(n_dot_v);
 }
 
+// Channel c of a value from its weights: `channel` holds the four radiances' channel c
+// (light, sky zenith, sky horizon, sea). The host applies it to every pixel's weights
+// (scene/model.h, Radiances); `taa` applies it before its resolve, which works on radiances.
+SG_FN real weights_radiance(vec4 w, vec4 channel) {
+  return w.x * channel.x + w.y * channel.y + w.z * channel.z + w.w * channel.w;
+}
+
 SG_FN vec4 light_weights() {
   return vec4(1.0, 0.0, 0.0, 0.0);
 }

@@ -14,25 +14,40 @@
 
 // The weights along the ray through image-plane point (px, py) of the camera at dt from
 // the display time (camera_at: a moving camera's position and basis at that time):
-// intersection (flat or displaced), normal, reflection, shading.
-SG_FN vec4 sample_weights(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, real dt) {
-  Camera c = camera_at(f, dt);
-  vec3 d = normalize(camera_direction(c, px, py));
-  vec3 o = c.position;
+// intersection (flat or displaced), normal, reflection, shading; with the ray's unit
+// direction and where it met the water (`taa` reprojects that point, taa.glsl).
+struct RaySample {
+  vec4 weights;
+  vec3 dir;
   RayHit hit;
+};
+
+SG_FN RaySample sample_ray(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, real dt) {
+  Camera c = camera_at(f, dt);
+  RaySample r;
+  r.dir = normalize(camera_direction(c, px, py));
+  vec3 o = c.position;
   if (f.displaced) {
-    hit = intersect_displaced(waves, f, o, d, dt);
+    r.hit = intersect_displaced(waves, f, o, r.dir, dt);
   } else {
-    hit = intersect_flat(o, d);
+    r.hit = intersect_flat(o, r.dir);
   }
-  if (!hit.hit) return miss_weights(f, d);
-  vec2 g = water_gradient(waves, f, hit.point.x, hit.point.z, dt);
+  if (!r.hit.hit) {
+    r.weights = miss_weights(f, r.dir);
+    return r;
+  }
+  vec2 g = water_gradient(waves, f, r.hit.point.x, r.hit.point.z, dt);
   // Cascades shaded from their fields are sampled at the display time only (the host
   // builds fields for `point`, `staa-temporal` and `supersample` with T = 1 alone, whose
   // rays all have dt = 0).
   if (f.cascade_count > 0)
-    g += cascade_gradient(waves, f, frame_segments(f), hit.point.x, hit.point.z);
-  return water_weights(f, normal_direction(g), -d);
+    g += cascade_gradient(waves, f, frame_segments(f), r.hit.point.x, r.hit.point.z);
+  r.weights = water_weights(f, normal_direction(g), -r.dir);
+  return r;
+}
+
+SG_FN vec4 sample_weights(IN(WaveBuffer) waves, IN(Frame) f, real px, real py, real dt) {
+  return sample_ray(waves, f, px, py, dt).weights;
 }
 
 SG_FN vec4 point_pixel(IN(WaveBuffer) waves, IN(Frame) f, int i, int j) {

@@ -53,12 +53,12 @@
 // variance its covariance there (LEAN's box filter of the FFT chain, in the place of the
 // per-wave weights w_n, w_r of steps 1 and 4); the explicit waves as above. On displaced
 // water the lattices are sines among the waves, each filtered by its own weight.
-// Fallback (methods/host_method.h, FallbackCount): where the camera is under the filtered
+// Fallback (methods/fallback.h, FallbackCount): where the camera is under the filtered
 // surface (the hit is the camera: no view direction) or the shading is not finite, the
 // pixel gets the spec's radiance along its centre ray (what `point` returns) and is counted.
 #pragma once
 
-#include "methods/host_method.h"
+#include "methods/fallback.h"
 #include "methods/kernel_inputs.h"
 #include "methods/method.h"
 #include "methods/options.h"

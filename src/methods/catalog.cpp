@@ -83,7 +83,8 @@ std::unique_ptr<Method> make_method(const std::string& name, const MethodOptions
                                         intersect_tolerance_for(o, name), o.cascade_fields);
   }
   if (name == "lean") return std::make_unique<LeanMethod>(o.lean, o.precision, o.cascade_fields);
-  if (name == "taa") return std::make_unique<TaaMethod>(o.taa);
+  if (name == "taa")
+    return std::make_unique<TaaMethod>(o.taa, o.precision, intersect_tolerance_for(o, name));
   if (name == "microspec") {
     return std::make_unique<MicrospecMethod>(o.microspec, o.precision,
                                              intersect_tolerance_for(o, name));

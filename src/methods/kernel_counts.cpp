@@ -18,6 +18,7 @@
 #include "methods/staa.h"
 #include "methods/stratified.h"
 #include "methods/supersample.h"
+#include "methods/taa.h"
 #include "shading/kernel_table.h"
 #include "shading/path_table.h"
 
@@ -67,15 +68,15 @@ struct Sums {
 bool kernel_work_counted(const std::string& method) {
   return method == "point" || method == "supersample" || method == "staa-temporal" ||
          method == "staa" || method == "specaa" || method == "microspec" || method == "bruneton" ||
-         method == "lean";
+         method == "lean" || method == "taa";
 }
 
 KernelWork count_kernel_work(const SceneModel& m, const std::string& method, const MethodOptions& o,
                              int frame) {
   if (!kernel_work_counted(method)) {
     throw Error("--counters: no counting render for method '" + method +
-                "' (point, supersample, staa-temporal, staa, specaa, microspec, bruneton and lean "
-                "have one)");
+                "' (point, supersample, staa-temporal, staa, specaa, microspec, bruneton, lean and "
+                "taa have one)");
   }
   validate(o);
   const bool super = method == "supersample";
@@ -123,6 +124,15 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
     lparams = same_struct<kc::LeanParams>(lean->params());
   }
   const int w = m.scene.width, h = m.scene.height;
+  // taa: its sample, then its resolve against a history (images of zeros: what it reads,
+  // not their values, is counted).
+  const int channels = m.scene.grey() ? 1 : 3;
+  const kc::TaaParams tparams = same_struct<kc::TaaParams>(
+      method == "taa" ? taa_frame_params(m, ctx.time, o.taa, in.origin) : kd::TaaParams{});
+  const kc::TaaResolveParams rparams =
+      same_struct<kc::TaaResolveParams>(taa_resolve_params(o.taa, w, h, channels));
+  const std::vector<float> zeros(method == "taa" ? size_t(w) * size_t(h) * size_t(channels) : 0);
+  const kc::ImagePlanes planes{zeros.data(), w, channels};
   std::vector<Sums> rows(static_cast<size_t>(h));
   tbb::parallel_for(0, h, [&](int j) {
     Sums& s = rows[static_cast<size_t>(j)];
@@ -160,6 +170,9 @@ KernelWork count_kernel_work(const SceneModel& m, const std::string& method, con
         kc::bruneton_pixel(waves, f, bparams, i, j);
       } else if (method == "lean") {
         kc::lean_pixel(waves, f, lean->map().texels(), lparams, i, j);
+      } else if (method == "taa") {
+        const kc::TaaSample smp = kc::taa_sample(waves, f, tparams, i, j);
+        kc::taa_resolve_pixel(planes, planes, rparams, true, smp.motion, i, j);
       } else {
         kc::StaaPath path;
         const kc::StaaResult r = kc::staa_pixel(waves, tables->f_texture(), tables->s_texture(),

@@ -186,9 +186,27 @@ TEST(KernelCounts, LeanReadsItsMapAndVisitsNoWave) {
   }
 }
 
+TEST(KernelCounts, TaaVisitsTheWavesOnceAndReadsItsNeighbourhood) {
+  // Its sample is point's (n waves on water); its resolve reads, per channel, the current
+  // sample, the history's 2 x 2 (bilinear) or 4 x 4 (Catmull-Rom) texels and the 3 x 3
+  // neighbourhood's box: 14 or 30 texels inside the image.
+  for (int n : {1, 33}) {
+    const SceneModel m(water_only(n));
+    ASSERT_TRUE(m.scene.grey());
+    MethodOptions o;
+    const KernelWork k = count_kernel_work(m, "taa", testing::with_tables(o), 3);
+    EXPECT_EQ(k.waves.max, uint64_t(n)) << n;
+    EXPECT_DOUBLE_EQ(k.waves.mean, n) << n;
+    EXPECT_EQ(k.table_fetches.max, 14u) << n;
+    o.taa.history = TaaHistoryFilter::catmull_rom;
+    EXPECT_EQ(count_kernel_work(m, "taa", testing::with_tables(o), 3).table_fetches.max, 30u);
+    o.taa.clamp = TaaClamp::none;
+    EXPECT_EQ(count_kernel_work(m, "taa", testing::with_tables(o), 3).table_fetches.max, 21u);
+  }
+}
+
 TEST(KernelCounts, MethodsWithoutACountingRenderAreRefused) {
   const SceneModel m(water_only(2));
-  EXPECT_THROW(count_kernel_work(m, "taa", testing::with_tables({}), 0), Error);
   EXPECT_THROW(count_kernel_work(m, "reference", testing::with_tables({}), 0), Error);
 }
 

@@ -66,7 +66,7 @@
 #include <vector>
 
 #include "kernel/kernel_double.h"
-#include "methods/host_method.h"
+#include "methods/fallback.h"
 #include "methods/kernel_inputs.h"
 #include "methods/lean_coverage.h"
 #include "methods/lean_map.h"

@@ -26,7 +26,7 @@
 // shrinks against the disk (the arc inside it straightens); it is coarsest where a corner
 // of a polygon about the disk's size cuts the disk.
 //
-// Fallback (methods/host_method.h): where the camera is under the surface at a corner (the
+// Fallback (methods/fallback.h): where the camera is under the surface at a corner (the
 // corner's reflection is not a point of the water seen from above) or the value is not
 // finite, the pixel gets the spec's radiance along its centre ray (what `point` returns)
 // and is counted; a pixel with a corner off the water (it straddles the image's horizon
@@ -36,7 +36,7 @@
 
 #include <array>
 
-#include "methods/host_method.h"
+#include "methods/fallback.h"
 #include "methods/kernel_inputs.h"
 #include "methods/method.h"
 #include "methods/options.h"

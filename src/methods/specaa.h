@@ -33,12 +33,12 @@
 //    than 87 degrees from the light has no light-plane image: the light's mass is 0 there
 //    and the below share is the centre's point test.
 // A pixel whose centre ray misses the water sees the sky and the light's share of the pixel
-// (kernel/disk_coverage.glsl). Fallback (methods/host_method.h): where the camera is under
+// (kernel/disk_coverage.glsl). Fallback (methods/fallback.h): where the camera is under
 // the surface (no footprint, no derivatives) or the lobe's shading is not finite, the pixel
 // gets the centre ray's radiance (what `point` returns) and is counted.
 #pragma once
 
-#include "methods/host_method.h"
+#include "methods/fallback.h"
 #include "methods/kernel_inputs.h"
 #include "methods/method.h"
 #include "methods/options.h"

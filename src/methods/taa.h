@@ -3,12 +3,14 @@
 // movement of the reflection direction"). Karis 2014, "High Quality Temporal
 // Supersampling"; Salvi 2016, "An Excursion in Temporal Supersampling" (variance
 // clipping); Yang, Liu and Salvi 2020, "A Survey of Temporal Antialiasing Techniques".
-// Building blocks in taa_resolve.h.
+// On the shading kernel (kernel/taa.glsl: the sample and the resolve, both engines); here
+// the host's part: the frame's parameters and the history.
 //
 // Frame f (display time t_f):
 //  1. Current samples: one camera ray per pixel through (i + 1/2, j + 1/2) + jitter(f), the
 //     Halton (2, 3) offset of index (f mod K) + 1 (`--taa-jitter-count` K, default 8),
-//     shaded at t_f exactly as `point` shades (shading/radiance.h, weights_along_ray).
+//     shaded at t_f exactly as `point` shades (kernel/sampling.glsl, sample_ray; the scene's
+//     cascades as their sines, so that the motion below can read the height at t_{f-1}).
 //  2. Motion vectors (the engine's velocity buffer), per sample: where the point it sees
 //     was on the image of the previous frame, whose camera is the camera at the previous
 //     display time t_{f-1}. Flat water is the plane y = 0, which does not move (the
@@ -47,17 +49,34 @@
 
 #include <vector>
 
-#include "methods/host_method.h"
+#include "image/image.h"
+#include "methods/fallback.h"
+#include "methods/kernel_inputs.h"
 #include "methods/method.h"
 
 namespace sg {
 
-// Fallback (methods/host_method.h): a blended value that is not finite is replaced by the
+// The frame's TaaParams (kernel/interface.glsl): the jitter of ft's frame, the previous
+// display time, and the previous frame's camera where it is not this frame's (a moving
+// camera, --taa-motion full), in the frame's camera-relative coordinates (`origin`: the
+// kernel inputs' origin, shading/kernel_frame.h).
+kd::TaaParams taa_frame_params(const SceneModel& m, const FrameTime& ft, const TaaOptions& o,
+                               const glm::dvec3& origin);
+kf::TaaParams taa_params_float(const kd::TaaParams& p);
+// The resolve's parameters for an image of width x height and `channels`.
+kd::TaaResolveParams taa_resolve_params(const TaaOptions& o, int width, int height, int channels);
+kf::TaaResolveParams taa_resolve_params_float(const kd::TaaResolveParams& p);
+// Throws sg::Error naming the flag for a bad option.
+void validate_taa_options(const TaaOptions& o);
+
+// Fallback (methods/fallback.h): a blended value that is not finite is replaced by the
 // current sample and counted.
-class TaaMethod final : public Method, public HostMethod {
+class TaaMethod final : public Method, public FallbackCount {
  public:
-  // Throws sg::Error naming the flag for a bad option.
-  explicit TaaMethod(const TaaOptions& options);
+  // Throws sg::Error naming the flag for a bad option. `intersect_tolerance`: the displaced
+  // intersection's (methods/options.h, intersect_tolerance_for).
+  explicit TaaMethod(const TaaOptions& options, Precision precision = Precision::float64,
+                     double intersect_tolerance = 0.0);
   std::string name() const override { return "taa"; }
   bool stateful() const override { return true; }
   int warmup_frames() const override { return options_.warmup; }
@@ -69,31 +88,24 @@ class TaaMethod final : public Method, public HostMethod {
   // Current samples and their motion vectors.
   void shade_tile(const FrameContext& ctx, int x0, int y0, int x1, int y1,
                   Image& out) const override;
-  // Reprojection, rectification and blend; `img` holds the current samples on entry and
-  // the output on return.
+  // Reprojection, rectification and blend (kernel/taa.glsl, taa_resolve_pixel); `img` holds
+  // the current samples on entry and the output on return.
   void end_frame(const FrameContext& ctx, Image& img) override;
 
-  const vec2& jitter() const { return jitter_; }
+  vec2 jitter() const { return vec2(params_.jitter); }
   // This frame's motion vectors (image-plane pixels, current minus previous position), row
   // by row; written by shade_tile.
   const std::vector<vec2>& motion() const { return motion_; }
   bool has_history() const { return has_history_; }
 
  private:
-  RadianceWeights sample(const FrameContext& ctx, int i, int j, vec2* motion) const;
-  // A sample at image-plane point p and its motion when the camera moves.
-  RadianceWeights sample_moving(const FrameContext& ctx, const vec2& p, vec2* motion) const;
-
   TaaOptions options_;
+  KernelFrameInputs inputs_;
+  kd::TaaParams params_{};
+  kf::TaaParams params_f_{};
   Image history_;
   bool has_history_ = false;
   int last_frame_ = 0;
-  vec2 jitter_{0, 0};
-  double t_prev_ = 0;
-  // The previous frame's camera (t_prev_) when it differs from this frame's and
-  // --taa-motion is full: the motion vectors then follow the camera.
-  bool camera_moves_ = false;
-  CameraModel prev_camera_;
   // Per-pixel motion of this frame's samples, written by shade_tile (each pixel its own
   // slot, so tiles on different threads never share one).
   mutable std::vector<vec2> motion_;

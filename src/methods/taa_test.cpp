@@ -1,6 +1,6 @@
-// Temporal anti-aliasing (methods/taa.h, taa_resolve.h).
+// Temporal anti-aliasing (methods/taa.h; its sample and resolve, kernel/taa.glsl).
 //  - Halton (2, 3) values and the jitter cycle; history resampling; variance clipping of an
-//    outlier history to the neighbourhood box.
+//    outlier history to the neighbourhood box; the resolve of a pixel against its parts.
 //  - A constant input converges to itself (exponentially without clamping, at once with
 //    variance clipping); with alpha = 1 the output is the current jittered frame.
 //  - Warm-up: frame F alone equals frame F of the sequence started at F - N; sequences are
@@ -20,8 +20,8 @@
 
 #include "base/error.h"
 #include "engine/render.h"
+#include "kernel/kernel_double.h"
 #include "methods/method.h"
-#include "methods/taa_resolve.h"
 #include "metrics/metrics.h"
 #include "scene/camera_path.h"
 #include "shading/radiance.h"
@@ -32,6 +32,28 @@
 
 namespace sg {
 namespace {
+
+using kd::halton;
+using kd::taa_jitter;
+
+kd::ImagePlanes planes(const Image& img) {
+  return kd::ImagePlanes{img.data.data(), img.width, img.channels};
+}
+kd::ivec2 size_of(const Image& img) {
+  return kd::ivec2(img.width, img.height);
+}
+
+// Channel 0 of the history at p (kernel/taa.glsl, taa_history).
+bool sample_history(const Image& h, const vec2& p, TaaHistoryFilter f, double& v) {
+  const kd::TaaHistory r =
+      kd::taa_history(planes(h), size_of(h), p, f == TaaHistoryFilter::catmull_rom, 0);
+  v = r.value;
+  return r.found;
+}
+
+int clamp_mode(TaaClamp c) {
+  return c == TaaClamp::minmax ? kd::kTaaClampMinmax : kd::kTaaClampVariance;
+}
 
 TEST(TaaResolve, HaltonTwoThree) {
   const double h2[] = {0, 1. / 2, 1. / 4, 3. / 4, 1. / 8, 5. / 8, 3. / 8, 7. / 8, 1. / 16};
@@ -102,20 +124,59 @@ TEST(TaaResolve, VarianceClippingClampsAnOutlierHistoryToTheBox) {
     m2 += double(v) * v / 9;
   }
   const double sigma = std::sqrt(m2 - mu * mu);
-  const NeighbourhoodBox box = neighbourhood_box(cur, 1, 1, TaaClamp::variance, 1.5);
-  EXPECT_NEAR(box.lo, mu - 1.5 * sigma, 1e-12);
-  EXPECT_NEAR(box.hi, mu + 1.5 * sigma, 1e-12);
-  EXPECT_NEAR(clip_to_box(5.0, box), mu + 1.5 * sigma, 1e-12);   // outlier above
-  EXPECT_NEAR(clip_to_box(-1.0, box), mu - 1.5 * sigma, 1e-12);  // and below
-  EXPECT_EQ(clip_to_box(0.2, box), 0.2);                         // inside: kept
-  const NeighbourhoodBox mm = neighbourhood_box(cur, 1, 1, TaaClamp::minmax, 1.0);
-  EXPECT_NEAR(mm.lo, 0.1, 1e-7);
-  EXPECT_NEAR(mm.hi, 0.3, 1e-7);
-  EXPECT_EQ(clip_to_box(7.0, neighbourhood_box(cur, 1, 1, TaaClamp::none, 1.0)), 7.0);
+  const kd::ImagePlanes c = planes(cur);
+  const kd::vec2 box = kd::taa_box(c, size_of(cur), 1, 1, clamp_mode(TaaClamp::variance), 1.5, 0);
+  EXPECT_NEAR(box.x, mu - 1.5 * sigma, 1e-12);
+  EXPECT_NEAR(box.y, mu + 1.5 * sigma, 1e-12);
+  const kd::vec2 mm = kd::taa_box(c, size_of(cur), 1, 1, clamp_mode(TaaClamp::minmax), 1.0, 0);
+  EXPECT_NEAR(mm.x, 0.1, 1e-7);
+  EXPECT_NEAR(mm.y, 0.3, 1e-7);
   // A corner uses its 2 x 2 neighbourhood.
-  const NeighbourhoodBox corner = neighbourhood_box(cur, 0, 0, TaaClamp::minmax, 1.0);
-  EXPECT_NEAR(corner.lo, 0.1, 1e-7);
-  EXPECT_NEAR(corner.hi, 0.2, 1e-7);
+  const kd::vec2 corner = kd::taa_box(c, size_of(cur), 0, 0, clamp_mode(TaaClamp::minmax), 1.0, 0);
+  EXPECT_NEAR(corner.x, 0.1, 1e-7);
+  EXPECT_NEAR(corner.y, 0.2, 1e-7);
+  // The resolve of the centre pixel (motion 0: the history's own texel): an outlier history
+  // clipped to the box above and below, kept inside it, kept whole without a clamp, and
+  // blended with the current sample at alpha.
+  const double now = cur.at(1, 1);
+  auto resolve = [&](double history, TaaClamp mode) {
+    Image h(3, 3, static_cast<float>(history));
+    TaaOptions o;
+    o.clamp = mode;
+    o.gamma = 1.5;
+    o.alpha = 0.25;
+    const kd::TaaResolved r = kd::taa_resolve_pixel(c, planes(h), taa_resolve_params(o, 3, 3, 1),
+                                                    true, kd::vec2(0.0), 1, 1);
+    EXPECT_FALSE(r.fallback);
+    return r.value.x;
+  };
+  EXPECT_NEAR(resolve(5.0, TaaClamp::variance), 0.75 * (mu + 1.5 * sigma) + 0.25 * now, 1e-12);
+  EXPECT_NEAR(resolve(-1.0, TaaClamp::variance), 0.75 * (mu - 1.5 * sigma) + 0.25 * now, 1e-12);
+  EXPECT_NEAR(resolve(0.21, TaaClamp::variance), 0.75 * double(0.21f) + 0.25 * now, 1e-12);
+  EXPECT_NEAR(resolve(7.0, TaaClamp::none), 0.75 * 7.0 + 0.25 * now, 1e-12);
+  EXPECT_NEAR(resolve(7.0, TaaClamp::minmax), 0.75 * double(0.3f) + 0.25 * now, 1e-12);
+}
+
+TEST(TaaResolve, APixelWithoutHistoryOrWithANonFiniteBlendShowsItsCurrentSample) {
+  Image cur(4, 4, 0.5f), hist(4, 4, 0.25f);
+  cur.at(2, 2) = 0.75f;
+  TaaOptions o;
+  o.clamp = TaaClamp::none;
+  const kd::TaaResolveParams p = taa_resolve_params(o, 4, 4, 1);
+  auto at = [&](const Image& h, bool has, kd::vec2 motion) {
+    return kd::taa_resolve_pixel(planes(cur), planes(h), p, has, motion, 2, 2);
+  };
+  EXPECT_NEAR(at(hist, true, kd::vec2(0.0)).value.x, 0.9 * 0.25 + 0.1 * 0.75, 1e-12);
+  // A motion of one pixel fetches the history one pixel to the left.
+  hist.at(1, 2) = 1.0f;
+  EXPECT_NEAR(at(hist, true, kd::vec2(1.0, 0.0)).value.x, 0.9 * 1.0 + 0.1 * 0.75, 1e-12);
+  EXPECT_EQ(at(hist, false, kd::vec2(0.0)).value.x, 0.75);               // no history yet
+  EXPECT_EQ(at(hist, true, kd::vec2(kd::kTaaNoHistory)).value.x, 0.75);  // off the image
+  EXPECT_EQ(at(hist, true, kd::vec2(2.6, 0.0)).value.x, 0.75);           // x = 2.5 - 2.6 < 0
+  hist.at(2, 2) = INFINITY;
+  const kd::TaaResolved bad = at(hist, true, kd::vec2(0.0));
+  EXPECT_TRUE(bad.fallback);
+  EXPECT_EQ(bad.value.x, 0.75);
 }
 
 // A scene whose camera sees only sky: every sample is the sky's radiance.
@@ -155,7 +216,7 @@ TEST(Taa, AlphaOneOutputsTheCurrentJitteredFrame) {
   TaaMethod taa(o);
   int lit = 0;
   render_frames(m, taa, 5, 7, RenderSettings{}, [&](int f, const Image& img) {
-    const vec2 jit = taa_jitter(f, 8);
+    const vec2 jit = vec2(taa_jitter(f, 8));
     const WaterGeometry water(m, frame_time(s, f));
     for (int j = 0; j < m.height(); ++j) {
       for (int i = 0; i < m.width(); ++i) {

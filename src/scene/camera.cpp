@@ -45,12 +45,10 @@ vec3 transfer_differential(const vec3& d, double s, const vec3& dd, const vec3& 
 }
 
 bool CameraModel::project(const vec3& dir, double& px, double& py) const {
-  double f = dot(dir, forward_);
-  if (f <= 0) return false;
-  double x = dot(dir, right_) / f / half_w_;  // -1..1 across the image
-  double y = dot(dir, up_) / f / half_h_;
-  px = (x + 1.0) * 0.5 * width_;
-  py = (1.0 - y) * 0.5 * height_;
+  const kd::ImagePoint q = kd::camera_project(kernel_camera(), dir);
+  if (!q.seen) return false;
+  px = q.p.x;
+  py = q.p.y;
   return true;
 }
 

@@ -37,7 +37,7 @@ class CameraModel {
   vec3 ddir_dpy() const;
 
   // The image-plane point (px, py) that direction `dir` passes through; false when the
-  // direction points away from the image plane.
+  // direction points away from the image plane: the kernel's (camera.glsl, camera_project).
   bool project(const vec3& dir, double& px, double& py) const;
 
   // tan(hfov / 2) and tan(vfov / 2).

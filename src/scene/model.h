@@ -26,10 +26,11 @@ struct Radiances {
         zenith(s.sky.zenith),
         horizon(s.sky.horizon),
         sea(s.surface.sea_radiance) {}
-  // Channel c (0, 1, 2) of the value with weights w.
-  double apply(const RadianceWeights& w, int c) const {
-    return w.x * light[c] + w.y * zenith[c] + w.z * horizon[c] + w.w * sea[c];
-  }
+  // The four radiances' channel c (0, 1, 2): (light, zenith, horizon, sea).
+  vec4 channel(int c) const { return vec4(light[c], zenith[c], horizon[c], sea[c]); }
+  // Channel c (0, 1, 2) of the value with weights w: the kernel's (kernel/radiance.glsl,
+  // weights_radiance).
+  double apply(const RadianceWeights& w, int c) const;
   Rgb apply(const RadianceWeights& w) const { return Rgb(apply(w, 0), apply(w, 1), apply(w, 2)); }
 };
 

@@ -1,13 +1,12 @@
 // The water's geometry for host code: where a ray meets the water, a pixel's footprint,
 // the height and the slope, in world coordinates and absolute times, from the kernel
-// (kernel/intersect.glsl, kernel/footprint.glsl, kernel/waves.glsl), so that the
-// baselines meet the same water as the kernel methods through the same code.
+// (kernel/intersect.glsl, kernel/footprint.glsl, kernel/waves.glsl), so that the report's
+// regions and the tests meet the same water as the methods through the same code.
 //
 // A WaterGeometry holds the kernel's inputs of one frame (shading/kernel_frame.h) in
 // double, with every wave in the intersection (tolerance 0: the march of intersect.glsl
-// exactly) and the lattice cascades as their sines (the surface of the scene spec). A
-// method builds one in begin_frame (methods/host_method.h), as the kernel methods build
-// their inputs; a time t other than the frame's display time is the kernel's dt = t - t_f.
+// exactly) and the lattice cascades as their sines (the surface of the scene spec); a
+// time t other than the frame's display time is the kernel's dt = t - t_f.
 //
 // The kernel works in camera-relative coordinates (the camera at (0, y, 0)); the
 // conversions to the world's are made here, once.

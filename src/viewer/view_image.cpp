@@ -14,7 +14,12 @@ Image render_linear(gl_engine::GlEngine& engine, const FrameContext& ctx) {
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
       const float* p = &w[(static_cast<size_t>(j) * width + i) * 4];
-      store_pixel(ctx, img, i, j, RadianceWeights(p[0], p[1], p[2], p[3]));
+      if (engine.outputs_radiances()) {  // `taa`: resolved on the GPU
+        for (int c = 0; c < img.channels; ++c)
+          img.at(i, j, c) = p[c];
+      } else {
+        store_pixel(ctx, img, i, j, RadianceWeights(p[0], p[1], p[2], p[3]));
+      }
     }
   }
   return img;

@@ -291,12 +291,12 @@ expect_ok "render a moving camera" "$bin" render "$pan" -m supersample --samples
 # The engines: --engine on render, bench and compare (per variant or for the whole study).
 expect_rc "engine unknown" 2 "--engine: unknown engine 'vulkan' (choose cpu or gl)" \
   "$bin" render "$scene" -m point --engine vulkan -o "$work/x.exr"
-expect_rc "engine gl lacks taa" 2 "--method taa: not on the GL engine" \
-  "$bin" render "$scene" -m taa --engine gl -o "$work/x.exr"
+expect_rc "engine gl lacks footprint exact" 2 "--footprint exact: not on the GL engine" \
+  "$bin" render "$scene" -m staa --footprint exact --engine gl -o "$work/x.exr"
 expect_rc "bench variant on gl lacks footprint exact" 2 "--footprint exact: not on the GL engine" \
   "$bin" bench "$scene" --methods "point,staa --footprint exact --engine gl" --width 16 --height 9
-expect_rc "compare engine gl lacks taa" 2 "--method: 'taa --engine gl': --method taa: not on the GL engine" \
-  "$bin" compare "$scene" -m taa --engine gl --frames 0-0 --no-video -q --out "$work/gls"
+expect_rc "compare engine gl lacks footprint exact" 2 "--method: 'staa --footprint exact --engine gl': --footprint exact: not on the GL engine" \
+  "$bin" compare "$scene" -m "staa --footprint exact" --engine gl --frames 0-0 --no-video -q --out "$work/gls"
 expect_no_file "engine usage errors" "$work/x.exr"
 if "$bin" render "$scene" -m point --engine gl --width 8 -q -o "$work/glprobe.pfm" >/dev/null 2>&1; then
   # staa-temporal on the sunset: the path and the visible sun over the pixel, on both engines.
@@ -570,8 +570,8 @@ expect_rc "bench flag of one of its methods" 0 "| taa | cpu |" \
 expect_rc "bench counters" 0 "| point | 2.8 / 5 | 5.6 / 10 |" \
   "$bin" bench "$scene" --methods point,staa --counters
 expect_rc "bench counters of a method without a counting render" 2 \
-  "--counters: no counting render for 'taa'" \
-  "$bin" bench "$scene" --methods point,taa --counters --width 16 --height 9
+  "--counters: no counting render for 'reference'" \
+  "$bin" bench "$scene" --methods point,reference --counters --width 16 --height 9
 expect_rc "compare variant with another method's flag" 2 \
   "--method: 'staa --seed 2': --seed: not a flag of method staa (it configures supersample, reference)" \
   "$bin" compare "$scene" -m "staa --seed 2" --out "$work/study"
@@ -579,11 +579,8 @@ expect_rc "view with another method's flag" 2 "--samples: not a flag of any of t
   "$bin" view "$scene" -m point --split staa --samples 4x4x1
 expect_no_file "flags of other methods" "$work/x.exr"
 # The viewer has no CPU engine: its message does not send the user to one.
-expect_rc_without "view a method the GL engine lacks" 2 \
-  "--method taa: the viewer renders on the GL engine, which runs point, supersample, reference, staa-temporal, staa, specaa, microspec, bruneton, lean (render taa on the CPU with: sunglint render SCENE -m taa -o FILE)" \
-  "--engine cpu" "$bin" view "$scene" -m taa
-expect_rc_without "view --split of a method the GL engine lacks" 2 "--split taa: the viewer renders on the GL engine" \
-  "--engine cpu" "$bin" view "$scene" -m point --split taa
+expect_rc_without "view --split of an option the GL engine lacks" 2 "--footprint exact: not in the viewer" \
+  "--engine cpu" "$bin" view "$scene" -m point --split staa --footprint exact
 expect_rc_without "view --footprint exact" 2 "--footprint exact: not in the viewer" "--engine cpu" \
   "$bin" view "$scene" -m staa --footprint exact
 

@@ -75,6 +75,17 @@ expect_close "view = render (staa-temporal, colour, frame 1)" 2 "$work/view_suns
 
 # The same with the display pipeline on the GPU (viewer/gpu_display.h; "auto" keeps it on
 # the CPU on llvmpipe): glare on the colour scene (it changes the picture), and without.
+# taa keeps its history on the GPU from frame to frame: the viewer's frames 0-2 are render's
+# frame 2 after the warm-up frames 0 and 1.
+run view-taa "$bin" view "$scene" -m taa --frames 3 "${size[@]}" --screenshot "$work/view_taa.png"
+run render-taa "$bin" render "$scene" -m taa --taa-warmup 2 --engine gl --frame 2 "${size[@]}" \
+  --display -q -o "$work/render_taa.png"
+expect_close "view = render (taa, frame 2 after frames 0 and 1)" 2 "$work/view_taa.png" \
+  "$work/render_taa.png"
+run render-taa-cold "$bin" render "$scene" -m taa --taa-warmup 0 --engine gl --frame 2 \
+  "${size[@]}" --display -q -o "$work/render_taa_cold.png"
+expect_apart "taa's history changes the picture" "$work/render_taa.png" "$work/render_taa_cold.png"
+
 run view-gpu-point "$bin" view "$scene" -m point --frames 3 "${size[@]}" --display-on gpu \
   --screenshot "$work/view_gpu_point.png"
 expect_close "GPU display = render (point, frame 2)" 2 "$work/view_gpu_point.png" \
@@ -209,8 +220,6 @@ expect_refused "OpenGL below 4.5" "no OpenGL 4.5 core window" "$shot" \
   --screenshot "$shot"
 expect_refused "bad scene" "amplitude" "$shot" \
   "$bin" view "$src/tests/scenes/bad/amplitude_negative.json" --frames 1 --screenshot "$shot"
-expect_refused "not a GL method" "--method taa: the viewer renders on the GL engine" "$shot" \
-  "$bin" view "$scene" -m taa --frames 1 --screenshot "$shot"
 expect_refused "screenshot not png" "--screenshot: must be a .png" "$work/refused.exr" \
   "$bin" view "$scene" --frames 1 --screenshot "$work/refused.exr"
 expect_refused "edit out of range" "--sun-radius" "$shot" \

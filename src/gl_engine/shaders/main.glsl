@@ -1,7 +1,8 @@
 // The GL engine's compute shader: one invocation per pixel runs the kernel's per-pixel
 // function of the method this shader was compiled for (SG_METHOD_*, set by the engine in
 // the header, gl_engine/kernel_program.cpp) and stores the pixel's radiance weights
-// (light, sky zenith, sky horizon, sea) in an RGBA32F image, row 0 at the top. The frame's
+// (light, sky zenith, sky horizon, sea) in an RGBA32F image, row 0 at the top (`taa`, whose
+// resolve works on radiances: the pixel's radiances there). The frame's
 // data are uniforms of the kernel's own structs (kernel/interface.glsl), the waves a buffer
 // texture, the tables textures read with texelFetch.
 //
@@ -112,6 +113,23 @@ void lean_map_main() {
   lean_out[at + 4] = t.M.z;
 }
 #endif
+#if defined(SG_METHOD_TAA)
+// `taa`'s samples (kernel/taa.glsl): weights_out takes each pixel's radiances (r, g, b, 0:
+// grey in r), from the four radiances' channels (kernel/radiance.glsl, weights_radiance),
+// taa_motion_out its motion vector.
+uniform TaaParams tparams;
+uniform vec4 radiance_channel[3];
+layout(rgba32f, binding = 5) uniform writeonly image2D taa_motion_out;
+#endif
+#if defined(SG_METHOD_TAA_RESOLVE)
+// `taa`'s resolve: the samples' radiances and motion of the frame, the history (the last
+// frame's output), read with texelFetch; weights_out takes the output's radiances.
+uniform TaaResolveParams rparams;
+uniform bool taa_has_history;
+layout(binding = 2) uniform sampler2D taa_current;
+layout(binding = 3) uniform sampler2D taa_previous;
+layout(binding = 4) uniform sampler2D taa_motion;
+#endif
 #if defined(SG_METHOD_MICROSPEC)
 uniform MicrospecParams mparams;
 // `microspec`'s corners: the workgroup's 8 x 8 pixels have 9 x 9 corners, each traced once
@@ -185,6 +203,16 @@ void main() {
   w = bruneton_pixel(waves, frame, bparams, p.x, p.y).weights;
 #elif defined(SG_METHOD_LEAN)
   w = lean_pixel(waves, frame, lean_map, lparams, p.x, p.y).weights;
+#elif defined(SG_METHOD_TAA)
+  TaaSample s = taa_sample(waves, frame, tparams, p.x, p.y);
+  for (int c = 0; c < 3; ++c)
+    w[c] = weights_radiance(s.weights, radiance_channel[c]);
+  imageStore(taa_motion_out, p, vec4(s.motion, 0.0, 0.0));
+#elif defined(SG_METHOD_TAA_RESOLVE)
+  vec2 motion = texelFetch(taa_motion, p, 0).xy;
+  TaaResolved r =
+      taa_resolve_pixel(taa_current, taa_previous, rparams, taa_has_history, motion, p.x, p.y);
+  w = r.value;
 #endif
   imageStore(weights_out, p, w);
 }

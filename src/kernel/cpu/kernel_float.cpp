@@ -60,6 +60,15 @@ FallbackResult float_lean_pixel(const WaveBuffer& waves, const Frame& f, const M
                                 const LeanParams& p, int i, int j) {
   return lean_pixel(waves, f, map, p, i, j);
 }
+TaaSample float_taa_sample(const WaveBuffer& waves, const Frame& f, const TaaParams& p, int i,
+                           int j) {
+  return taa_sample(waves, f, p, i, j);
+}
+TaaResolved float_taa_resolve_pixel(const ImagePlanes& current, const ImagePlanes& history,
+                                    const TaaResolveParams& p, bool has_history, vec2 motion, int i,
+                                    int j) {
+  return taa_resolve_pixel(current, history, p, has_history, motion, i, j);
+}
 StaaResult float_staa_pixel(const WaveBuffer& waves, const R32Texture2D& table_f,
                             const R32Texture3D& table_s, const PathTableInfo& tinfo,
                             const R32Texture2D& fits, const KernelFitInfo& finfo, const Frame& f,

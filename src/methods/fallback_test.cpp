@@ -1,4 +1,4 @@
-// The baselines' fallback (methods/host_method.h): with the camera under the displaced
+// The baselines' fallback (methods/fallback.h): with the camera under the displaced
 // surface, where no method's model applies, lean, specaa and microspec return the spec's
 // radiance along the centre ray (point's value) at every pixel and count them all; where
 // the camera is above the water they count none; bruneton, which intersects its filtered
@@ -9,7 +9,7 @@
 
 #include "engine/render.h"
 #include "image/image_io.h"
-#include "methods/host_method.h"
+#include "methods/fallback.h"
 #include "methods/method.h"
 #include "testing/path_tables.h"
 #include "testing/paths.h"
