@@ -51,16 +51,18 @@ SG_FN vec2 taa_jitter(int frame, int count) {
 // A point behind the previous camera has no history.
 SG_FN TaaSample taa_sample(IN(WaveBuffer) waves, IN(Frame) f, IN(TaaParams) p, int i, int j) {
   vec2 at = vec2(real(i) + 0.5, real(j) + 0.5) + p.jitter;
-  RaySample s = sample_ray(waves, f, at.x, at.y, 0.0);
+  RayHit hit;
+  vec3 dir;
   TaaSample r;
-  r.weights = s.weights;
+  r.weights = sample_ray(waves, f, at.x, at.y, 0.0, hit, dir);
   r.motion = vec2(0.0);
-  if (!p.prev_camera_differs && !(f.displaced && s.hit.hit)) return r;
+  if (!p.prev_camera_differs && !(f.displaced && hit.hit)) return r;
   Camera c = f.camera;  // (WebGL's GLSL ES takes no ternary on structs)
   if (p.prev_camera_differs) c = p.prev_camera;
-  vec3 dir = s.dir;  // the sky: a direction
-  if (s.hit.hit) {
-    vec3 before = s.hit.point;
+  // The point the sample sees, as it was at the previous display time; the sky (dir, the
+  // ray's direction) at infinity.
+  if (hit.hit) {
+    vec3 before = hit.point;
     if (f.displaced) before.y = water_height(waves, f, before.x, before.z, p.dt_prev);
     dir = before - c.position;
   }
