@@ -74,7 +74,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       if (!h.hit) continue;
       require(finite(h.point), "hit point not finite");
       const sg::vec2 g = water.gradient(h.point.x, h.point.z, t);
-      require(finite(sg::normal_from_gradient(g)), "normal not finite");
+      require(finite(sg::water_normal(g)), "normal not finite");
     }
   }
   return 0;

@@ -2,7 +2,7 @@
 // vector against finite differences, the tangent-slope-to-NDF-plane Jacobian against finite
 // differences, and the kernel's variance against a direct evaluation (the covariance of the
 // projected half vector under a Gaussian pixel filter, sampled through the exact camera,
-// water and frame). The water here is the host's own sum of sines (scene/waves.h), an
+// water and frame). The water here is the direct sum of sines (testing/direct_waves.h), an
 // independent check of the kernel's.
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include "math/rng.h"
 #include "scene/model.h"
 #include "shading/water_geometry.h"
+#include "testing/direct_waves.h"
 
 namespace sg {
 namespace {
@@ -36,8 +37,8 @@ WaveField test_waves() {
 
 // h_perp at water point P (with its gradient), seen from `camera`.
 vec2 h_perp_at(const WaveField& w, const vec3& camera, const vec3& P, double t) {
-  return projected_half_vector(water_shading_frame(w.gradient(P.x, P.z, t)), normalize(camera - P),
-                               kL);
+  return projected_half_vector(water_shading_frame(testing::direct_gradient(w, P.x, P.z, t)),
+                               normalize(camera - P), kL);
 }
 
 TEST(SpecaaKernel, ShadingFrameIsOrthonormalAboutTheNormal) {
@@ -58,17 +59,17 @@ TEST(SpecaaKernel, HalfVectorDerivativeMatchesFiniteDifferences) {
     const double t = rng.uniform();
     // A point on the displaced surface and a tangent step.
     const double x = 10 * (rng.uniform() - 0.5), z = -5 - 30 * rng.uniform();
-    const vec3 P(x, w.height(x, z, t), z);
-    const vec2 g = w.gradient(x, z, t);
+    const vec3 P(x, testing::direct_height(w, x, z, t), z);
+    const vec2 g = testing::direct_gradient(w, x, z, t);
     const vec2 dxz(rng.uniform() - 0.5, rng.uniform() - 0.5);
     const vec3 dP(dxz.x, g.x * dxz.x + g.y * dxz.y, dxz.y);
-    const vec2 analytic =
-        projected_half_vector_derivative(camera, P, g, hessian3(w.hessian(x, z, t)), dP, kL);
+    const vec2 analytic = projected_half_vector_derivative(
+        camera, P, g, hessian3(testing::direct_hessian(w, x, z, t)), dP, kL);
     // Central differences along the surface curve (x, h(x, z), z) + s (dx, ., dz).
     const double e = 1e-5;
     auto at = [&](double s) {
       const double xs = x + s * dxz.x, zs = z + s * dxz.y;
-      return h_perp_at(w, camera, vec3(xs, w.height(xs, zs, t), zs), t);
+      return h_perp_at(w, camera, vec3(xs, testing::direct_height(w, xs, zs, t), zs), t);
     };
     const vec2 fd = (at(e) - at(-e)) / (2 * e);
     EXPECT_LT(length(analytic - fd), 1e-7 * std::max(1.0, length(fd))) << k;
@@ -113,8 +114,8 @@ TEST(SpecaaKernel, FullKernelIsTheVarianceOfTheHalfVectorUnderTheGaussianPixelFi
     const PixelFootprint fp = pixel_footprint(m, px.x, px.y, t);
     ASSERT_TRUE(fp.hit);
     const vec3 P = fp.point;
-    const vec2 g = m.waves.gradient(P.x, P.z, t);
-    const vec3 H = hessian3(m.waves.hessian(P.x, P.z, t));
+    const vec2 g = testing::direct_gradient(m.waves, P.x, P.z, t);
+    const vec3 H = hessian3(testing::direct_hessian(m.waves, P.x, P.z, t));
     const vec2 ddx = projected_half_vector_derivative(m.camera.position(), P, g, H, fp.dp_dpx, kL);
     const vec2 ddy = projected_half_vector_derivative(m.camera.position(), P, g, H, fp.dp_dpy, kL);
     const mat2 kernel = specaa_kernel_covariance(ddx, ddy, sigma2, 1e9, true);

@@ -11,6 +11,7 @@
 #include "image/image_io.h"
 #include "methods/fallback.h"
 #include "methods/method.h"
+#include "testing/direct_waves.h"
 #include "testing/path_tables.h"
 #include "testing/paths.h"
 
@@ -29,7 +30,7 @@ TEST(Fallback, UnderTheSurfaceEveryPixelIsTheCentreRay) {
   const Scene s = under_the_surface();
   const SceneModel m(s);
   const vec3 c = m.camera.position();
-  ASSERT_GT(m.waves.height(c.x, c.z, s.frame_time(0)), c.y);  // under the surface
+  ASSERT_GT(testing::direct_height(m.waves, c.x, c.z, s.frame_time(0)), c.y);  // under the surface
   RenderSettings rs;
   auto point = make_method("point", testing::with_tables(MethodOptions{}));
   const Image ref = render_frame(m, *point, 0, rs);

@@ -17,6 +17,7 @@
 #include "shading/reflection_path.h"
 #include "shading/water_geometry.h"
 #include "testing/begun.h"
+#include "testing/direct_waves.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -84,7 +85,7 @@ TEST(StaaTemporal, SegmentsConvergeToTheTimeIntegral) {
       double dense = 0;
       for (int q = 0; q < n; ++q) {
         const double t = ft.start + (q + 0.5) / n * ft.duration();
-        vec3 nn = normal_from_gradient(m.waves.gradient(fp.point.x, fp.point.z, t));
+        vec3 nn = water_normal(testing::direct_gradient(m.waves, fp.point.x, fp.point.z, t));
         dense += m.light.contains(reflect_view(nn, fp.view)) ? 1.0 / n : 0.0;
       }
       if (dense < 0.02 || dense > 0.98) continue;
@@ -119,7 +120,7 @@ TEST(StaaTemporal, PathOfASecondSceneAtTheSameAddressIsItsOwn) {
   const PixelFootprint fp = pixel_footprint(*m, 24.5, 13.5, ft.end);
   reflection_path(*m, fp, ft, 2, path);
   for (int k = 0; k < 2; ++k) {
-    const vec2 g = m->waves.gradient(fp.point.x, fp.point.z, path.times[k]);
+    const vec2 g = testing::direct_gradient(m->waves, fp.point.x, fp.point.z, path.times[k]);
     EXPECT_NEAR(path.gradients[k].x, g.x, 1e-12) << k;
     EXPECT_NEAR(path.gradients[k].y, g.y, 1e-12) << k;
   }

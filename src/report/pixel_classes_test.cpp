@@ -1,6 +1,6 @@
 // What each pixel sees (report/pixel_classes.h), against an independent trace: the scene
-// layer's camera and wave sum, and a plain march (safe steps f / Lip, then bisection)
-// written here, not the kernel's.
+// layer's camera, the direct sum of the waves (testing/direct_waves.h) and a plain march
+// (safe steps f / Lip, then bisection) written here, not the kernel's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 
 #include "report/pixel_classes.h"
 #include "shading/water_geometry.h"
+#include "testing/direct_waves.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -19,7 +20,7 @@ namespace {
 double traced_distance(const WaveField& w, vec3 o, vec3 d, double t) {
   auto f = [&](double s) {
     const vec3 p = o + s * d;
-    return p.y - w.height(p.x, p.z, t);
+    return p.y - testing::direct_height(w, p.x, p.z, t);
   };
   const double lip = std::fabs(d.y) + w.slope_bound() * std::hypot(d.x, d.z);
   const double s_end = d.y < 0 ? (o.y + w.amplitude_bound()) / -d.y : 1e4;

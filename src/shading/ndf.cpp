@@ -27,25 +27,26 @@ double footprint_phase_half_width(const vec2& k, const mat2& J) {
   return glm::determinant(J) != 0 ? kd::footprint_half_width(k, glm::inverse(J)) : 0.0;
 }
 
-PlaneGaussian per_pixel_ndf(const WaveField& w, std::span<const double> weights,
-                            const WavePhases& ph, const mat2& J) {
+PlaneGaussian per_pixel_ndf(const WaveField& w, std::span<const double> weights, const vec2& xz,
+                            const mat2& J, double t) {
   kd::NdfMoments m = kd::ndf_zero();
   for (size_t i = 0; i < w.size(); ++i) {
     const vec2 k(w.a[i], w.b[i]);
+    // The wave at the world's origin and time 0: its phase at (x, z) and t is the kernel's.
+    kd::Wave kw{};
+    kw.A = w.A[i];
+    kw.a = w.a[i];
+    kw.b = w.b[i];
+    kw.theta0 = w.phi[i];
+    kw.c = w.c[i];
     const double D = footprint_phase_half_width(k, J);
-    kd::ndf_add_per_pixel(m, weights[i] * w.A[i], k, ph.c[i], D, std::sin(D), std::cos(D));
+    kd::ndf_add_per_pixel(m, weights[i] * w.A[i], k, std::cos(kd::wave_phase(kw, xz.x, xz.y, t)), D,
+                          std::sin(D), std::cos(D));
   }
   PlaneGaussian g;
   g.mean = m.mean;
   g.cov = kd::sym2(m.cov);
   return g;
-}
-
-PlaneGaussian per_pixel_ndf(const WaveField& w, std::span<const double> weights, const vec2& xz,
-                            const mat2& J, double t) {
-  WavePhases ph;
-  w.phases(xz.x, xz.y, t, ph);
-  return per_pixel_ndf(w, weights, ph, J);
 }
 
 }  // namespace sg

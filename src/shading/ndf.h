@@ -55,9 +55,5 @@ double footprint_phase_half_width(const vec2& k, const mat2& xz_jacobian);
 // time t. The mean is minus the summed mean slopes (NDF-plane coordinates).
 PlaneGaussian per_pixel_ndf(const WaveField& waves, std::span<const double> weights, const vec2& xz,
                             const mat2& xz_jacobian, double t);
-// The same from the waves' phases at the pixel centre and time (scene/waves.h); the
-// half-widths' sines are evaluated in one vectorised call.
-PlaneGaussian per_pixel_ndf(const WaveField& waves, std::span<const double> weights,
-                            const WavePhases& phases, const mat2& xz_jacobian);
 
 }  // namespace sg

@@ -10,6 +10,7 @@
 #include "math/rng.h"
 #include "shading/aliasing.h"
 #include "shading/water_geometry.h"
+#include "testing/direct_waves.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -32,7 +33,7 @@ TEST(Ndf, UniformIsTheTimeAverageOfTheSlopes) {
     auto avg = [&](int c) {
       return GK::integrate(
                  [&](double t) {
-                   vec2 g = w.gradient_weighted(3.0, -7.0, t, one);
+                   vec2 g = testing::direct_gradient(w, 3.0, -7.0, t, one);
                    return c == 0 ? g.x * g.x : c == 1 ? g.x * g.y : g.y * g.y;
                  },
                  0, T, 15, 1e-12) /
@@ -109,7 +110,7 @@ TEST(Ndf, PerPixelMatchesTheFootprintAverageForAnAlignedWave) {
   double mx = 0, mxx = 0;
   for (int k = 0; k < n; ++k) {
     const double u = (k + 0.5) / n - 0.5;  // midpoint rule over the footprint's x extent
-    vec2 s = w.gradient(c.x + 1.3 * u, c.y, t);
+    vec2 s = testing::direct_gradient(w, c.x + 1.3 * u, c.y, t);
     mx += -s.x / n;
     mxx += s.x * s.x / n;
   }
@@ -125,7 +126,7 @@ TEST(Ndf, PerPixelLimits) {
   const vec2 c(1.0, -30.0);
   // A tiny footprint: no spread, mean = minus the slope at the centre.
   PlaneGaussian small = per_pixel_ndf(w, one, c, mat2(1e-7), 0.5);
-  vec2 g = w.gradient(c.x, c.y, 0.5);
+  vec2 g = testing::direct_gradient(w, c.x, c.y, 0.5);
   EXPECT_NEAR(small.mean.x, -g.x, 1e-9);
   EXPECT_NEAR(small.cov[0][0], 0.0, 1e-12);
   // A huge footprint: the uniform NDF and no mean slope, up to the sinc terms of

@@ -2,6 +2,7 @@
 
 #include "kernel/kernel_double.h"
 #include "shading/radiance.h"
+#include "shading/water_geometry.h"
 
 namespace sg {
 
@@ -20,7 +21,7 @@ void reflection_path(const SceneModel& m, const PixelFootprint& fp, const FrameT
   for (int k = 0; k <= K; ++k) {
     path.times[k] = ft.start + ft.duration() * k / K;
     path.gradients[k] = path.kernel_path.g[k];
-    path.normals[k] = normal_from_gradient(path.gradients[k]);
+    path.normals[k] = water_normal(path.gradients[k]);
     path.reflections[k] = reflect_view(path.normals[k], path.view);
   }
 }

@@ -3,7 +3,7 @@
 //
 // Linearised at the pixel centre, the pixel's reflections at time t fill
 //     Q(t) = P(t) + D [-1/2, 1/2]^2
-// (shading/reflection_footprint.h: D = [dP/dpx dP/dpy]), and the reflection path moves
+// (kernel/reflection_footprint.glsl: D = [dP/dpx dP/dpy]), and the reflection path moves
 // P(t) along straight sub-segments between the instants of a ReflectionPath. The light's
 // share is the time average of area(disk & Q(t)) / area(Q): the area is exact
 // (shading/circle_polygon.h), the time average is 8-point Gauss-Legendre on pieces of

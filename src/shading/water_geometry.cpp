@@ -103,6 +103,10 @@ PixelFootprint pixel_footprint(const SceneModel& m, double px, double py, double
   return WaterGeometry(m, FrameTime{0, t, t}).footprint(px, py, t);
 }
 
+vec3 water_normal(const vec2& g) {
+  return normalize(vec3(kd::normal_direction(g)));
+}
+
 RayHit intersect_flat(const vec3& origin, const vec3& dir) {
   RayHit r;
   const kd::RayHit h = kd::intersect_flat(origin, dir);

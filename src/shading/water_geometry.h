@@ -77,6 +77,10 @@ PixelFootprint rest_plane_footprint(const SceneModel& m, double px, double py);
 // WaterGeometry and asks it.
 PixelFootprint pixel_footprint(const SceneModel& m, double px, double py, double t);
 
+// The unit normal of the scene spec for a height gradient g = (dh/dx, dh/dz):
+// normalize(-dh/dx, 1, -dh/dz) (kernel/waves.glsl, normal_direction).
+vec3 water_normal(const vec2& g);
+
 // The plane y = 0 (kernel/intersect.glsl); `dir` need not be unit length.
 RayHit intersect_flat(const vec3& origin, const vec3& dir);
 

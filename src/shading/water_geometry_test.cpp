@@ -1,9 +1,9 @@
 // The water's geometry from the kernel (shading/water_geometry.h: kernel/intersect.glsl,
 // kernel/footprint.glsl, kernel/waves.glsl). The displaced first hit is checked against a
 // brute-force march with a fixed step far below the wavelengths, refined by bisection, on
-// the host's own sum of the waves (scene/waves.h); footprints against finite differences
-// of neighbouring pixel centres; the filtered surface against the same geometry built
-// from the weighted waves.
+// the direct sum of the waves (testing/direct_waves.h); the kernel's height, gradient and
+// Hessian against that sum and against central differences of one another; footprints
+// against finite differences of neighbouring pixel centres.
 #include "shading/water_geometry.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +15,7 @@
 #include "base/error.h"
 #include "math/rng.h"
 #include "scene/camera.h"
+#include "testing/direct_waves.h"
 #include "testing/testing.h"
 
 namespace sg {
@@ -25,7 +26,7 @@ double brute_force_first_hit(const WaveField& w, vec3 o, vec3 d, double t, doubl
                              double step) {
   auto f = [&](double s) {
     vec3 p = o + s * d;
-    return p.y - w.height(p.x, p.z, t);
+    return p.y - testing::direct_height(w, p.x, p.z, t);
   };
   double s0 = 0, f0 = f(0);
   for (double s = step; s <= s_max; s += step) {
@@ -102,8 +103,8 @@ TEST(WaterGeometry, DisplacedMatchesBruteForceMarch) {
       // Stated error: the point lies on the surface within kRootTolerance.
       vec3 p = cam.position() + h.s * d;
       EXPECT_LT(length(h.point - p), 1e-9 * (1 + h.s)) << i << "," << j;
-      EXPECT_LT(std::fabs(p.y - w.height(p.x, p.z, t)), 10 * kRootTolerance);
-      EXPECT_NEAR(h.point.y, w.height(h.point.x, h.point.z, t), 1e-12);
+      EXPECT_LT(std::fabs(p.y - testing::direct_height(w, p.x, p.z, t)), 10 * kRootTolerance);
+      EXPECT_NEAR(h.point.y, testing::direct_height(w, h.point.x, h.point.z, t), 1e-12);
     }
   }
   EXPECT_GT(hits, compared / 2);
@@ -152,15 +153,70 @@ TEST(WaterGeometry, HeightGradientAndHessianAreTheWaves) {
   auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
   for (int q = 0; q < 50; ++q) {
     const double x = uniform(-200, 200), z = uniform(-400, 0), t = uniform(-5, 5);
-    EXPECT_NEAR(water.g.height(x, z, t), water.m.waves.height(x, z, t), 1e-12);
-    const vec2 a = water.g.gradient(x, z, t), b = water.m.waves.gradient(x, z, t);
+    EXPECT_NEAR(water.g.height(x, z, t), testing::direct_height(water.m.waves, x, z, t), 1e-12);
+    const vec2 a = water.g.gradient(x, z, t), b = testing::direct_gradient(water.m.waves, x, z, t);
     EXPECT_NEAR(a.x, b.x, 1e-12);
     EXPECT_NEAR(a.y, b.y, 1e-12);
-    const Hessian ha = water.g.hessian(x, z, t), hb = water.m.waves.hessian(x, z, t);
+    const Hessian ha = water.g.hessian(x, z, t),
+                  hb = testing::direct_hessian(water.m.waves, x, z, t);
     EXPECT_NEAR(ha.xx, hb.xx, 1e-12);
     EXPECT_NEAR(ha.xz, hb.xz, 1e-12);
     EXPECT_NEAR(ha.zz, hb.zz, 1e-12);
   }
+}
+
+TEST(WaterGeometry, DerivativesMatchCentralDifferences) {
+  // The gradient against differences of the height, the Hessian against differences of
+  // the gradient.
+  const Water water(testing::project_scene("medium").surface.waves);
+  const WaterGeometry& w = water.g;
+  Pcg32 rng(1, 1);
+  for (int k = 0; k < 500; ++k) {
+    double x = 200 * rng.uniform() - 100, z = -200 * rng.uniform(), t = 10 * rng.uniform();
+    const double h = 1e-5;
+    vec2 fd((w.height(x + h, z, t) - w.height(x - h, z, t)) / (2 * h),
+            (w.height(x, z + h, t) - w.height(x, z - h, t)) / (2 * h));
+    vec2 g = w.gradient(x, z, t);
+    // Central differences: truncation h^2/6 |h'''| ~ 1e-10 * sum A k^3 (< 1e-9); rounding
+    // 1e-16 * |h| / h ~ 1e-11. 1e-8 leaves margin.
+    EXPECT_NEAR(g.x, fd.x, 1e-8);
+    EXPECT_NEAR(g.y, fd.y, 1e-8);
+    vec2 gx = (w.gradient(x + h, z, t) - w.gradient(x - h, z, t)) / (2 * h);
+    vec2 gz = (w.gradient(x, z + h, t) - w.gradient(x, z - h, t)) / (2 * h);
+    Hessian H = w.hessian(x, z, t);
+    EXPECT_NEAR(H.xx, gx.x, 1e-7);
+    EXPECT_NEAR(H.xz, gx.y, 1e-7);
+    EXPECT_NEAR(H.xz, gz.x, 1e-7);
+    EXPECT_NEAR(H.zz, gz.y, 1e-7);
+  }
+}
+
+TEST(WaterGeometry, NormalsAreUnitAndAlongMinusGradient) {
+  const Water water(testing::project_scene("medium").surface.waves);
+  Pcg32 rng(3, 1);
+  for (int k = 0; k < 200; ++k) {
+    double x = 50 * rng.uniform(), z = -50 * rng.uniform(), t = rng.uniform();
+    vec2 g = water.g.gradient(x, z, t);
+    vec3 n = water_normal(g);
+    EXPECT_NEAR(length(n), 1.0, 1e-15);
+    EXPECT_NEAR(-n.x / n.y, g.x, 1e-12);
+    EXPECT_NEAR(-n.z / n.y, g.y, 1e-12);
+  }
+}
+
+TEST(WaterGeometry, TheWavesBoundsHold) {
+  const Water water(testing::project_scene("medium").surface.waves);
+  const WaveField& w = water.m.waves;
+  Pcg32 rng(4, 1);
+  double hmax = 0, smax = 0;
+  for (int k = 0; k < 20000; ++k) {
+    double x = 500 * rng.uniform(), z = -500 * rng.uniform(), t = 30 * rng.uniform();
+    hmax = std::max(hmax, std::fabs(water.g.height(x, z, t)));
+    smax = std::max(smax, length(water.g.gradient(x, z, t)));
+  }
+  EXPECT_LE(hmax, w.amplitude_bound());
+  EXPECT_LE(smax, w.slope_bound());
+  EXPECT_GT(hmax, 0.3 * w.amplitude_bound());  // the bounds are not absurdly loose here
 }
 
 TEST(WaterGeometryFootprint, FlatMatchesNeighbouringRays) {
@@ -196,7 +252,7 @@ TEST(WaterGeometryFootprint, DisplacedMatchesNeighbouringRaysToFirstOrder) {
     // O(h) to the difference quotient.
     EXPECT_LT(length(fx - f.dp_dpx), 1e-3 * length(fx));
     // The hit lies on the surface.
-    EXPECT_NEAR(f.point.y, m.waves.height(f.point.x, f.point.z, 0.4), 1e-8);
+    EXPECT_NEAR(f.point.y, testing::direct_height(m.waves, f.point.x, f.point.z, 0.4), 1e-8);
   }
 }
 

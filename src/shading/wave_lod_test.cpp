@@ -20,6 +20,7 @@
 #include "shading/ndf.h"
 #include "shading/water_geometry.h"
 #include "shading/wave_lod.h"
+#include "testing/direct_waves.h"
 
 namespace sg {
 namespace {
@@ -63,8 +64,8 @@ Filtered filter_waves(const WaveField& waves, const mat2& J, const vec3& p, doub
   wr.resize(w.size());
   for (size_t k = 0; k < w.size(); ++k)
     wr[k] = 1 - w[k];
-  return {waves.gradient_weighted(p.x, p.z, t, w), waves.weighted(w).height(p.x, p.z, t),
-          uniform_ndf_covariance(waves, wr)};
+  return {testing::direct_gradient(waves, p.x, p.z, t, w),
+          testing::direct_height(waves, p.x, p.z, t, w), uniform_ndf_covariance(waves, wr)};
 }
 
 Agreement compare_filters(const Scene& s) {
