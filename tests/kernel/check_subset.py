@@ -11,6 +11,7 @@ the kernel could break are checked here by pattern: no ternary operator on struc
 beginning with webgl_ or _webgl or holding two consecutive underscores.
 
 Usage: check_subset.py SOURCE_DIR [GLSLANG_VALIDATOR]
+       check_subset.py --self-test   (the struct-ternary rule against planted cases)
 Exit status 0 when every rule holds and both shaders compile; each violation is printed as
 file:line: rule.
 """
@@ -82,11 +83,8 @@ def check_file(path, problems):
                 problems.append(f"{where}: a kernel function is marked SG_FN: {raw.strip()}")
 
 
-def check_struct_ternaries(files, problems):
-    """WebGL forbids the ternary operator on structs (ANGLE: "ternary operator is not allowed
-    for structures"): a statement that declares a struct from a ternary, or whose ternary
-    yields a call of a function returning a struct, is reported."""
-    texts = {path: path.read_text() for path in files}
+def struct_names(texts):
+    """The kernel's struct types, and the functions that return one."""
     structs = set()
     for text in texts.values():
         structs.update(re.findall(r"^struct\s+(\w+)", text, flags=re.M))
@@ -95,21 +93,106 @@ def check_struct_ternaries(files, problems):
         for kind, name in re.findall(r"^SG_FN\s+(\w+)\s+(\w+)\s*\(", text, flags=re.M):
             if kind in structs:
                 returning.add(name)
+    return structs, returning
+
+
+def functions(code):
+    """Each top-level SG_FN function of `code`: its return type, and the offsets of its
+    parameter list's start and of its body's end (the brace that closes it)."""
+    for m in re.finditer(r"^SG_FN\s+(\w+)\s+\w+\s*\(", code, flags=re.M):
+        body = code.find("{", m.end())
+        if body < 0:
+            continue
+        depth, end = 0, len(code)
+        for i in range(body, len(code)):
+            if code[i] == "{":
+                depth += 1
+            elif code[i] == "}":
+                depth -= 1
+                if depth == 0:
+                    end = i + 1
+                    break
+        yield m.group(1), m.end(), end
+
+
+def check_struct_ternaries(files, problems):
+    """WebGL forbids the ternary operator on structs (ANGLE: "ternary operator is not allowed
+    for structures"). Reported, within each function (its parameters and declarations tell
+    which names hold structs): a struct declared or assigned from a ternary, a ternary one
+    of whose operands is a struct variable or a call of a function returning a struct, and
+    a function returning a struct that returns a ternary."""
+    texts = {path: path.read_text() for path in files}
+    structs, returning = struct_names(texts)
+    if not structs:
+        return
     names = "|".join(sorted(structs))
-    calls = "|".join(sorted(returning))
+    calls = "|".join(sorted(returning)) or r"(?!)"
     for path, text in texts.items():
         code = "\n".join(strip_comments(line) for line in text.splitlines())
-        start = 0
-        for statement in re.split(r"(?<=[;{}])", code):
-            line = code.count("\n", 0, start + len(statement) - len(statement.lstrip())) + 1
-            start += len(statement)
-            if "?" not in statement:
-                continue
-            declares = names and re.search(rf"\b({names})\s+\w+\s*=[^;]*\?", statement)
-            yields = calls and re.search(rf"[?:]\s*({calls})\s*\(", statement)
-            if declares or yields:
-                problems.append(f"{path}:{line}: no ternary operator on structs (WebGL): "
-                                f"{' '.join(statement.split())[:100]}")
+        scopes = [(kind, begin, end) for kind, begin, end in functions(code)]
+        # The file's top level: the functions blanked out (their lines kept).
+        top = code
+        for _, begin, end in scopes:
+            top = top[:begin] + re.sub(r"[^\n]", " ", top[begin:end]) + top[end:]
+        reported = set()
+        for kind, begin, end in scopes + [(None, 0, len(code))]:
+            scope = code[begin:end] if kind is not None else top
+            held = set(re.findall(rf"\b(?:IN|OUT|INOUT)\(\s*(?:{names})\s*\)\s*(\w+)", scope))
+            held |= set(re.findall(rf"\b(?:{names})\s+(\w+)\s*[=;,)\[]", scope))
+            held -= structs
+            variables = "|".join(sorted(held)) or r"(?!)"
+            start = begin
+            for statement in re.split(r"(?<=[;{}])", scope):
+                offset = start + len(statement) - len(statement.lstrip())
+                start += len(statement)
+                if "?" not in statement:
+                    continue
+                rule = None
+                if re.search(rf"\b({names})\s+\w+\s*=[^;]*\?", statement):
+                    rule = "a struct declared from a ternary"
+                elif re.search(rf"^\s*({variables})\s*=(?!=)[^;]*\?", statement):
+                    rule = "a struct assigned from a ternary"
+                elif re.search(rf"[?:]\s*({calls})\s*\(", statement):
+                    rule = "a ternary yields a struct returned by a call"
+                elif re.search(rf"[?:]\s*({variables})\s*(?=[;:)]|$)", statement):
+                    rule = "a ternary yields a struct variable"
+                elif kind in structs and re.search(r"^\s*return\b[^;]*\?", statement):
+                    rule = "a function returning a struct returns a ternary"
+                line = code.count("\n", 0, offset) + 1
+                if rule and line not in reported:
+                    reported.add(line)
+                    problems.append(f"{path}:{line}: no ternary operator on structs (WebGL), "
+                                    f"{rule}: {' '.join(statement.split())[:100]}")
+
+
+# Each case the struct-ternary rule must report (True) or let pass (False): the rule's own
+# test (`check_subset.py --self-test`), so that a rule that no longer catches what WebGL
+# refuses fails a test.
+TERNARY_CASES = [
+    (True, "S f(bool c, S a, S b) { S r = c ? a : b; return r; }"),
+    (True, "S f(bool c, S a, S b) { S r = a; r = c ? a : b; return r; }"),
+    (True, "S f(bool c, IN(S) a, IN(S) b) { return c ? a : b; }"),
+    (True, "S g() { S s; s.x = 0.0; return s; }\nSG_FN real f(bool c) { real y = (c ? g() : g()).x; return y; }"),
+    (True, "real f(bool c, IN(S) a, IN(S) b) { S t; t = a; t = c ? b : t; return t.x; }"),
+    (False, "real f(bool c, IN(S) a) { real y = c ? a.x : 0.0; return y; }"),
+    (False, "S f(bool c, S a) { S r = a; r.x = c ? 1.0 : a.x; return r; }"),
+    (False, "real f(bool c, real a, real b) { real r = c ? a : b; return r; }"),
+]
+
+
+def self_test():
+    failures = 0
+    with tempfile.TemporaryDirectory() as folder:
+        for expected, body in TERNARY_CASES:
+            path = Path(folder) / "case.glsl"
+            path.write_text("struct S {\n  real x;\n};\nSG_FN " + body + "\n")
+            problems = []
+            check_struct_ternaries([path], problems)
+            if bool(problems) != expected:
+                failures += 1
+                print(f"{'missed' if expected else 'wrongly reported'}: {body}")
+    print(f"{len(TERNARY_CASES)} struct-ternary cases, {failures} failure(s)")
+    return 1 if failures else 0
 
 
 def expand(source_dir, name, seen):
@@ -185,6 +268,8 @@ def compile_shader(validator, text, suffix, what, problems):
 
 
 def main():
+    if sys.argv[1:] == ["--self-test"]:
+        return self_test()
     source_dir = Path(sys.argv[1]) / "src"
     validator = sys.argv[2] if len(sys.argv) > 2 else "glslangValidator"
     problems = []
