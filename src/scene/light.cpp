@@ -20,11 +20,34 @@ LightModel::LightModel(const LightDesc& d) {
   visible = d.visible;
 }
 
+namespace {
+
+// The kernel's light for the queries below: the direction, its plane's frame and the chord.
+kd::Light kernel_of(const LightModel& m) {
+  kd::Light l{};
+  l.L = m.L;
+  l.e1 = m.e1;
+  l.e2 = m.e2;
+  l.chord2 = m.chord2;
+  return l;
+}
+
+}  // namespace
+
 bool LightModel::contains(const vec3& unit_dir) const {
-  kd::Light l;
-  l.L = L;
-  l.chord2 = chord2;
-  return kd::light_contains(l, unit_dir);
+  return kd::light_contains(kernel_of(*this), unit_dir);
+}
+
+vec2 LightModel::to_plane(const vec3& r) const {
+  return kd::light_to_plane(kernel_of(*this), r);
+}
+
+vec3 LightModel::from_plane(const vec2& p) const {
+  return kd::light_from_plane(kernel_of(*this), p);
+}
+
+double LightModel::elevation_on_plane(const vec2& p) const {
+  return kd::elevation_on_plane(kernel_of(*this), p);
 }
 
 }  // namespace sg

@@ -32,18 +32,17 @@ struct LightModel {
   // light_contains), |r - L|^2 <= chord2.
   bool contains(const vec3& unit_dir) const;
 
-  // Light-plane coordinates of direction r (any length, r . L > 0).
-  vec2 to_plane(const vec3& r) const {
-    double inv = 1.0 / dot(r, L);
-    return vec2(dot(r, e1) * inv, dot(r, e2) * inv);
-  }
-  // The unit direction through light-plane point p.
-  vec3 from_plane(const vec2& p) const { return normalize(L + p.x * e1 + p.y * e2); }
-  // The height (y) of L + p.x e1 + p.y e2, the direction through p scaled to r . L = 1. Its
+  // The light plane, by the kernel's formulas (kernel/light.glsl, light_to_plane,
+  // elevation_on_plane; kernel/microspec.glsl, light_from_plane):
+  // light-plane coordinates of direction r (any length, r . L > 0);
+  vec2 to_plane(const vec3& r) const;
+  // the unit direction through light-plane point p;
+  vec3 from_plane(const vec2& p) const;
+  // the height (y) of L + p.x e1 + p.y e2, the direction through p scaled to r . L = 1. Its
   // sign is that of r.y, so the horizon is the straight line elevation_on_plane(p) = 0 of
   // the light plane (a great circle maps to a line) and reflections with
   // elevation_on_plane(p) <= 0 point below it.
-  double elevation_on_plane(const vec2& p) const { return L.y + p.x * e1.y + p.y * e2.y; }
+  double elevation_on_plane(const vec2& p) const;
 };
 
 }  // namespace sg
