@@ -42,6 +42,25 @@ TEST(Light, ConeTestEqualsDiskTestOnThePlane) {
   EXPECT_GT(inside, 1000);
 }
 
+TEST(Light, PlaneCoordinatesAreAlongTheFrame) {
+  // Eq. 8 in the model's frame: Phi(r) = (r . e1, r . e2) / (r . L), and the direction
+  // through p is along L + p.x e1 + p.y e2 (the maps' round trip alone would not see a
+  // frame swapped or turned).
+  LightModel l(LightDesc{{0.3, 0.15, -1}, 0.27, Rgb(1.0), false});
+  Pcg32 rng(6, 6);
+  for (int k = 0; k < 200; ++k) {
+    const vec3 r =
+        normalize(l.L + vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5));
+    const vec2 p = l.to_plane(r);
+    EXPECT_NEAR(p.x, dot(r, l.e1) / dot(r, l.L), 1e-14);
+    EXPECT_NEAR(p.y, dot(r, l.e2) / dot(r, l.L), 1e-14);
+    const vec2 q(rng.uniform() - 0.5, rng.uniform() - 0.5);
+    const vec3 d = normalize(l.L + q.x * l.e1 + q.y * l.e2);
+    EXPECT_LT(length(l.from_plane(q) - d), 1e-14);
+    EXPECT_NEAR(l.elevation_on_plane(q), d.y / dot(d, l.L), 1e-14);
+  }
+}
+
 TEST(Light, GreatCirclesMapToLines) {
   // Gnomonic projection: three directions on one great circle project to collinear points.
   LightModel l(LightDesc{{0, 0.2, -1}, 0.27, Rgb(1.0), false});
