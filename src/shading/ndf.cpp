@@ -30,6 +30,8 @@ double footprint_phase_half_width(const vec2& k, const mat2& J) {
 PlaneGaussian per_pixel_ndf(const WaveField& w, std::span<const double> weights, const vec2& xz,
                             const mat2& J, double t) {
   kd::NdfMoments m = kd::ndf_zero();
+  const bool invertible = glm::determinant(J) != 0;
+  const mat2 Jinv = invertible ? glm::inverse(J) : mat2(0.0);
   for (size_t i = 0; i < w.size(); ++i) {
     const vec2 k(w.a[i], w.b[i]);
     // The wave at the world's origin and time 0: its phase at (x, z) and t is the kernel's.
@@ -39,7 +41,7 @@ PlaneGaussian per_pixel_ndf(const WaveField& w, std::span<const double> weights,
     kw.b = w.b[i];
     kw.theta0 = w.phi[i];
     kw.c = w.c[i];
-    const double D = footprint_phase_half_width(k, J);
+    const double D = invertible ? kd::footprint_half_width(k, Jinv) : 0.0;
     kd::ndf_add_per_pixel(m, weights[i] * w.A[i], k, std::cos(kd::wave_phase(kw, xz.x, xz.y, t)), D,
                           std::sin(D), std::cos(D));
   }

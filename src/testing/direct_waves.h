@@ -18,11 +18,16 @@ inline double direct_weight(std::span<const double> w, size_t i) {
   return w.empty() ? 1.0 : w[i];
 }
 
+// Wave i's phase a_i x + b_i z + c_i t + phi_i, unreduced.
+inline double direct_phase(const WaveField& f, size_t i, double x, double z, double t) {
+  return f.a[i] * x + f.b[i] * z + f.c[i] * t + f.phi[i];
+}
+
 inline double direct_height(const WaveField& f, double x, double z, double t,
                             std::span<const double> w = {}) {
   double h = 0;
   for (size_t i = 0; i < f.size(); ++i)
-    h += direct_weight(w, i) * f.A[i] * std::sin(f.a[i] * x + f.b[i] * z + f.c[i] * t + f.phi[i]);
+    h += direct_weight(w, i) * f.A[i] * std::sin(direct_phase(f, i, x, z, t));
   return h;
 }
 
@@ -31,8 +36,7 @@ inline vec2 direct_gradient(const WaveField& f, double x, double z, double t,
                             std::span<const double> w = {}) {
   vec2 g(0.0);
   for (size_t i = 0; i < f.size(); ++i) {
-    const double k =
-        direct_weight(w, i) * f.A[i] * std::cos(f.a[i] * x + f.b[i] * z + f.c[i] * t + f.phi[i]);
+    const double k = direct_weight(w, i) * f.A[i] * std::cos(direct_phase(f, i, x, z, t));
     g += k * vec2(f.a[i], f.b[i]);
   }
   return g;
@@ -43,8 +47,7 @@ inline Hessian direct_hessian(const WaveField& f, double x, double z, double t,
                               std::span<const double> w = {}) {
   Hessian H;
   for (size_t i = 0; i < f.size(); ++i) {
-    const double s =
-        -direct_weight(w, i) * f.A[i] * std::sin(f.a[i] * x + f.b[i] * z + f.c[i] * t + f.phi[i]);
+    const double s = -direct_weight(w, i) * f.A[i] * std::sin(direct_phase(f, i, x, z, t));
     H.xx += s * f.a[i] * f.a[i];
     H.xz += s * f.a[i] * f.b[i];
     H.zz += s * f.b[i] * f.b[i];
