@@ -17,10 +17,8 @@ LeanMapGl::LeanMapGl() : program_(kernel_program(KernelEntry::lean_map, ProgramO
 
 void LeanMapGl::allocate(int size) {
   if (size == size_) return;
-  int levels = 0;
-  while ((size >> levels) >= 1)
-    ++levels;
-  const size_t floats = size_t(kd::lean_level_offset(size, levels)) * size_t(kd::kLeanTexelFloats);
+  const size_t floats = size_t(kd::lean_level_offset(size, kd::lean_level_count(size))) *
+                        size_t(kd::kLeanTexelFloats);
   if (floats > size_t(gl::max_texture_buffer_texels())) {
     throw Error("--lean-size " + std::to_string(size) + ": the map's " + std::to_string(floats) +
                 " floats exceed this GL context's GL_MAX_TEXTURE_BUFFER_SIZE of " +
@@ -64,7 +62,9 @@ void LeanMapGl::fill(const gl::TextureBuffer& waves, const kf::Frame& f, const k
       program_.set("lean_row0", row0);
       program_.set("lean_rows", rows);
       program_.set("lean_out_base", int(start / sizeof(float)));
-      gl::dispatch_2d(program_, n, rows);
+      // Level 0 a block of texels an invocation (kernel/lean.glsl, lean_level0_block).
+      const int per = level == 0 ? kd::kLeanBlock : 1;
+      gl::dispatch_2d(program_, (n + per - 1) / per, (rows + per - 1) / per);
       // The next level reads this one through the texture cache.
       gl::barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
       ++passes_;

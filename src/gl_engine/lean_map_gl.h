@@ -1,6 +1,7 @@
 // `lean`'s map on the GPU (kernel/lean.glsl; methods/lean.h states the method): per frame,
-// one compute pass fills level 0, one texel an invocation, from the wave buffer with the
-// kernel's lean_level0_texel (the terms the CPU runs in SIMD lanes), and one pass per
+// one compute pass fills level 0, a block of 4 x 4 texels an invocation, from the wave buffer
+// with the kernel's lean_level0_block (the terms the CPU runs in SIMD lanes, each wave's
+// row and column phases once a row and a column of the block), and one pass per
 // level builds the MIP chain with lean_parent. The texels are five floats each in one R32F
 // buffer texture, level after level, which the pixel program reads with the kernel's
 // filters (binding 6); the passes write it as a storage buffer (binding 7), in bands of rows

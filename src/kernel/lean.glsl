@@ -78,14 +78,22 @@ SG_FN mat2 lean_covariance(IN(LeanMoments) m) {
 // The floats a texel takes in the map.
 const int kLeanTexelFloats = 5;
 
-// The first texel of level `level` in a map of N = size texels a side.
+// The levels of a map of N = size texels a side (a power of two): N, N/2, ..., 1.
+SG_FN int lean_level_count(int size) {
+  int levels = 1;
+  while ((size >> levels) >= 1)
+    ++levels;
+  return levels;
+}
+
+// The first texel of level `level` in a map of N = size texels a side (a power of two):
+// the levels before it hold N^2 + (N/2)^2 + ... + (2 N_l)^2 = (4 N^2 - 4 N_l^2) / 3 texels,
+// N_l = N >> level (a geometric series; exact in integers, 4 N^2 - 4 N_l^2 being a
+// multiple of 3, and past the last level, N_l = 0, the floor of the whole chain's
+// (4 N^2 - 1) / 3: its size). One expression a lookup, where a loop over the levels ran.
 SG_FN int lean_level_offset(int size, int level) {
-  int at = 0;
-  for (int l = 0; l < level; ++l) {
-    int n = size >> l;
-    at += n * n;
-  }
-  return at;
+  int nl = size >> level;
+  return (4 * size * size - 4 * nl * nl) / 3;
 }
 
 // The floats of texel `index` (counted over every level): B, then M.
@@ -166,20 +174,46 @@ SG_FN vec2 lean_texel_centre(IN(LeanParams) p, int i, int j) {
   return p.origin + (vec2(real(i), real(j)) + vec2(0.5)) * p.texel;
 }
 
-// Level-0 texel (i, j) from the frame's waves at the display time (the GL engine's map
-// program; the CPU fills the same terms in SIMD lanes, methods/lean.cpp).
-SG_FN LeanMoments lean_level0_texel(IN(WaveBuffer) waves, IN(Frame) f, IN(LeanParams) p, int i,
-                                    int j) {
-  vec2 xz = lean_texel_centre(p, i, j);
-  vec2 g = vec2(0.0);
+// Level 0's texels in a block of kLeanBlock x kLeanBlock from texel (i0, j0), from the
+// frame's waves at the display time: the GL engine's map program, a block an invocation
+// (the CPU fills the same terms in SIMD lanes, methods/lean.cpp). Each wave's row and
+// column phases are taken once a row and once a column of the block, and every texel's
+// slope by angle addition from them (lean_wave_slope), as the CPU's lanes take them from a
+// block's tables: 2 kLeanBlock sines and cosines a wave for kLeanBlock^2 texels, where a
+// texel alone took two (a quarter of them at kLeanBlock = 4), without the workgroup's
+// shared memory and barriers that llvmpipe pays for (docs/benchmarks.md, "`lean`'s map on
+// the GPU with a workgroup's shared rows and columns"). A wave the grid cannot sample
+// (lean_wave_amplitude 0) is skipped, alike for every invocation. Texel (i0 + c, j0 + r)
+// is g[r * kLeanBlock + c]; those past the map's side are computed and not stored.
+const int kLeanBlock = 4;
+struct LeanBlock {
+  vec2 g[kLeanBlock * kLeanBlock];
+};
+
+SG_FN LeanBlock lean_level0_block(IN(WaveBuffer) waves, IN(Frame) f, IN(LeanParams) p, int i0,
+                                  int j0) {
+  LeanBlock b;
+  for (int e = 0; e < kLeanBlock * kLeanBlock; ++e)
+    b.g[e] = vec2(0.0);
   for (int k = 0; k < f.wave_count; ++k) {
     Wave w = wave_at(waves, f, k);
-    real row = lean_row_phase(w, xz.y);
-    real column = lean_column_phase(w, xz.x);
-    g += lean_wave_slope(lean_wave_amplitude(w, p.texel), vec2(cos(row), sin(row)),
-                         vec2(cos(column), sin(column)));
+    vec2 amplitude = lean_wave_amplitude(w, p.texel);
+    if (amplitude.x == 0.0 && amplitude.y == 0.0) continue;
+    vec2 row[kLeanBlock];
+    vec2 column[kLeanBlock];
+    for (int q = 0; q < kLeanBlock; ++q) {
+      vec2 xz = lean_texel_centre(p, i0 + q, j0 + q);
+      real r = lean_row_phase(w, xz.y);
+      real c = lean_column_phase(w, xz.x);
+      row[q] = vec2(cos(r), sin(r));
+      column[q] = vec2(cos(c), sin(c));
+    }
+    for (int r = 0; r < kLeanBlock; ++r) {
+      for (int c = 0; c < kLeanBlock; ++c)
+        b.g[r * kLeanBlock + c] += lean_wave_slope(amplitude, row[r], column[c]);
+    }
   }
-  return lean_moments_of_slope(g);
+  return b;
 }
 
 // A texel of level l + 1 from its four children in level l.

@@ -1,7 +1,7 @@
 // The LEAN map's per-wave terms (lean.glsl; Olano and Baker 2010, "LEAN Mapping"),
 // lane-generic: the CPU engine fills the map's level 0 over its SIMD lanes, a block of
 // texels a lane each (kernel/cpu/lane_passes.inc, LeanBlockPass), where a GPU thread runs
-// the same terms one texel at a time (lean.glsl, lean_level0_texel).
+// the same terms over a block of 4 x 4 texels (lean.glsl, lean_level0_block).
 //
 // A texel holds the slope of the waves its grid samples, point-sampled at its centre (a
 // normal map generated from sine data, as Podee et al. 2021 generated theirs, Sec. 5). A

@@ -29,9 +29,7 @@ kd::LeanParams lean_frame_params(const LeanMapRegion& region, const LeanOptions&
   p.origin = region.origin - camera_xz;
   p.texel = region.texel;
   p.size = size;
-  p.levels = 1;
-  while ((size >> p.levels) >= 1)
-    ++p.levels;
+  p.levels = kd::lean_level_count(size);
   p.empty = region.empty;
   p.aniso = o.filter == LeanFilter::aniso;
   p.max_aniso = o.max_aniso;

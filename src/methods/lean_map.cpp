@@ -20,13 +20,10 @@ void LeanMap::allocate(int size) {
   if (size < 1 || (size & (size - 1)) != 0) throw Error("LEAN map: size must be a power of two");
   if (size == size_) return;
   size_ = size;
-  offsets_.clear();
-  size_t total = 0;
-  for (int n = size; n >= 1; n /= 2) {
-    offsets_.push_back(total);
-    total += static_cast<size_t>(n) * n;
-  }
-  texels_.assign(total, LeanTexel{});
+  levels_ = kd::lean_level_count(size);
+  // The kernel's layout (kernel/lean.glsl, lean_level_offset): level after level, down to
+  // one texel; its offset past the last level is the chain's size.
+  texels_.assign(static_cast<size_t>(kd::lean_level_offset(size, levels_)), LeanTexel{});
   texels_.shrink_to_fit();
 }
 
@@ -44,8 +41,8 @@ void LeanMap::build_mips() {
   const kd::MapTexels view = texels();
   for (int l = 1; l < levels(); ++l) {
     const int n = level_size(l), np = level_size(l - 1);
-    const size_t src = offsets_[l - 1];
-    LeanTexel* dst = texels_.data() + offsets_[l];
+    const size_t src = static_cast<size_t>(kd::lean_level_offset(size_, l - 1));
+    LeanTexel* dst = texels_.data() + kd::lean_level_offset(size_, l);
     tbb::parallel_for(
         tbb::blocked_range<int>(0, n, std::max(1, 2048 / n)),
         [&](const tbb::blocked_range<int>& r) {

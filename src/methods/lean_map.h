@@ -48,7 +48,7 @@ class LeanMap {
   // N texels a side (a power of two >= 1). Keeps the storage when N does not change.
   void allocate(int size);
   int size() const { return size_; }
-  int levels() const { return static_cast<int>(offsets_.size()); }  // L + 1
+  int levels() const { return levels_; }  // L + 1
   int level_size(int level) const { return size_ >> level; }
   size_t bytes() const { return texels_.capacity() * sizeof(LeanTexel); }
 
@@ -76,7 +76,7 @@ class LeanMap {
 
  private:
   int size_ = 0;
-  std::vector<size_t> offsets_;
+  int levels_ = 0;
   std::vector<LeanTexel> texels_;
   vec3 border_{0.0};
 };

@@ -6,7 +6,8 @@
 //    of the 2^l x 2^l finest texels it covers; filter weights sum to 1; anisotropic probes
 //    follow the box footprint where trilinear over-blurs.
 //  - The wave map's texels (the CPU's lanes) are the mapped waves' gradient at their
-//    centres and the GL engine's text (kernel/lean.glsl, lean_level0_texel).
+//    centres and the GL engine's text (kernel/lean.glsl, lean_level0_block: each texel of
+//    a block).
 //  - Coverage: the map holds the visible water within D; pixels beyond the map get the
 //    uniform NDF of Eq. 3 (border moments), as documented.
 //  - Calm water against the analytic mirrored disk; the shared scenes and a displaced,
@@ -92,6 +93,28 @@ TEST(LeanMap, CheckerboardGivesTheAnalyticMeanAndCorrelatedCovariance) {
   expect_moments_near(map.texel(0, 3, 4), b1, mat2(0.0), 1e-7);
 }
 
+TEST(LeanMap, LevelsFollowOneAnotherDownToOneTexel) {
+  // The kernel's closed-form layout (lean_level_offset) against the level sizes summed one
+  // by one, for every map size the options allow and every level, one past the last
+  // included (the chain's size); and the level count (N, N/2, ..., 1).
+  for (int size = 1; size <= 8192; size *= 2) {
+    int levels = 0;
+    for (int n = size; n >= 1; n /= 2)
+      ++levels;
+    EXPECT_EQ(kd::lean_level_count(size), levels) << size;
+    long at = 0;
+    for (int level = 0; level <= levels; ++level) {
+      EXPECT_EQ(kd::lean_level_offset(size, level), at) << size << " level " << level;
+      at += long(size >> level) * (size >> level);
+    }
+  }
+  // The map's storage is the chain: its last texel is level L's one texel.
+  LeanMap map;
+  map.allocate(64);
+  EXPECT_EQ(map.levels(), 7);
+  EXPECT_EQ(map.texels().size, long(kd::lean_level_offset(64, 7)) * kd::kLeanTexelFloats);
+}
+
 TEST(LeanMap, MipTexelsAreBoxMeansOfTheFinestTexels) {
   LeanMap map;
   map.allocate(128);
@@ -167,8 +190,8 @@ TEST(LeanMap, AnisotropicProbesFollowTheFootprintWhereTrilinearOverBlurs) {
 TEST(LeanWaves, TexelsAreTheGradientAndWholePeriodsGiveEq3) {
   // One wave with whole periods across a 256-texel map: 5 in x and 3 in z; a second one
   // finer than the grid (left to the base term). The CPU's fill (SIMD lanes, angle addition)
-  // against the gradient of the mapped wave and against the GL engine's text
-  // (lean_level0_texel) at every 29th / 37th texel.
+  // against the gradient of the mapped wave at every 29th / 37th texel, and against the
+  // GL engine's text (lean_level0_block) over the block that starts there.
   const double texel = 0.05, side = 256 * texel;
   const vec2 k(kTwoPi * 5 / side, kTwoPi * 3 / side);
   Scene s = testing::small_scene(
@@ -198,9 +221,17 @@ TEST(LeanWaves, TexelsAreTheGradientAndWholePeriodsGiveEq3) {
       const LeanMoments t = map.texel(0, i, j);
       EXPECT_NEAR(t.B.x, g.x, 1e-7 + 1e-6 * std::fabs(g.x));
       EXPECT_NEAR(t.B.y, g.y, 1e-7 + 1e-6 * std::fabs(g.y));
-      const LeanMoments gl = kd::lean_level0_texel(waves, in.frame, p, i, j);
-      EXPECT_NEAR(t.B.x, gl.B.x, 1e-7 + 1e-6 * std::fabs(g.x));
-      EXPECT_NEAR(t.M.z, gl.M.z, 1e-8 + 1e-6 * std::fabs(gl.M.z));
+      // The GL engine's block from this texel: each of its texels the CPU's.
+      const kd::LeanBlock block = kd::lean_level0_block(waves, in.frame, p, i, j);
+      for (int r = 0; r < kd::kLeanBlock && j + r < 256; ++r) {
+        for (int c = 0; c < kd::kLeanBlock && i + c < 256; ++c) {
+          const LeanMoments cpu = map.texel(0, i + c, j + r);
+          const LeanMoments gl = kd::lean_moments_of_slope(block.g[r * kd::kLeanBlock + c]);
+          EXPECT_NEAR(cpu.B.x, gl.B.x, 1e-7 + 1e-6 * std::fabs(gl.B.x)) << i + c << ", " << j + r;
+          EXPECT_NEAR(cpu.B.y, gl.B.y, 1e-7 + 1e-6 * std::fabs(gl.B.y)) << i + c << ", " << j + r;
+          EXPECT_NEAR(cpu.M.z, gl.M.z, 1e-8 + 1e-6 * std::fabs(gl.M.z)) << i + c << ", " << j + r;
+        }
+      }
     }
   }
   const mat2 eq3 = 0.5 * 0.02 * 0.02 * glm::outerProduct(k, k);

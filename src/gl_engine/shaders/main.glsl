@@ -91,26 +91,41 @@ layout(std430, binding = 7) writeonly buffer LeanMapOut {
   float lean_out[];
 };
 
-void lean_map_main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, lean_row0);
-  int n = lparams.size >> lean_level;
-  if (p.x >= n || int(gl_GlobalInvocationID.y) >= lean_rows) return;
-  LeanMoments t;
-  if (lean_level == 0) {
-    t = lean_level0_texel(waves, frame, lparams, p.x, p.y);
-  } else {
-    int np = 2 * n;
-    int c = lean_level_offset(lparams.size, lean_level - 1) + 2 * p.y * np + 2 * p.x;
-    t = lean_parent(lean_map_texel(lean_map, c), lean_map_texel(lean_map, c + 1),
-                    lean_map_texel(lean_map, c + np), lean_map_texel(lean_map, c + np + 1));
-  }
-  int at = kLeanTexelFloats * (lean_level_offset(lparams.size, lean_level) + p.y * n + p.x) -
-           lean_out_base;
+// Texel (x, y) of level lean_level, n a side, into the window.
+void lean_store(LeanMoments t, int x, int y, int n) {
+  int at =
+      kLeanTexelFloats * (lean_level_offset(lparams.size, lean_level) + y * n + x) - lean_out_base;
   lean_out[at] = t.B.x;
   lean_out[at + 1] = t.B.y;
   lean_out[at + 2] = t.M.x;
   lean_out[at + 3] = t.M.y;
   lean_out[at + 4] = t.M.z;
+}
+
+// Level 0: a block of kLeanBlock x kLeanBlock texels an invocation (lean_level0_block);
+// the levels above: a texel an invocation, the mean of its four children.
+void lean_map_main() {
+  int n = lparams.size >> lean_level;
+  if (lean_level == 0) {
+    ivec2 b = kLeanBlock * ivec2(gl_GlobalInvocationID.xy);  // within the band's rows
+    if (b.x >= n || b.y >= lean_rows) return;
+    LeanBlock blk = lean_level0_block(waves, frame, lparams, b.x, b.y + lean_row0);
+    for (int r = 0; r < kLeanBlock; ++r) {
+      for (int c = 0; c < kLeanBlock; ++c) {
+        if (b.x + c < n && b.y + r < lean_rows)
+          lean_store(lean_moments_of_slope(blk.g[r * kLeanBlock + c]), b.x + c, b.y + r + lean_row0,
+                     n);
+      }
+    }
+    return;
+  }
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, lean_row0);
+  if (p.x >= n || int(gl_GlobalInvocationID.y) >= lean_rows) return;
+  int np = 2 * n;
+  int c = lean_level_offset(lparams.size, lean_level - 1) + 2 * p.y * np + 2 * p.x;
+  lean_store(lean_parent(lean_map_texel(lean_map, c), lean_map_texel(lean_map, c + 1),
+                         lean_map_texel(lean_map, c + np), lean_map_texel(lean_map, c + np + 1)),
+             p.x, p.y, n);
 }
 #endif
 #if defined(SG_METHOD_TAA)
