@@ -20,34 +20,34 @@ LightModel::LightModel(const LightDesc& d) {
   visible = d.visible;
 }
 
-namespace {
-
-// The kernel's light for the queries below: the direction, its plane's frame and the chord.
-kd::Light kernel_of(const LightModel& m) {
+kd::Light LightModel::kernel_light() const {
   kd::Light l{};
-  l.L = m.L;
-  l.e1 = m.e1;
-  l.e2 = m.e2;
-  l.chord2 = m.chord2;
+  l.L = L;
+  l.e1 = e1;
+  l.e2 = e2;
+  l.radius = radius;
+  l.cos_radius = cos_radius;
+  l.sin_radius = sin_radius;
+  l.tan_radius = tan_radius;
+  l.chord2 = chord2;
+  l.visible = visible;
   return l;
 }
 
-}  // namespace
-
 bool LightModel::contains(const vec3& unit_dir) const {
-  return kd::light_contains(kernel_of(*this), unit_dir);
+  return kd::light_contains(kernel_light(), unit_dir);
 }
 
 vec2 LightModel::to_plane(const vec3& r) const {
-  return kd::light_to_plane(kernel_of(*this), r);
+  return kd::light_to_plane(kernel_light(), r);
 }
 
 vec3 LightModel::from_plane(const vec2& p) const {
-  return kd::light_from_plane(kernel_of(*this), p);
+  return kd::light_from_plane(kernel_light(), p);
 }
 
 double LightModel::elevation_on_plane(const vec2& p) const {
-  return kd::elevation_on_plane(kernel_of(*this), p);
+  return kd::elevation_on_plane(kernel_light(), p);
 }
 
 }  // namespace sg

@@ -13,6 +13,9 @@
 #include "scene/scene.h"
 
 namespace sg {
+namespace kd {
+struct Light;  // kernel/interface.glsl, in double (kernel/kernel_types.h)
+}
 
 struct LightModel {
   vec3 L{0, 0, -1};   // unit, towards the light
@@ -27,6 +30,10 @@ struct LightModel {
 
   LightModel() = default;
   explicit LightModel(const LightDesc& d);
+
+  // The kernel's light (kernel/interface.glsl, Light) in double, every field: what the
+  // frames carry (shading/kernel_frame.h narrows it to float) and the queries below take.
+  kd::Light kernel_light() const;
 
   // Whether unit direction r lies in the disk: the kernel's test (kernel/light.glsl,
   // light_contains), |r - L|^2 <= chord2.

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "kernel/kernel_types.h"
 #include "math/rng.h"
 
 namespace sg {
@@ -19,6 +20,25 @@ TEST(Light, FrameIsOrthonormalAndRightHanded) {
     EXPECT_NEAR(dot(l.e1, l.L), 0, 1e-15);
     EXPECT_NEAR(dot(l.e2, l.L), 0, 1e-15);
     EXPECT_LT(length(cross(l.e1, l.e2) - l.L), 1e-15);
+  }
+}
+
+TEST(Light, KernelLightCarriesEveryFieldOfTheModel) {
+  // What the frames and the queries hand the kernel: every field the model's (a forgotten
+  // one would be the struct's zero, or garbage).
+  for (bool visible : {false, true}) {
+    const LightModel l(LightDesc{vec3(0.3, 0.5, 0.1), 0.27, Rgb(1.0), visible});
+    const kd::Light k = l.kernel_light();
+    EXPECT_EQ(k.L, l.L);
+    EXPECT_EQ(k.e1, l.e1);
+    EXPECT_EQ(k.e2, l.e2);
+    EXPECT_EQ(k.radius, l.radius);
+    EXPECT_EQ(k.cos_radius, l.cos_radius);
+    EXPECT_EQ(k.sin_radius, l.sin_radius);
+    EXPECT_EQ(k.tan_radius, l.tan_radius);
+    EXPECT_EQ(k.chord2, l.chord2);
+    EXPECT_EQ(k.visible, visible);
+    EXPECT_GT(k.radius, 0.0);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <type_traits>
 
 #include "base/error.h"
 #include "kernel/cpu/wave_sums.h"
@@ -54,20 +55,44 @@ double reduce_angle(double x) {
   return std::remainder(x, kTwoPi);
 }
 
+// The models' kernel structs (LightModel::kernel_light, CameraModel::kernel_camera: the one
+// place each field is filled) in the frame's precision: as they are in double, each field
+// rounded in float.
 template <class Light>
 void fill_light(const LightModel& l, Light& out) {
-  using R = decltype(out.radius);
-  using V3 = decltype(out.L);
-  auto v3 = [](const vec3& v) { return V3(R(v.x), R(v.y), R(v.z)); };
-  out.L = v3(l.L);
-  out.e1 = v3(l.e1);
-  out.e2 = v3(l.e2);
-  out.radius = R(l.radius);
-  out.cos_radius = R(l.cos_radius);
-  out.sin_radius = R(l.sin_radius);
-  out.tan_radius = R(l.tan_radius);
-  out.chord2 = R(l.chord2);
-  out.visible = l.visible;
+  const kd::Light d = l.kernel_light();
+  if constexpr (std::is_same_v<Light, kd::Light>) {
+    out = d;
+  } else {
+    using R = decltype(out.radius);
+    out.L = kf::vec3(d.L);
+    out.e1 = kf::vec3(d.e1);
+    out.e2 = kf::vec3(d.e2);
+    out.radius = R(d.radius);
+    out.cos_radius = R(d.cos_radius);
+    out.sin_radius = R(d.sin_radius);
+    out.tan_radius = R(d.tan_radius);
+    out.chord2 = R(d.chord2);
+    out.visible = d.visible;
+  }
+}
+
+template <class Camera>
+void fill_camera(const CameraModel& c, Camera& out) {
+  const kd::Camera d = c.kernel_camera();
+  if constexpr (std::is_same_v<Camera, kd::Camera>) {
+    out = d;
+  } else {
+    using R = decltype(out.width);
+    out.position = kf::vec3(d.position);
+    out.forward = kf::vec3(d.forward);
+    out.right = kf::vec3(d.right);
+    out.up = kf::vec3(d.up);
+    out.half_w = R(d.half_w);
+    out.half_h = R(d.half_h);
+    out.width = R(d.width);
+    out.height = R(d.height);
+  }
 }
 
 // A moving camera's keys over the shutter [ft.start, ft.end] (kernel/interface.glsl,
@@ -130,14 +155,12 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
            CascadeReads reads, In& out) {
   using Frame = decltype(out.frame);
   using R = decltype(out.frame.duration);
-  using V3 = decltype(out.frame.light.L);
   using V4 = typename decltype(out.texels)::value_type;
   if (segments < 1 || segments > kd::kMaxSegments) {
     throw Error("--segments: must be in [1, " + std::to_string(kd::kMaxSegments) + "] (got " +
                 std::to_string(segments) + ")");
   }
   if (windows < 1) throw Error("the reference's windows: must be at least 1");
-  auto v3 = [](const vec3& v) { return V3(R(v.x), R(v.y), R(v.z)); };
   Frame& f = out.frame;
   // The camera at the display time; a moving one's from its keys (the frame's model holds
   // it already, frame_model in scene/camera_path.h; a model of the whole scene does not).
@@ -146,14 +169,7 @@ void build(const SceneModel& m, const FrameTime& ft, int segments, uint64_t seed
                             : m.camera;
   fill_camera_keys(m.scene.camera, ft, c.position(), f.camera_keys);
   out.origin = glm::dvec3(c.position().x, 0.0, c.position().z);
-  f.camera.position = V3(0, R(c.position().y), 0);
-  f.camera.forward = v3(c.forward());
-  f.camera.right = v3(c.right());
-  f.camera.up = v3(c.up());
-  f.camera.half_w = R(c.half_w());
-  f.camera.half_h = R(c.half_h());
-  f.camera.width = R(c.width());
-  f.camera.height = R(c.height());
+  fill_camera(c, f.camera);
   fill_light(m.light, f.light);
   f.fresnel = m.scene.surface.fresnel == FresnelMode::none ? 0 : 1;
   f.displaced = m.displaced();
@@ -254,9 +270,7 @@ void write_wave_sums(std::span<const double> A, std::span<const double> a,
 }
 
 kd::Light kernel_light(const LightModel& l) {
-  kd::Light k;
-  fill_light(l, k);
-  return k;
+  return l.kernel_light();
 }
 
 kd::Camera kernel_camera(const CameraModel& c) {
