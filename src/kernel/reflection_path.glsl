@@ -106,23 +106,34 @@ SG_FN PathViews path_views(IN(WaveBuffer) waves, IN(Frame) f, IN(Footprint) fp, 
   return v;
 }
 
-// The instants as the sums over the waves take them (wave_terms.glsl): a fixed camera's.
-SG_FN PathInstants path_instants_fixed(IN(Frame) f) {
-  PathInstants inst;
+// The instants as the sums over the waves take them (wave_terms.glsl): K, the waves'
+// stride, and whether the instants' points move (their points are set apart).
+SG_FN void path_instants_base(IN(Frame) f, bool moving, OUT(PathInstants) inst) {
   inst.segments = frame_segments(f);
   inst.wave_stride = f.wave_stride;
-  inst.moving = false;
+  inst.moving = moving;
+}
+
+// A fixed camera's.
+SG_FN PathInstants path_instants_fixed(IN(Frame) f) {
+  PathInstants inst;
+  path_instants_base(f, false, inst);
   return inst;
 }
 
-// Where the instants' points move (v.moving), each instant's water point as well.
-SG_FN PathInstants path_instants(IN(Frame) f, IN(PathViews) v) {
-  PathInstants inst = path_instants_fixed(f);
-  inst.moving = v.moving;
+// Where the instants' points move (v.moving), each instant's water point as well; written
+// in place (`staa`'s pixel inputs hold them: a returned struct of kMaxSegments + 1 points
+// was copied whole into them on the CPU, docs/benchmarks.md).
+SG_FN void path_instants_into(IN(Frame) f, IN(PathViews) v, OUT(PathInstants) inst) {
+  path_instants_base(f, v.moving, inst);
   if (v.moving) {
     for (int k = 0; k <= frame_segments(f); ++k)
       inst.points[k] = v.point[k];
   }
+}
+SG_FN PathInstants path_instants(IN(Frame) f, IN(PathViews) v) {
+  PathInstants inst;
+  path_instants_into(f, v, inst);
   return inst;
 }
 

@@ -188,7 +188,7 @@ SG_FN StaaWavePixel staa_wave_pixel(IN(Frame) f, IN(StaaParams) p, IN(Footprint)
   px.limit = p.curvature_limit * f.light.radius;
   px.per_pixel_ndf = p.per_pixel_ndf;
   px.cells = staa_smooth_side(f, p);
-  px.inst = path_instants(f, v);
+  path_instants_into(f, v, px.inst);
   px.instant_hessians = !v.camera_moves && f.duration > 0.0;
   px.sweep = v.point[frame_segments(f)] - v.point[0];
   return px;
@@ -845,6 +845,15 @@ SG_FN StaaLightShare staa_light_share(IN(R32Texture2D) table_f, IN(R32Texture3D)
   return s;
 }
 
+// A path's instants 0..K into another: what the stages read of the fixed-size arrays
+// (copying the whole struct moved kMaxSegments + 1 entries a pixel on the CPU).
+SG_FN void staa_path_copy(IN(StaaPath) from, int K, INOUT(StaaPath) to) {
+  for (int k = 0; k <= K; ++k) {
+    to.centre[k] = from.centre[k];
+    to.valid[k] = from.valid[k];
+  }
+}
+
 // Steps 3 to 5 from the sums: the stages above in order.
 SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
                              IN(PathTableInfo) tinfo, IN(R32Texture2D) fits,
@@ -865,7 +874,8 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
     res.aliasing = sums.any_alias;
     StaaNdf ndf = staa_ndf_along_path(f, p, v, sums, path);
     staa_centre_terms(f, p, sums, fp, v, ndf, path.valid[K], res);
-    StaaPath light_path = path;
+    StaaPath light_path;
+    staa_path_copy(path, K, light_path);
     LightAnchor a = staa_light_path(f, p, v, sums, ndf, light_path);
     StaaRdf rdf;
     rdf.cov = mat2(0.0);
@@ -901,7 +911,7 @@ SG_FN StaaResult staa_finish(IN(R32Texture2D) table_f, IN(R32Texture3D) table_s,
       }
       res.weights = staa_weights(f, res);
     }
-    path = light_path;
+    staa_path_copy(light_path, K, path);
   }
   return res;
 }
