@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "kernel/cpu/wave_sums.h"
 #include "kernel/kernel_double.h"
 #include "kernel/kernel_float.h"
 #include "math/rng.h"
@@ -217,6 +218,46 @@ TEST(KernelWaveSums, VectorisedSumsEqualTheKernelLoops) {
     // round differently from the loop's somewhere in 50 points.
     if (n >= 5) {
       EXPECT_GT(differ, 0) << n;
+    }
+  }
+}
+
+TEST(KernelWaveSums, LeanBlockSlopesAreTheKernelTermsSummedOverTheWaves) {
+  // The LEAN map's lanes (lane_passes.inc, LeanBlockPass: rows four at a time, the rest one
+  // by one) against the kernel's term (lean_waves.glsl, lean_wave_slope) summed wave by
+  // wave, texel by texel: 7 rows (one group of four and three alone) of 2 lane paddings'
+  // columns over 37 waves of random amplitudes and phases.
+  constexpr int nk = 37, rows = 7, width = 2 * wave_simd::kLanePadding;
+  Pcg32 rng(11, 5);
+  std::vector<double> amplitude(2 * nk), row(2 * rows * nk), col_c(nk * width), col_s(nk * width);
+  for (double& a : amplitude)
+    a = rng.uniform() - 0.5;
+  for (int r = 0; r < rows; ++r) {
+    for (int k = 0; k < nk; ++k) {
+      const double t = kTwoPi * rng.uniform();
+      row[2 * (r * nk + k)] = std::cos(t);
+      row[2 * (r * nk + k) + 1] = std::sin(t);
+    }
+  }
+  for (int e = 0; e < nk * width; ++e) {
+    const double t = kTwoPi * rng.uniform();
+    col_c[e] = std::cos(t);
+    col_s[e] = std::sin(t);
+  }
+  std::vector<double> out(2 * rows * width, std::nan(""));
+  kd::lean_block_slopes(amplitude.data(), nk, row.data(), rows, col_c.data(), col_s.data(), width,
+                        out.data());
+  for (int r = 0; r < rows; ++r) {
+    for (int q = 0; q < width; ++q) {
+      kd::vec2 g(0.0);
+      for (int k = 0; k < nk; ++k) {
+        g += kd::lean_wave_slope(
+            kd::vec2(amplitude[2 * k], amplitude[2 * k + 1]),
+            kd::vec2(row[2 * (r * nk + k)], row[2 * (r * nk + k) + 1]),
+            kd::vec2(col_c[size_t(k) * width + q], col_s[size_t(k) * width + q]));
+      }
+      EXPECT_NEAR(out[size_t(2 * r) * width + q], g.x, 1e-13) << r << ", " << q;
+      EXPECT_NEAR(out[size_t(2 * r + 1) * width + q], g.y, 1e-13) << r << ", " << q;
     }
   }
 }
