@@ -46,8 +46,8 @@ TEST(DiskCoverage, MatchesBruteForceAcrossTheRim) {
     s.camera.look_at = s.camera.position + vec3(0, std::sin(look), -std::cos(look));
     s.camera.vfov_deg = 30;
     const SceneModel m(s);
-    const kd::Camera c = kernel_camera(m.camera);
-    const kd::Light l = kernel_light(m.light);
+    const kd::Camera c = m.camera.kernel_camera();
+    const kd::Light l = m.light.kernel_light();
     // The pixel of the light's centre, and a window around it that spans the disk.
     double pcx = 0, pcy = 0;
     ASSERT_TRUE(m.camera.project(m.light.L, pcx, pcy)) << v.what;
@@ -115,9 +115,9 @@ TEST(DiskCoverage, InvisibleLightCoversNothing) {
   const SceneModel m(s);
   double pcx = 0, pcy = 0;
   ASSERT_TRUE(m.camera.project(m.light.L, pcx, pcy));
-  EXPECT_EQ(
-      kd::light_pixel_coverage(kernel_camera(m.camera), kernel_light(m.light), int(pcx), int(pcy)),
-      0.0);
+  EXPECT_EQ(kd::light_pixel_coverage(m.camera.kernel_camera(), m.light.kernel_light(), int(pcx),
+                                     int(pcy)),
+            0.0);
 }
 
 }  // namespace

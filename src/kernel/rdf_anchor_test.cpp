@@ -96,7 +96,7 @@ TEST(RdfAnchor, LightShareMatchesDirectIntegration) {
     const double radius = c % 4 == 3 ? 2.0 : 0.27;
     const double light_el = 2 + 68 * rng.uniform(), light_az = -150 + 300 * rng.uniform();
     LightModel model(LightDesc{glm::dvec3(direction(light_el, light_az)), radius, Rgb(1.0), false});
-    const kd::Light l = kernel_light(model);
+    const kd::Light l = model.kernel_light();
     // The view: from the water point towards a camera above it, from grazing to steep.
     const kd::vec3 v = -direction(-(0.5 + 50 * rng.uniform()), 30 * (rng.uniform() - 0.5));
     const kd::LightAnchor a = kd::light_anchor(v, l);
@@ -160,7 +160,7 @@ TEST(RdfAnchor, LightShareMatchesDirectIntegration) {
 TEST(RdfAnchor, RefusedWhereTheDisksPreimageBends) {
   {
     LightModel model(LightDesc{glm::dvec3(direction(2.5, 9.0)), 6.43, Rgb(1.0), false});
-    const kd::Light l = kernel_light(model);
+    const kd::Light l = model.kernel_light();
     const kd::vec3 v = -direction(-4.08, 0.0);
     const kd::mat2 cov(0.0013, 0.0017, 0.0017, 0.0069);
     EXPECT_LT(direct_mass(l, v, kd::vec2(0.0), cov), 1e-6);
@@ -174,7 +174,7 @@ TEST(RdfAnchor, RefusedWhereTheDisksPreimageBends) {
         std::exp(std::log(0.27) + (std::log(15.0) - std::log(0.27)) * rng.uniform());
     const double light_el = 0.5 + 20 * rng.uniform(), light_az = 40 * (rng.uniform() - 0.5);
     LightModel model(LightDesc{glm::dvec3(direction(light_el, light_az)), radius, Rgb(1.0), false});
-    const kd::Light l = kernel_light(model);
+    const kd::Light l = model.kernel_light();
     const kd::vec3 v = -direction(-(0.5 + 15 * rng.uniform()), 40 * (rng.uniform() - 0.5));
     const kd::LightAnchor a = kd::light_anchor(v, l);
     if (!a.valid) {

@@ -19,7 +19,7 @@ kd::ReflectionFootprint reflection_at(const SceneModel& m, std::span<const doubl
   const PixelFootprint fp = pixel_footprint(m, px, py, t);
   const vec2 g = testing::direct_gradient(m.waves, fp.point.x, fp.point.z, t, w);
   const Hessian H = testing::direct_hessian(m.waves, fp.point.x, fp.point.z, t, w);
-  return kd::reflection_footprint(kernel_light(m.light), kernel_footprint(m, fp), g,
+  return kd::reflection_footprint(m.light.kernel_light(), kernel_footprint(m, fp), g,
                                   vec3(H.xx, H.xz, H.zz), vec2(0.0));
 }
 

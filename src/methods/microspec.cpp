@@ -57,7 +57,7 @@ MicrospecFractions microspec_fractions(const LightModel& light,
     c.c[k].v = corners[k].v;
   }
   const kd::MicrospecFractions k =
-      kd::microspec_fractions(kernel_light(light), c, area == MicrospecArea::exact);
+      kd::microspec_fractions(light.kernel_light(), c, area == MicrospecArea::exact);
   MicrospecFractions f;
   f.in_light = k.in_light;
   f.below = k.below;

@@ -28,7 +28,7 @@ kd::TaaParams taa_frame_params(const SceneModel& m, const FrameTime& ft, const T
   const double t_prev = m.scene.frame_time(ft.frame - 1);
   p.dt_prev = t_prev - ft.end;
   p.prev_camera_differs = false;
-  p.prev_camera = kernel_camera(m.camera);
+  p.prev_camera = m.camera.kernel_camera();
   if (o.motion == TaaMotion::full && m.scene.camera.moving()) {
     const CameraPoseAt prev = camera_pose(m.scene.camera, t_prev);
     const CameraPoseAt now = camera_pose(m.scene.camera, ft.end);

@@ -27,7 +27,7 @@ vec3 checked(const vec3& r, const char* name) {
 
 ArcFractions arc_fractions(const vec3& r0, const vec3& r1, const LightModel& light) {
   const kd::ArcFractions f =
-      kd::arc_fractions(checked(r0, "r0"), checked(r1, "r1"), kernel_light(light));
+      kd::arc_fractions(checked(r0, "r0"), checked(r1, "r1"), light.kernel_light());
   return ArcFractions{f.in_light, f.below};
 }
 

@@ -269,14 +269,6 @@ void write_wave_sums(std::span<const double> A, std::span<const double> a,
   write_sums(A, a, b, stride, texels);
 }
 
-kd::Light kernel_light(const LightModel& l) {
-  return l.kernel_light();
-}
-
-kd::Camera kernel_camera(const CameraModel& c) {
-  return c.kernel_camera();
-}
-
 kd::Footprint kernel_footprint(const SceneModel& m, const PixelFootprint& fp) {
   kd::Footprint k;
   k.hit = fp.hit;

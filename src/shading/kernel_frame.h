@@ -77,10 +77,6 @@ int wave_stride(int segments);
 void write_wave_sums(std::span<const double> A, std::span<const double> a,
                      std::span<const double> b, int stride, std::vector<kd::vec4>& texels);
 
-// The kernel's light (kernel/interface.glsl) for a light model, in double.
-kd::Light kernel_light(const LightModel& l);
-// The kernel's camera for a camera model, in double, camera-relative as in the frames.
-kd::Camera kernel_camera(const CameraModel& c);
 // The kernel's footprint for a host footprint (camera-relative point).
 kd::Footprint kernel_footprint(const SceneModel& m, const PixelFootprint& fp);
 

@@ -12,7 +12,7 @@ namespace {
 // sky are the model's (kernel/radiance.glsl reads no other field; the rest is not set).
 kd::Frame radiance_frame(const SceneModel& m) {
   kd::Frame f;
-  f.light = kernel_light(m.light);
+  f.light = m.light.kernel_light();
   f.fresnel = m.scene.surface.fresnel == FresnelMode::none ? 0 : 1;
   f.sky_gradient = m.scene.sky.gradient;
   f.sky_exponent = m.scene.sky.exponent;
@@ -67,7 +67,7 @@ RadianceWeights weights_along_ray(const WaterGeometry& water, const vec3& origin
 
 RadianceWeights miss_pixel_weights(const SceneModel& m, int i, int j) {
   const double cover =
-      kd::light_pixel_coverage(kernel_camera(m.camera), kernel_light(m.light), i, j);
+      kd::light_pixel_coverage(m.camera.kernel_camera(), m.light.kernel_light(), i, j);
   const vec3 d = normalize(m.camera.direction(i + 0.5, j + 0.5));
   return cover * light_weights() + (1.0 - cover) * sky_weights(m, d.y);
 }

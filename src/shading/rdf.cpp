@@ -15,7 +15,7 @@ vec2 ndf_to_light_plane(const vec2& n, const vec3& v, const LightModel& light) {
 }
 
 glm::dmat3x2 light_plane_jacobian(const vec3& r, const LightModel& light) {
-  return kd::light_plane_jacobian(r, kernel_light(light));
+  return kd::light_plane_jacobian(r, light.kernel_light());
 }
 
 mat3 reflection_jacobian_normal(const vec3& m, const vec3& v) {
@@ -33,7 +33,7 @@ void reflection_derivatives(const vec2& n, const vec3& v, vec3& dr_dnx, vec3& dr
 }
 
 mat2 ndf_to_light_plane_jacobian(const vec2& n, const vec3& v, const LightModel& light) {
-  return kd::ndf_to_light_plane_jacobian(n, v, kernel_light(light));
+  return kd::ndf_to_light_plane_jacobian(n, v, light.kernel_light());
 }
 
 }  // namespace sg

@@ -93,7 +93,7 @@ PixelFootprint WaterGeometry::footprint(double px, double py, double t) const {
 
 PixelFootprint rest_plane_footprint(const SceneModel& m, double px, double py) {
   kd::Frame f{};
-  f.camera = kernel_camera(m.camera);
+  f.camera = m.camera.kernel_camera();
   const kd::WaveBuffer none{nullptr, 0, {}};
   const vec3 origin(m.camera.position().x, 0.0, m.camera.position().z);
   return to_world(origin, kd::pixel_footprint(none, f, px, py, 0.0, false));
