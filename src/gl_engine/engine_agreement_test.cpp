@@ -2,7 +2,8 @@
 // only the shared ones (the GL reference was once biased on scenes the shared ones
 // never exercise). Random valid scenes (testing/random_scene.h, the finite-pixel test's
 // generator, here with 1 to 512 waves: side and back light, grazing and overhead sun,
-// Fresnel, sky gradients, colour, displaced water, low and far cameras, wild times; every
+// Fresnel, sky gradients, colour, displaced water, low and far cameras, wild times, a third
+// of the cameras moving (keyframes); every
 // third one's waves a generated sea of lattice cascades, with_cascades) at 24x16, one frame
 // each, every method of the GL engine on both engines:
 //   - point, supersample (2x2x2), staa-temporal, staa, specaa and microspec (their quads'
@@ -233,7 +234,8 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
         (s.surface.cascades.empty() ? std::to_string(s.surface.waves.size()) + " waves, "
                                     : std::to_string(s.surface.cascades.size()) + " cascades of " +
                                           std::to_string(s.surface.cascades[0].lattice) + ", ") +
-        (s.surface.geometry == Geometry::displaced ? "displaced" : "flat") + ")";
+        (s.surface.geometry == Geometry::displaced ? "displaced" : "flat") +
+        (s.camera.moving() ? ", moving camera" : "") + ")";
     bool failed = false;
     std::string line = where + ":";
     for (const char* n : kDeterministic) {

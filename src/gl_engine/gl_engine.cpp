@@ -204,11 +204,12 @@ void GlEngine::upload(const FrameContext& ctx) {
                       split.windows, fields, gpu_fields ? CascadeData::layout : CascadeData::host,
                       v_.cascade_reads);
   if (v_.entry == KernelEntry::staa) {
-    // The program for this frame's smooth terms and light (kernel/staa.glsl,
-    // staa_frame_terms, staa_frame_light_sets).
+    // The program for this frame's smooth terms, light and camera (kernel/staa.glsl,
+    // staa_frame_terms, staa_frame_light_sets, staa_frame_swept_cells).
     ProgramOptions o = program_options(v_);
     o.smooth_terms = kf::float_staa_frame_terms(inputs_->frame) ? 1 : 0;
     o.light_sets = kf::float_staa_frame_light_sets(inputs_->frame) ? 1 : 0;
+    o.swept_cells = o.smooth_terms != 0 && kf::float_staa_frame_swept_cells(inputs_->frame) ? 1 : 0;
     use_program(o);
   }
   const int w = ctx.model.width(), h = ctx.model.height();

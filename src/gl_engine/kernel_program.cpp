@@ -95,6 +95,7 @@ std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o) {
     if (o.smooth_terms >= 0)
       h += "#define SG_SMOOTH_TERMS " + std::to_string(o.smooth_terms) + "\n";
     if (o.light_sets >= 0) h += "#define SG_LIGHT_SETS " + std::to_string(o.light_sets) + "\n";
+    if (o.swept_cells >= 0) h += "#define SG_SWEPT_CELLS " + std::to_string(o.swept_cells) + "\n";
     h += std::string("#define SG_STAA_FALLBACK_RIEMANN ") + (o.fallback_riemann ? "1" : "0") +
          "\n#define SG_STAA_FALLBACK_ALONG_PATH " + (o.fallback_along_path ? "1" : "0") + "\n";
   }

@@ -53,6 +53,9 @@ struct ProgramOptions {
   // staa: SG_LIGHT_SETS, whether the frames' light disk reaches below the horizon
   // (kernel/staa.glsl, staa_frame_light_sets): 0, 1, or -1 (each frame decides).
   int light_sets = -1;
+  // staa: SG_SWEPT_CELLS, whether the frames' camera moves through a shutter (the smooth
+  // terms' cells averaged over it, kernel/staa.glsl, staa_frame_swept_cells): 0, 1, or -1.
+  int swept_cells = -1;
   // specaa: SG_SPECAA_QUAD, the quads' derivatives (1) or the analytic ones (0): a program
   // holds the one it runs.
   bool specaa_quad = true;

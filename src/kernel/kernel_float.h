@@ -53,6 +53,9 @@ bool float_staa_frame_terms(const Frame& f);
 // Whether frame f's light disk reaches below the horizon (kernel/staa.glsl,
 // staa_frame_light_sets): likewise compiled in.
 bool float_staa_frame_light_sets(const Frame& f);
+// Whether frame f's camera moves through a shutter (kernel/staa.glsl,
+// staa_frame_swept_cells): likewise compiled in.
+bool float_staa_frame_swept_cells(const Frame& f);
 // For the tests: the replacements of functions GLSL lacks, and the sums over the waves
 // (vectorised when the buffer carries arrays, else the kernel's loops).
 real float_erfc(real x);

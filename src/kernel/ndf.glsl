@@ -116,7 +116,10 @@ SG_FN vec4 box_offset_rotations(int n, real cx, real sx) {
   return vec4(first, c2, s2);
 }
 
-SG_FN void box_cells_add(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, real cos_t, vec2 h) {
+// `tf`: a third axis of the box, time (box_cells_add_swept), as its factors of the mean
+// and of the second moment, (sinc(x_t), sinc(2 x_t)); (1, 1) where the phase holds still.
+SG_FN void box_cells_add_factors(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, real cos_t,
+                                 vec2 h, vec2 tf) {
   vec2 x = h / real(n);
   // The half-phases reach millions of radians for a distant footprint: reduced to
   // [-pi, pi] before the sine and cosine (special.glsl), as GPUs' and the vectorised
@@ -129,8 +132,8 @@ SG_FN void box_cells_add(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, r
   real sx1 = sin(rx1);
   real f0 = sinc_from(x.x, sx0);
   real f1 = sinc_from(x.y, sx1);
-  real g = f0 * cx0 * f1 * cx1;  // sinc(2 x_0) sinc(2 x_1)
-  real Af = A * f0 * f1;
+  real g = f0 * cx0 * f1 * cx1 * tf.y;  // sinc(2 x_0) sinc(2 x_1) (sinc(2 x_t))
+  real Af = A * f0 * f1 * tf.x;
   real J0 = 0.5 * A * A;
   vec3 kk = vec3(k.x * k.x, k.x * k.y, k.y * k.y);
   vec4 r0 = box_offset_rotations(n, cx0, sx0);
@@ -151,6 +154,29 @@ SG_FN void box_cells_add(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, r
     }
     a = vec2(a.x * r0.z - a.y * r0.w, a.y * r0.z + a.x * r0.w);
   }
+}
+
+// The wave's moments over the cells at one instant (theta the phase at the pixel's centre).
+SG_FN void box_cells_add(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, real cos_t, vec2 h) {
+  box_cells_add_factors(b, n, A, k, sin_t, cos_t, h, vec2(1.0));
+}
+
+// The wave's moments over the cells and over an interval of time through which its phase at
+// each cell turns uniformly by 2 x_t, ending at phase theta (sine sin_t, cosine cos_t) at the
+// pixel's centre: a cell is then a box of three axes, its two edges and time, and the box
+// means above take the third axis's factors, sinc(x_t) and sinc(2 x_t), about the phase at
+// the interval's middle, theta - x_t. (A moving camera's pixel slides over the water through
+// the shutter: `staa` takes there the waves that its path does not follow, staa_waves.glsl.)
+SG_FN void box_cells_add_swept(INOUT(BoxCells) b, int n, real A, vec2 k, real sin_t, real cos_t,
+                               vec2 h, real x_t) {
+  real rt = wrap_angle(x_t);
+  real ct = cos(rt);
+  real st = sin(rt);
+  real ft = sinc_from(x_t, st);
+  // theta - x_t by angle subtraction.
+  real sin_m = sin_t * ct - cos_t * st;
+  real cos_m = cos_t * ct + sin_t * st;
+  box_cells_add_factors(b, n, A, k, sin_m, cos_m, h, vec2(ft, ft * ct));
 }
 
 SG_FN mat2 sym2(vec3 c) {

@@ -242,6 +242,63 @@ TEST(SmoothTerms, CellMomentsMatchNumericalIntegrationOverTheFootprint) {
   }
 }
 
+TEST(SmoothTerms, SweptCellMomentsMatchNumericalIntegrationOverTheFootprintAndTheShutter) {
+  // A moving camera's pixel slides over the water through the shutter: each cell's moments
+  // over the cell and the shutter (ndf.glsl, box_cells_add_swept), the wave's phase at the
+  // cell's points turning by 2 x_t over the shutter and reaching theta at its end, against
+  // a 60 x 60 x 60 midpoint grid over the cell and the shutter. Sweeps of a fraction of a
+  // cycle, of several cycles and backwards; x_t = 0 is the still cell (box_cells_add).
+  const kd::mat2 J(kd::vec2(0.45, 0.02), kd::vec2(0.9, 11.0));
+  struct W {
+    double A, kx, kz, theta, x_t;
+  };
+  for (const W w : {W{0.13, 0.05, -0.3, 0.7, 0.4}, W{0.02, 1.9, 0.8, 2.1, 9.3},
+                    W{0.05, 0.0, -1.1, -0.4, -2.2}, W{0.05, 0.0, -1.1, -0.4, 0.0}}) {
+    const kd::vec2 k(w.kx, w.kz);
+    const kd::vec2 h = 0.5 * kd::vec2(dot(k, J[0]), dot(k, J[1]));
+    for (int n = 1; n <= 3; ++n) {
+      kd::BoxCells b = kd::box_cells_zero();
+      kd::box_cells_add_swept(b, n, w.A, k, std::sin(w.theta), std::cos(w.theta), h, w.x_t);
+      if (w.x_t == 0) {
+        kd::BoxCells still = kd::box_cells_zero();
+        kd::box_cells_add(still, n, w.A, k, std::sin(w.theta), std::cos(w.theta), h);
+        for (int c = 0; c < n * n; ++c) {
+          EXPECT_EQ(b.m[c].mean, still.m[c].mean) << n;
+          EXPECT_EQ(b.m[c].cov, still.m[c].cov) << n;
+        }
+      }
+      for (int iu = 0; iu < n; ++iu) {
+        for (int iv = 0; iv < n; ++iv) {
+          const int G = 60;
+          double m = 0, m2 = 0;
+          for (int a = 0; a < G; ++a) {
+            for (int c = 0; c < G; ++c) {
+              const double u = (iu + (a + 0.5) / G) / n - 0.5, v = (iv + (c + 0.5) / G) / n - 0.5;
+              const double at_cell = w.theta + dot(k, J * kd::vec2(u, v));
+              for (int q = 0; q < G; ++q) {
+                // Time s in [0, 1] over the shutter, the phase 2 x_t (s - 1) behind its end's.
+                const double s = (q + 0.5) / G;
+                const double slope = w.A * std::cos(at_cell + 2 * w.x_t * (s - 1));
+                m += slope;
+                m2 += slope * slope;
+              }
+            }
+          }
+          m /= G * G * G;
+          m2 /= G * G * G;
+          const kd::NdfMoments& got = b.m[iu * n + iv];
+          const double scale = w.A * length(k);
+          EXPECT_NEAR(got.mean.x, -m * k.x, 1e-3 * scale) << n << " " << iu << iv;
+          EXPECT_NEAR(got.mean.y, -m * k.y, 1e-3 * scale) << n << " " << iu << iv;
+          EXPECT_NEAR(got.cov.x, (m2 - m * m) * k.x * k.x, 1e-3 * scale * scale) << n;
+          EXPECT_NEAR(got.cov.y, (m2 - m * m) * k.x * k.y, 1e-3 * scale * scale) << n;
+          EXPECT_NEAR(got.cov.z, (m2 - m * m) * k.y * k.y, 1e-3 * scale * scale) << n;
+        }
+      }
+    }
+  }
+}
+
 TEST(SmoothTerms, HorizonShareMatchesARayGrid) {
   // The water's share of pixels that the horizon crosses (horizon_coverage.glsl) against
   // a 400 x 400 grid of rays per pixel, for a level and a rolled camera; the centroid of

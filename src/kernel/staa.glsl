@@ -163,6 +163,16 @@ SG_FN bool staa_frame_light_sets(IN(Frame) f) {
 #endif
 }
 
+// Whether the frame's camera moves through a shutter: the smooth terms' cells then take
+// the waves that the path does not follow averaged over it (staa_waves.glsl,
+// staa_wave_add). The GL engine compiles staa's program for the answer (SG_SWEPT_CELLS 0
+// or 1, gl_engine/kernel_program.h; the pass reads it through staa_swept_cells): the swept
+// cells' code leaves the programs of fixed cameras, which llvmpipe would otherwise run (a
+// fifth of fresnel-sky's frame, docs/benchmarks.md).
+SG_FN bool staa_frame_swept_cells(IN(Frame) f) {
+  return f.camera_keys.count > 0 && f.duration > 0.0;
+}
+
 // The smooth terms' cells per side for this frame: none with --smooth-terms mean, and
 // none where the frame needs no terms (staa_frame_terms); else the option's.
 SG_FN int staa_smooth_side(IN(Frame) f, IN(StaaParams) p) {
@@ -191,6 +201,8 @@ SG_FN StaaWavePixel staa_wave_pixel(IN(Frame) f, IN(StaaParams) p, IN(Footprint)
   path_instants_into(f, v, px.inst);
   px.instant_hessians = !v.camera_moves && f.duration > 0.0;
   px.sweep = v.point[frame_segments(f)] - v.point[0];
+  px.swept_cells = staa_frame_swept_cells(f);
+  px.duration = f.duration;
   return px;
 }
 

@@ -59,6 +59,10 @@ struct StaaWavePixel {
   // each instant, staa.glsl, staa_footprint_covariance); else the display time's alone.
   bool instant_hessians;
   vec2 sweep;  // a moving camera's motion p_K - p_0 over the shutter
+  // The camera moves through a shutter of this length (s): the smooth terms' cells take the
+  // waves the path does not follow averaged over it (staa_wave_add).
+  bool swept_cells;
+  real duration;
 };
 
 // The smooth terms' cells per side where they are on (px.cells > 0). A GLSL program compiled
@@ -70,6 +74,21 @@ SG_FN int staa_cells_side(IN(StaaWavePixel) px) {
   return px.cells;
 #else
   return SG_SMOOTH_CELLS;
+#endif
+}
+
+// Whether the cells sweep over the shutter (a moving camera): the constant in a GLSL
+// program compiled for it (SG_SWEPT_CELLS, gl_engine/kernel_program.h) and in the web
+// page's, whose cameras are fixed (SG_FIXED_CAMERA); else the pixel's.
+SG_FN bool staa_swept_cells(IN(StaaWavePixel) px) {
+#ifndef SG_SWEPT_CELLS
+#ifndef SG_FIXED_CAMERA
+  return px.swept_cells;
+#else
+  return false;
+#endif
+#else
+  return SG_SWEPT_CELLS != 0;
 #endif
 }
 
@@ -127,7 +146,23 @@ SG_FN void staa_wave_add(INOUT(StaaSums) sums, IN(StaaWavePixel) px, IN(WaveBuff
     }
   }
   if (px.cells > 0) {
-    box_cells_add(sums.cells, staa_cells_side(px), w.A, k, s, c,
-                  0.5 * vec2(dot(k, px.J[0]), dot(k, px.J[1])));
+    vec2 h = 0.5 * vec2(dot(k, px.J[0]), dot(k, px.J[1]));
+    if (staa_swept_cells(px)) {
+      // Under a moving camera the cells take the resolved share at the display time (the
+      // path's instants move them over the shutter: staa_smooth_terms) and the aliasing
+      // share averaged over the shutter, which the path does not follow: at the pixel's
+      // sliding point its phase turns by c T + k . (p_K - p_0) (path_instant_cos_sin), a
+      // third axis of each cell's box (box_cells_add_swept). Taken whole at the display
+      // time, a wave the pixel slides across kept one phase's slope where the water shows
+      // the pixel every phase (docs/method.md, "A moving camera").
+      if (any_lane(resolved != 0.0))
+        box_cells_add(sums.cells, staa_cells_side(px), resolved, k, s, c, h);
+      if (any_lane(aliasing > 0.0)) {
+        box_cells_add_swept(sums.cells, staa_cells_side(px), aliasing, k, s, c, h,
+                            0.5 * (w.c * px.duration + dot(k, px.sweep)));
+      }
+    } else {
+      box_cells_add(sums.cells, staa_cells_side(px), w.A, k, s, c, h);
+    }
   }
 }

@@ -90,22 +90,24 @@ TEST(RandomSeas, StaaLeadsPointAndLeanOnOrdinarySeas) {
   const std::string method = method_env ? method_env : "staa";
   testing::RandomSeas seas(static_cast<uint64_t>(env_int("SG_RANDOM_SEAS_SEED", 1)));
   const std::string dump = sg::testing::binary_dir() + "/test_out/random_seas";
-  std::printf("%-6s %-7s %-9s %9s | %9s %9s %9s | %9s %9s %9s\n", "scene", "look", "geometry",
-              "ref se", "point", "lean", "staa", "t point", "t lean", "t staa");
-  int lit = 0;
+  std::printf("%-6s %-7s %-9s %-6s %9s | %9s %9s %9s | %9s %9s %9s\n", "scene", "look", "geometry",
+              "camera", "ref se", "point", "lean", "staa", "t point", "t lean", "t staa");
+  int lit = 0, moving = 0;
   double log_point = 0, log_lean = 0;
   for (int i = 0; i < scenes; ++i) {
     const Scene s = seas.next(kWidth, kHeight, kFrames);
     const bool glitter = seas.glitter();
+    moving += s.camera.moving();
     const SceneModel m(s);
     const Rendered ref = render_reference(m);
     const double se = sequence_standard_error(ref.variances);
     const Errors p = errors(m, "point", ref, se), l = errors(m, "lean", ref, se),
                  a = errors(m, method, ref, se);
-    std::printf("%-6s %-7s %-9s %9.3g | %9.3g %9.3g %9.3g | %9.3g %9.3g %9.3g\n", s.name.c_str(),
-                glitter ? "glitter" : "sky",
-                s.surface.geometry == Geometry::flat ? "flat" : "displaced", se, p.rmse, l.rmse,
-                a.rmse, p.temporal, l.temporal, a.temporal);
+    std::printf("%-6s %-7s %-9s %-6s %9.3g | %9.3g %9.3g %9.3g | %9.3g %9.3g %9.3g\n",
+                s.name.c_str(), glitter ? "glitter" : "sky",
+                s.surface.geometry == Geometry::flat ? "flat" : "displaced",
+                s.camera.moving() ? "moving" : "fixed", se, p.rmse, l.rmse, a.rmse, p.temporal,
+                l.temporal, a.temporal);
     // Per scene, loose bounds that a broken method fails (the pixel-scale arrangement of
     // a few aliasing waves moves a tiny image's errors either way); over the scenes, the
     // geometric means of the ratios, tight.
@@ -134,8 +136,8 @@ TEST(RandomSeas, StaaLeadsPointAndLeanOnOrdinarySeas) {
                gm_lean = std::exp(log_lean / std::max(lit, 1));
   std::printf(
       "%d scenes above the noise: staa's RMSE over point's %.3f, over lean's %.3f "
-      "(geometric means)\n",
-      lit, gm_point, gm_lean);
+      "(geometric means); %d of %d scenes with a moving camera\n",
+      lit, gm_point, gm_lean, moving, scenes);
   EXPECT_LE(gm_point, kPointBound);
   EXPECT_LE(gm_lean, kLeanBound);
   // The draw must give scenes where the comparison with point says something.

@@ -3,13 +3,17 @@
 // 1 mm to 100 km at up to the breaking steepness, any dispersion and phase; cameras from
 // 1 mm to 100 km high, looking anywhere (also up, and below the crests of displaced water);
 // lights of any elevation, 0.001 to 89 degrees wide, radiances up to 1e10; times up to
-// 1e7 s. Each scene is returned through scene_to_json and parse_scene, so it is valid by
+// 1e7 s; a third of the cameras moving (format /3 keyframes: pans, tilts, dollies, climbs
+// and dives, slow or abrupt, keys before, inside or after the frames' shutters; drawn from
+// a stream of their own, so the scenes' other draws are those of the fixed cameras before
+// them). Each scene is returned through scene_to_json and parse_scene, so it is valid by
 // the loader's own rules (drawings it rejects are drawn again).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "base/error.h"
 #include "math/rng.h"
@@ -21,7 +25,7 @@ namespace sg::testing {
 class RandomScenes {
  public:
   explicit RandomScenes(uint64_t seed, int max_waves = 12)
-      : rng_(seed, 11), max_waves_(max_waves) {}
+      : rng_(seed, 11), motion_(seed, 29), max_waves_(max_waves) {}
 
   // The next valid scene, `width` x `height`, and in `frame` a frame of its animation.
   Scene next(int width, int height, int& frame) {
@@ -125,10 +129,75 @@ class RandomScenes {
     s.animation.shutter = chance(0.2) ? 0.0 : u();
     s.animation.frames = 1 + static_cast<int>(u() * 60);
     s.animation.t0 = chance(0.5) ? 0.0 : sign() * logu(1e-3, 0.99 * L::kMaxTime);
+    if (motion_.uniform() < 0.35) move_camera(s);
     return s;
   }
 
+  // The camera keyframed about the pose just drawn (its position and look-at the pose at
+  // the first key): 2 to 4 keys over the animation's shutters, often beyond them (the pose
+  // held before the first and after the last), sometimes two keys within one frame's
+  // shutter (a jump); each key moves the camera by a speed of 0.01 to 300 m/s along any
+  // direction (its height kept above the loader's floor) and
+  // turns the view by up to 90 degrees in heading and 30 in pitch about the camera.
+  void move_camera(Scene& s) {
+    namespace L = limits;
+    auto mu = [&] { return motion_.uniform(); };
+    auto mlog = [&](double lo, double hi) { return lo * std::pow(hi / lo, mu()); };
+    const double fps = s.animation.fps;
+    const double first = s.animation.t0 - s.animation.shutter / fps;
+    const double last = s.animation.t0 + (s.animation.frames - 1) / fps;
+    const double span = std::max(last - first, 1.0 / fps);
+    const int keys = 2 + static_cast<int>(mu() * 3);
+    std::vector<double> times;
+    if (mu() < 0.2) {
+      // Two keys inside one frame's shutter (or about its display time): an abrupt move.
+      const int f = static_cast<int>(mu() * s.animation.frames);
+      const double t = s.animation.t0 + std::min(f, s.animation.frames - 1) / fps;
+      const double w = std::max(s.animation.shutter, 0.1) / fps;
+      const double a = t - w * mu(), b = t + w * (0.1 + mu());
+      if (!(b > a)) return;
+      times = {a, b};
+    } else {
+      const double lo = first - span * (mu() < 0.5 ? 0.5 * mu() : -0.5 * mu());
+      const double hi = last + span * (mu() < 0.7 ? 0.5 * mu() : -0.5 * mu());
+      if (!(hi > lo)) return;
+      for (int k = 0; k < keys; ++k)
+        times.push_back(lo + (hi - lo) * k / (keys - 1));
+    }
+    for (size_t k = 1; k < times.size(); ++k) {
+      if (!(times[k] > times[k - 1])) return;  // below the clock's resolution at its time
+    }
+    const double speed = mlog(0.01, 300.0);
+    CameraKey key;
+    key.time = times[0];
+    key.position = s.camera.position;
+    key.look_at = s.camera.look_at;
+    s.camera.keyframes = {key};
+    for (size_t k = 1; k < times.size(); ++k) {
+      const double dt = times[k] - times[k - 1];
+      const double az = kTwoPi * mu(), el = radians(-60 + 120 * mu());
+      const vec3 dir(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
+      vec3 p = key.position + std::min(speed * dt, 1e4) * dir;
+      p.y = std::max(p.y, 2 * L::kMinCameraHeight);
+      // The view turned about the camera: heading by up to 90 degrees, pitch by up to 30.
+      const vec3 d = key.look_at - key.position;
+      const double yaw = radians(90.0) * (2 * mu() - 1), pitch = radians(30.0) * (2 * mu() - 1);
+      const double c = std::cos(yaw), sn = std::sin(yaw);
+      vec3 r(c * d.x - sn * d.z, d.y, sn * d.x + c * d.z);
+      const double h = std::sqrt(r.x * r.x + r.z * r.z), len = length(r);
+      const double e = std::clamp(std::atan2(r.y, h) + pitch, radians(-89.0), radians(89.0));
+      if (h > 0) {
+        r = vec3(r.x / h * std::cos(e) * len, std::sin(e) * len, r.z / h * std::cos(e) * len);
+      }
+      key.time = times[k];
+      key.position = p;
+      key.look_at = p + r;
+      s.camera.keyframes.push_back(key);
+    }
+  }
+
   Pcg32 rng_;
+  Pcg32 motion_;
   int max_waves_;
   int rejected_ = 0;
 };

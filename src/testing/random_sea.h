@@ -8,10 +8,15 @@
 //    the field of view of its centre both ways);
 //  - sky: Schlick's Fresnel, a sky gradient, a sea radiance and the light anywhere around
 //    the camera (in front, to the side, behind), the glitter in the frame or not.
+// A third of the cameras move over the frames (format /3 keyframes from a stream of their
+// own, so the other draws are the fixed cameras' before them): a pan of 5 to 45 degrees a
+// second, a tilt of up to 10, a move of up to 15 m/s along the ground and 1 m/s up or
+// down, in two keys over the frames' shutters or three with a turn between.
 // Each scene goes through scene_to_json and parse_scene, so it is valid by the loader's
 // rules. Deterministic in the seed.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -22,7 +27,7 @@ namespace sg::testing {
 
 class RandomSeas {
  public:
-  explicit RandomSeas(uint64_t seed) : rng_(seed, 29) {}
+  explicit RandomSeas(uint64_t seed) : rng_(seed, 29), motion_(seed, 31) {}
 
   // The next sea, `width` x `height`, `frames` frames at 30 fps with a full shutter.
   Scene next(int width, int height, int frames) {
@@ -101,10 +106,45 @@ class RandomSeas {
     s.animation.fps = 30;
     s.animation.frames = frames;
     s.animation.shutter = 1.0;
+    if (motion_.uniform() < 1.0 / 3.0) move_camera(s, h, pitch, yaw);
     return s;
   }
 
+  // Keyframes from the shutter start of frame 0 (the pose drawn) to the last frame's display
+  // time, the middle key (three keys) turning the pan and the move.
+  void move_camera(Scene& s, double h, double pitch, double yaw) {
+    auto mu = [&] { return motion_.uniform(); };
+    auto sign = [&] { return mu() < 0.5 ? -1.0 : 1.0; };
+    const double t_first = s.animation.t0 - s.animation.shutter / s.animation.fps;
+    const double t_last = s.animation.t0 + (s.animation.frames - 1) / s.animation.fps;
+    const int keys = mu() < 0.5 ? 2 : 3;
+    double yaw_rate = sign() * radians(5 + 40 * mu()), tilt_rate = radians(10) * (2 * mu() - 1);
+    double speed = 15 * mu(), heading = kTwoPi * mu(), climb = 2 * mu() - 1;
+    vec3 p = s.camera.position;
+    CameraKey key;
+    key.time = t_first;
+    key.position = p;
+    key.look_at = s.camera.look_at;
+    s.camera.keyframes = {key};
+    for (int k = 1; k < keys; ++k) {
+      const double t = t_first + (t_last - t_first) * k / (keys - 1);
+      const double dt = t - key.time;
+      p += dt * vec3(speed * std::cos(heading), climb, speed * std::sin(heading));
+      p.y = std::max(p.y, 0.5 * std::min(h, 1.0));
+      yaw += yaw_rate * dt;
+      pitch = std::clamp(pitch + tilt_rate * dt, radians(-80.0), radians(10.0));
+      key.time = t;
+      key.position = p;
+      key.look_at = p + 10.0 * direction(pitch, yaw);
+      s.camera.keyframes.push_back(key);
+      // The turn between the segments of three keys.
+      yaw_rate = sign() * radians(5 + 40 * mu());
+      heading += radians(90) * (2 * mu() - 1);
+    }
+  }
+
   Pcg32 rng_;
+  Pcg32 motion_;
   int count_ = 0;
   bool glitter_ = false;
 };

@@ -85,6 +85,9 @@ bool float_staa_frame_terms(const Frame& f) {
 bool float_staa_frame_light_sets(const Frame& f) {
   return staa_frame_light_sets(f);
 }
+bool float_staa_frame_swept_cells(const Frame& f) {
+  return staa_frame_swept_cells(f);
+}
 real float_erfc(real x) {
   return erfc(x);
 }
