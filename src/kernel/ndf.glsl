@@ -173,10 +173,8 @@ SG_FN void box_cells_add_swept(INOUT(BoxCells) b, int n, real A, vec2 k, real si
   real ct = cos(rt);
   real st = sin(rt);
   real ft = sinc_from(x_t, st);
-  // theta - x_t by angle subtraction.
-  real sin_m = sin_t * ct - cos_t * st;
-  real cos_m = cos_t * ct + sin_t * st;
-  box_cells_add_factors(b, n, A, k, sin_m, cos_m, h, vec2(ft, ft * ct));
+  vec2 mid = rotated_cos_sin(vec2(ct, st), sin_t, cos_t);  // (cos, sin) of theta - x_t
+  box_cells_add_factors(b, n, A, k, mid.y, mid.x, h, vec2(ft, ft * ct));
 }
 
 SG_FN mat2 sym2(vec3 c) {

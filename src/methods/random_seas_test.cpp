@@ -121,8 +121,10 @@ TEST(RandomSeas, StaaLeadsPointAndLeanOnOrdinarySeas) {
         << s.name << ": staa's temporal error against point's";
     if (p.rmse > 3 * se) {
       // Scenes whose point error stands above the reference's noise: the ratios.
-      EXPECT_LE(a.rmse, p.rmse) << s.name << ": staa's RMSE against point's";
-      ok = ok && a.rmse <= p.rmse;
+      // Plus the noise: point's error may stand only a few standard errors above it, where
+      // both corrected errors carry about one standard error of the noise's estimate.
+      EXPECT_LE(a.rmse, p.rmse + allow) << s.name << ": staa's RMSE against point's";
+      ok = ok && a.rmse <= p.rmse + allow;
       log_point += std::log(std::max(a.rmse, se) / p.rmse);
       log_lean += std::log(std::max(a.rmse, se) / std::max(l.rmse, se));
       ++lit;
