@@ -199,6 +199,43 @@ TEST(SmoothTerms, CellGroupsAlongTheViewKeepTheCellsMixture) {
   }
 }
 
+// One wave's slope A cos(phase) over cell (iu, iv) of n x n on the footprint J, and over
+// the shutter where its phase at each point turns by 2 x_t, reaching theta at the end: the
+// mean and the mean square by a midpoint grid of G per edge and Gt instants (Gt = 1, x_t =
+// 0: the still cell).
+kd::vec2 cell_slope_moments(double A, kd::vec2 k, double theta, double x_t, const kd::mat2& J,
+                            int n, int iu, int iv, int G, int Gt) {
+  double m = 0, m2 = 0;
+  for (int a = 0; a < G; ++a) {
+    for (int c = 0; c < G; ++c) {
+      const double u = (iu + (a + 0.5) / G) / n - 0.5, v = (iv + (c + 0.5) / G) / n - 0.5;
+      const double at_cell = theta + dot(k, J * kd::vec2(u, v));
+      for (int q = 0; q < Gt; ++q) {
+        // Time s in [0, 1] over the shutter, the phase 2 x_t (s - 1) behind its end's.
+        const double s = (q + 0.5) / Gt;
+        const double slope = A * std::cos(at_cell + 2 * x_t * (s - 1));
+        m += slope;
+        m2 += slope * slope;
+      }
+    }
+  }
+  const double count = double(G) * G * Gt;
+  return kd::vec2(m / count, m2 / count);
+}
+
+// A cell's moments against the grid's (mean m, mean square m2): NDF-plane coordinates are
+// minus the slope, so the mean is -K k and the covariance (J - K^2) k k^T; within `rel`
+// of the wave's largest slope A |k| (its square for the covariance).
+void expect_cell_moments(const kd::NdfMoments& got, kd::vec2 grid, kd::vec2 k, double A, double rel,
+                         int n, int iu, int iv) {
+  const double m = grid.x, var = grid.y - grid.x * grid.x, scale = A * length(k);
+  EXPECT_NEAR(got.mean.x, -m * k.x, rel * scale) << n << " " << iu << iv;
+  EXPECT_NEAR(got.mean.y, -m * k.y, rel * scale) << n << " " << iu << iv;
+  EXPECT_NEAR(got.cov.x, var * k.x * k.x, rel * scale * scale) << n << " " << iu << iv;
+  EXPECT_NEAR(got.cov.y, var * k.x * k.y, rel * scale * scale) << n << " " << iu << iv;
+  EXPECT_NEAR(got.cov.z, var * k.y * k.y, rel * scale * scale) << n << " " << iu << iv;
+}
+
 TEST(SmoothTerms, CellMomentsMatchNumericalIntegrationOverTheFootprint) {
   // One wave over an elongated, sheared footprint parallelogram (a grazing view's) cut into
   // n x n cells: each cell's mean slope and covariance (ndf.glsl, box_cells_add) against a
@@ -216,26 +253,8 @@ TEST(SmoothTerms, CellMomentsMatchNumericalIntegrationOverTheFootprint) {
                         0.5 * kd::vec2(dot(k, J[0]), dot(k, J[1])));
       for (int iu = 0; iu < n; ++iu) {
         for (int iv = 0; iv < n; ++iv) {
-          const int G = 200;
-          double m = 0, m2 = 0;
-          for (int a = 0; a < G; ++a) {
-            for (int c = 0; c < G; ++c) {
-              const double u = (iu + (a + 0.5) / G) / n - 0.5, v = (iv + (c + 0.5) / G) / n - 0.5;
-              const double slope = w.A * std::cos(w.theta + dot(k, J * kd::vec2(u, v)));
-              m += slope;
-              m2 += slope * slope;
-            }
-          }
-          m /= G * G;
-          m2 /= G * G;
-          const kd::NdfMoments& got = b.m[iu * n + iv];
-          const double scale = w.A * length(k);
-          // NDF-plane coordinates are minus the slope: mean -K k, covariance (J - K^2) k k^T.
-          EXPECT_NEAR(got.mean.x, -m * k.x, 1e-4 * scale) << n << " " << iu << iv;
-          EXPECT_NEAR(got.mean.y, -m * k.y, 1e-4 * scale) << n << " " << iu << iv;
-          EXPECT_NEAR(got.cov.x, (m2 - m * m) * k.x * k.x, 1e-4 * scale * scale) << n;
-          EXPECT_NEAR(got.cov.y, (m2 - m * m) * k.x * k.y, 1e-4 * scale * scale) << n;
-          EXPECT_NEAR(got.cov.z, (m2 - m * m) * k.y * k.y, 1e-4 * scale * scale) << n;
+          const kd::vec2 grid = cell_slope_moments(w.A, k, w.theta, 0.0, J, n, iu, iv, 200, 1);
+          expect_cell_moments(b.m[iu * n + iv], grid, k, w.A, 1e-4, n, iu, iv);
         }
       }
     }
@@ -269,30 +288,8 @@ TEST(SmoothTerms, SweptCellMomentsMatchNumericalIntegrationOverTheFootprintAndTh
       }
       for (int iu = 0; iu < n; ++iu) {
         for (int iv = 0; iv < n; ++iv) {
-          const int G = 60;
-          double m = 0, m2 = 0;
-          for (int a = 0; a < G; ++a) {
-            for (int c = 0; c < G; ++c) {
-              const double u = (iu + (a + 0.5) / G) / n - 0.5, v = (iv + (c + 0.5) / G) / n - 0.5;
-              const double at_cell = w.theta + dot(k, J * kd::vec2(u, v));
-              for (int q = 0; q < G; ++q) {
-                // Time s in [0, 1] over the shutter, the phase 2 x_t (s - 1) behind its end's.
-                const double s = (q + 0.5) / G;
-                const double slope = w.A * std::cos(at_cell + 2 * w.x_t * (s - 1));
-                m += slope;
-                m2 += slope * slope;
-              }
-            }
-          }
-          m /= G * G * G;
-          m2 /= G * G * G;
-          const kd::NdfMoments& got = b.m[iu * n + iv];
-          const double scale = w.A * length(k);
-          EXPECT_NEAR(got.mean.x, -m * k.x, 1e-3 * scale) << n << " " << iu << iv;
-          EXPECT_NEAR(got.mean.y, -m * k.y, 1e-3 * scale) << n << " " << iu << iv;
-          EXPECT_NEAR(got.cov.x, (m2 - m * m) * k.x * k.x, 1e-3 * scale * scale) << n;
-          EXPECT_NEAR(got.cov.y, (m2 - m * m) * k.x * k.y, 1e-3 * scale * scale) << n;
-          EXPECT_NEAR(got.cov.z, (m2 - m * m) * k.y * k.y, 1e-3 * scale * scale) << n;
+          const kd::vec2 grid = cell_slope_moments(w.A, k, w.theta, w.x_t, J, n, iu, iv, 60, 60);
+          expect_cell_moments(b.m[iu * n + iv], grid, k, w.A, 1e-3, n, iu, iv);
         }
       }
     }
