@@ -14,7 +14,8 @@
 //  4. Otherwise (staa_finish) the NDF, centred on the resolved normal, maps to a Gaussian
 //     RDF of covariance J Sigma J^T on the light plane (Eqs. 8-16, rdf.glsl; J taken at
 //     the light with `--rdf-at light`, at the NDF's centre as the paper), plus the
-//     footprint term D D^T / 12 (reflection_footprint.glsl) averaged over the instants
+//     footprint term D V D^T (the pixel square as a Gaussian, reflection_footprint.glsl)
+//     averaged over the instants
 //     (staa_footprint_covariance; docs/method.md, "The footprint along the path"); its
 //     centre moves along the resolved reflection path (K straight sub-segments on the light plane).
 //     Its time-averaged mass in the light disk (Eq. 17) is the light's share: the RDF as 1, 3, 5 or
@@ -425,8 +426,9 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
   return m;
 }
 
-// The pixel-footprint term's covariance on the light plane (a unit box has variance 1/12
-// per axis: D D^T / 12, added to the RDF's), averaged along the path. The resolved waves'
+// The pixel-footprint term's covariance on the light plane (the unit box as the Gaussian
+// D V D^T, V = diag(box_var) the display time's, footprint_box_variances; added to the
+// RDF's), averaged along the path. The resolved waves'
 // curvature changes over the shutter as they travel (a wave of period T turns its Hessian
 // by 2 pi / T per second), and the path crosses the light's disk at some instant: each
 // instant's footprint is taken at its own gradient and Hessian, and the average over the
@@ -435,8 +437,8 @@ SG_FN real path_min_abs_projection(IN(StaaPath) path, int K, vec2 axis) {
 // shutter, the display time's alone. On displaced water under a still camera the instants'
 // points move along the one ray (path_views) and the view stays: their own Hessians.
 SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews) v,
-                                     IN(StaaSums) sums, vec2 mean, mat2 display, IN(LightAnchor) a,
-                                     IN(ReflectionChain) chain) {
+                                     IN(StaaSums) sums, vec2 mean, mat2 display, vec2 box_var,
+                                     IN(LightAnchor) a, IN(ReflectionChain) chain) {
   int K = frame_segments(f);
   mat2 cov = display;
   if (!v.camera_moves && f.duration > 0.0) {
@@ -448,11 +450,11 @@ SG_FN mat2 staa_footprint_covariance(IN(Frame) f, IN(Footprint) fp, IN(PathViews
       mat2 ck = display;
       if (a.valid) {
         mat2 Dk = reflection_chain_d(chain, fp, sums.hess[k]);
-        ck = Dk * transpose(Dk) / 12.0;
+        ck = footprint_box_covariance(Dk, box_var);
       } else {
         ReflectionFootprint rk =
             reflection_footprint(f.light, fp, sums.path.g[k], sums.hess[k], mean);
-        if (rk.valid) ck = rk.D * transpose(rk.D) / 12.0;
+        if (rk.valid) ck = footprint_box_covariance(rk.D, box_var);
       }
       sum += (k == 0 ? 0.5 : 1.0) * ck;
     }
@@ -623,8 +625,12 @@ SG_FN StaaRdf staa_rdf(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp, IN(PathV
       rdf.exact = true;
       rdf.D = rf.D;
     } else if (rf.valid) {
-      rdf.cov += staa_footprint_covariance(f, fp, v, sums, ndf.mean, rf.D * transpose(rf.D) / 12.0,
-                                           a, chain);
+      // The pixel square's Gaussian, its variances in the pixel's axes matched to the box's
+      // peak against the disk and the aliasing RDF (reflection_footprint.glsl).
+      vec2 box_var = footprint_box_variances(
+          rf.D, rdf.cov + (0.25 * f.light.tan_radius * f.light.tan_radius) * mat2(1.0));
+      rdf.cov += staa_footprint_covariance(
+          f, fp, v, sums, ndf.mean, footprint_box_covariance(rf.D, box_var), box_var, a, chain);
     }
   }
   return rdf;
