@@ -625,8 +625,9 @@ SG_FN StaaRdf staa_rdf(IN(Frame) f, IN(StaaParams) p, IN(Footprint) fp, IN(PathV
       rdf.exact = true;
       rdf.D = rf.D;
     } else if (rf.valid) {
-      // The pixel square's Gaussian, its variances in the pixel's axes matched to the box's
-      // peak against the disk and the aliasing RDF (reflection_footprint.glsl).
+      // The pixel square's Gaussian, its variance along each pixel axis the least-squares
+      // fit to the box's response against the rest of the light's spread, the disk's and
+      // the aliasing RDF's (reflection_footprint.glsl, footprint_box_variances).
       vec2 box_var = footprint_box_variances(
           rf.D, rdf.cov + (0.25 * f.light.tan_radius * f.light.tan_radius) * mat2(1.0));
       rdf.cov += staa_footprint_covariance(
