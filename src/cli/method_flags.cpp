@@ -191,6 +191,12 @@ void add_method_flags(CLI::App& app, MethodFlags& f) {
                  "of reflection (0: never)")
       ->capture_default_str()
       ->check(number_in(0, 1e6));
+  app.add_option("--fold-cells", s.fold_cells,
+                 "staa with a footprint: shade a lit pixel as the mean of its four quarters where "
+                 "a resolved wave's slope departs from linear across it by more than this many "
+                 "disk radii of reflection (0: never)")
+      ->capture_default_str()
+      ->check(number_in(0, 1e6));
   choice(app, "--wave-remainder", s.wave_remainder, {{"sum", true}, {"each", false}},
          "staa: the waves that certainly alias fully in a pixel add their covariance from "
          "precomputed sums in O(1) (sum) or one by one (each)");
@@ -278,22 +284,12 @@ static void scope_method_flags(const std::vector<const CLI::Option*>& options, M
        {"point", "supersample", "staa-temporal", "staa", "specaa", "bruneton", "lean"}},
   };
   // staa's own (methods/staa.h).
-  const std::vector<std::string> staa = {"--ndf",
-                                         "--ndf-mean",
-                                         "--kernels",
-                                         "--elongation-threshold",
-                                         "--fallback",
-                                         "--fallback-time",
-                                         "--riemann-cells",
-                                         "--alias-start",
-                                         "--alias-end",
-                                         "--nyquist",
-                                         "--footprint",
-                                         "--curvature-limit",
-                                         "--wave-remainder",
-                                         "--smooth-terms",
-                                         "--smooth-cells",
-                                         "--rdf-at"};
+  const std::vector<std::string> staa = {
+      "--ndf",        "--ndf-mean",       "--kernels",       "--elongation-threshold",
+      "--fallback",   "--fallback-time",  "--riemann-cells", "--alias-start",
+      "--alias-end",  "--nyquist",        "--footprint",     "--curvature-limit",
+      "--fold-cells", "--wave-remainder", "--smooth-terms",  "--smooth-cells",
+      "--rdf-at"};
   // The baselines' flags name their method first: --lean-size (lean), --taa-alpha (taa), ...
   const std::vector<std::string> prefixed = {"lean", "taa", "microspec", "specaa", "bruneton"};
   for (const CLI::Option* opt : options) {

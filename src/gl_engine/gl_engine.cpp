@@ -130,6 +130,7 @@ ProgramOptions program_options(const GlVariant& v) {
   o.fallback_riemann = v.params.fallback_riemann;
   o.fallback_along_path = v.params.fallback_along_path;
   o.smooth_cells = v.params.smooth_cells;
+  o.fold_cells = v.params.fold_cells > 0.0;
   o.kernels = v.params.kernels;
   o.specaa_quad = v.specaa.quad;
   return o;

@@ -545,6 +545,40 @@ TEST_F(GlEngineTest, EachFallbackIntegratorMatchesTheCpuEngine) {
   }
 }
 
+TEST_F(GlEngineTest, FoldCellsMatchTheCpuEngine) {
+  // `staa --fold-cells`: a lit pixel whose resolved waves fold across it shaded as the mean
+  // of its quarters (kernel/staa.glsl, staa_pixel), on flat water with Fresnel and a sky
+  // (the fold scene), on displaced water (the quarters' own intersections) and under a
+  // moving camera (the quarters' own rays along the shutter), frames 0-1,
+  // against the CPU in float. The yardstick is how far the cut image lies from the uncut on
+  // the CPU: a program that did not cut, or cut elsewhere, would differ by about that much.
+  Scene fold = load_scene(testing::source_dir() + "/tests/scenes/fold-glint.json");
+  Scene swell = load_scene(testing::source_dir() + "/tests/scenes/displaced-swell.json");
+  Scene pan = load_scene(testing::source_dir() + "/tests/scenes/pan.json");
+  set_image_size(swell, 96, 54);
+  set_image_size(pan, 96, 54);
+  for (const Scene& s : {fold, swell, pan}) {
+    const SceneModel m(s);
+    MethodOptions o;
+    o.staa.fold_cells = 1;
+    MethodOptions of = o, uncut;
+    of.precision = Precision::float32;
+    uncut.precision = Precision::float32;
+    const std::vector<Image> cpu =
+        render(m, *make_method_on(Engine::cpu, "staa", testing::with_tables(of)), 0, 1);
+    const std::vector<Image> cpu_uncut =
+        render(m, *make_method_on(Engine::cpu, "staa", testing::with_tables(uncut)), 0, 1);
+    const std::vector<Image> gl =
+        render(m, *make_method_on(Engine::gl, "staa", testing::with_tables(o)), 0, 1);
+    const double gl_cpu = compare_sequences(gl, cpu).rmse;
+    const double yardstick = compare_sequences(cpu, cpu_uncut).rmse;
+    std::printf("%s staa --fold-cells 1: RMSE(GL - CPU float) %.3g, cut - uncut on the CPU %.3g\n",
+                s.name.c_str(), gl_cpu, yardstick);
+    EXPECT_GT(yardstick, 0) << s.name;
+    EXPECT_LE(gl_cpu, 0.1 * yardstick) << s.name;
+  }
+}
+
 TEST_F(GlEngineTest, GlReferenceIsWithinTheNoiseOfTwoCpuSeeds) {
   // The GL reference against the CPU reference with another seed (both at their default
   // samples): within 1.5 times the RMSE between two CPU seeds. 96x54, one frame: llvmpipe

@@ -92,6 +92,7 @@ std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o) {
   if (entry == KernelEntry::staa) {
     h += "#define SG_SMOOTH_CELLS " + std::to_string(o.smooth_cells) + "\n";
     h += "#define SG_STAA_KERNELS " + std::to_string(o.kernels) + "\n";
+    h += std::string("#define SG_FOLD_CELLS ") + (o.fold_cells ? "1" : "0") + "\n";
     if (o.smooth_terms >= 0)
       h += "#define SG_SMOOTH_TERMS " + std::to_string(o.smooth_terms) + "\n";
     if (o.light_sets >= 0) h += "#define SG_LIGHT_SETS " + std::to_string(o.light_sets) + "\n";

@@ -45,6 +45,7 @@ struct ProgramOptions {
   bool fallback_riemann = false;    // staa: SG_STAA_FALLBACK_RIEMANN
   bool fallback_along_path = true;  // staa: SG_STAA_FALLBACK_ALONG_PATH
   int smooth_cells = 3;             // staa: SG_SMOOTH_CELLS, the smooth terms' cells a side
+  bool fold_cells = false;          // staa: SG_FOLD_CELLS, the quarters of --fold-cells
   int kernels = 9;                  // staa: SG_STAA_KERNELS, the RDF's kernels
   // staa: SG_SMOOTH_TERMS, whether the frames' water needs the smooth terms (Fresnel or a
   // sky gradient, kernel/staa.glsl, staa_frame_terms): 0 or 1, a program for those frames

@@ -98,6 +98,7 @@ void set_uniforms(UniformWriter& u, const std::string& n, const kf::StaaParams& 
   u.set(n + ".nyquist_max", p.nyquist_max);
   u.set(n + ".footprint", p.footprint);
   u.set(n + ".curvature_limit", p.curvature_limit);
+  u.set(n + ".fold_cells", p.fold_cells);
   u.set(n + ".wave_remainder", p.wave_remainder);
   u.set(n + ".smooth_cells", p.smooth_cells);
   u.set(n + ".rdf_at_light", p.rdf_at_light);

@@ -143,9 +143,10 @@ struct StaaParams {
   bool nyquist_max;      // --nyquist max (else norm)
   int footprint;         // 0 none, 1 gaussian, 2 exact (CPU only: host finishes)
   real curvature_limit;  // 0: off
-  bool wave_remainder;   // the fully aliasing waves' sum in O(1) (else one by one; staa.glsl)
-  int smooth_cells;      // Fresnel, sky and sea over the normals of n x n cells (0: at the mean)
-  bool rdf_at_light;     // --rdf-at light: Phi linearised at the light (else at the NDF's centre)
+  real fold_cells;  // --fold-cells X: disk radii past which a lit pixel is cut in 2 x 2 (0: off)
+  bool wave_remainder;  // the fully aliasing waves' sum in O(1) (else one by one; staa.glsl)
+  int smooth_cells;     // Fresnel, sky and sea over the normals of n x n cells (0: at the mean)
+  bool rdf_at_light;    // --rdf-at light: Phi linearised at the light (else at the NDF's centre)
 };
 
 // `specaa`'s options (methods/options.h, SpecaaOptions; specaa.glsl).

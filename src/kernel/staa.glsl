@@ -952,6 +952,33 @@ SG_FN StaaResult staa_exact_result(IN(Frame) f, IN(StaaPath) path, IN(StaaResult
   return res;
 }
 
+// Whether a lit pixel may be cut into quarters where its resolved waves fold (`--fold-cells
+// X`, staa_pixel): the constant of a GLSL program compiled for it (SG_FOLD_CELLS,
+// gl_engine/kernel_program.h), so that a program without it holds no second wave pass;
+// elsewhere the parameter's.
+SG_FN bool staa_fold_cells_on(IN(StaaParams) p) {
+#ifndef SG_FOLD_CELLS
+  return p.fold_cells > 0.0;
+#else
+  return SG_FOLD_CELLS != 0 && p.fold_cells > 0.0;
+#endif
+}
+
+// Steps 1 to 5 over one square of the image plane about `at` whose water point and
+// footprint are `fp`: the pixel, or a quarter of it. `fold`: the pass's largest departure of
+// a resolved wave's slope from its tangent across the square (staa_waves.glsl, StaaSums).
+SG_FN StaaResult staa_square(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
+                             IN(R32Texture3D) table_s, IN(PathTableInfo) tinfo,
+                             IN(R32Texture2D) fits, IN(KernelFitInfo) finfo, IN(Frame) f,
+                             IN(StaaParams) q, vec2 at, IN(Footprint) fp, OUT(StaaPath) path,
+                             OUT(real) fold) {
+  PathViews v = path_views(waves, f, fp, at.x, at.y);
+  StaaSums sums = staa_wave_pass(waves, f, q, fp, v);
+  staa_cascades_add(sums, waves, f, q, fp, v);
+  fold = sums.fold;
+  return staa_finish(table_f, table_s, tinfo, fits, finfo, f, q, fp, v, sums, path);
+}
+
 // The whole pixel (i, j).
 SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
                             IN(R32Texture3D) table_s, IN(PathTableInfo) tinfo,
@@ -973,10 +1000,34 @@ SG_FN StaaResult staa_pixel(IN(WaveBuffer) waves, IN(R32Texture2D) table_f,
   }
   StaaParams q = p;
   if (pw.share < 1.0 && q.footprint == 2) q.footprint = 1;
-  PathViews v = path_views(waves, f, fp, pw.centre.x, pw.centre.y);
-  StaaSums sums = staa_wave_pass(waves, f, q, fp, v);
-  staa_cascades_add(sums, waves, f, q, fp, v);
-  StaaResult r = staa_finish(table_f, table_s, tinfo, fits, finfo, f, q, fp, v, sums, path);
+  real fold;
+  StaaResult r =
+      staa_square(waves, table_f, table_s, tinfo, fits, finfo, f, q, pw.centre, fp, path, fold);
+  if (staa_fold_cells_on(q) && pw.share >= 1.0 && q.footprint == 1 && r.in_light > 0.0 &&
+      fold > q.fold_cells * f.light.radius) {
+    // A lit pixel where a resolved wave's slope turns across it: the mean of its quarters,
+    // each a pixel of half the size about its own centre (the footprint's derivatives
+    // halved), as a render at twice the resolution shades them; the whole pixel's where a
+    // quarter's ray misses the water.
+    vec4 quarters = vec4(0.0);
+    bool cut = true;
+    for (int c = 0; c < 4; ++c) {
+      vec2 at = pw.centre + vec2((c & 1) != 0 ? 0.25 : -0.25, (c & 2) != 0 ? 0.25 : -0.25);
+      Footprint fc = pixel_footprint(waves, f, at.x, at.y, 0.0, f.displaced);
+      if (!fc.hit) {
+        cut = false;
+        break;
+      }
+      fc.dp_dpx *= 0.5;
+      fc.dp_dpy *= 0.5;
+      StaaPath pc;
+      real fold_c;
+      quarters +=
+          0.25 * staa_square(waves, table_f, table_s, tinfo, fits, finfo, f, q, at, fc, pc, fold_c)
+                     .weights;
+    }
+    if (cut) r.weights = quarters;
+  }
   r.weights = with_sky_part(f, pw, i, j, r.weights);
   return r;
 }

@@ -15,6 +15,9 @@ struct StaaSums {
   vec3 hess[kMaxSegments + 1];
   NdfMoments ndf;  // the aliasing waves' NDF
   bool any_alias;  // some wave with A > 0 has alpha > 0
+  // The largest departure of a resolved share's slope from its tangent across the pixel,
+  // (1 - alpha) A |k| D^2 (reflection units; staa_wave_add).
+  real fold;
   // The smooth terms (--smooth-cells n > 0): every wave's moments at its full amplitude
   // (not split by Eq. 20) over n x n cells of the pixel (ndf.glsl, box_cells_add), and the
   // remainder's covariance, which every cell shares.
@@ -33,6 +36,7 @@ SG_FN StaaSums staa_sums_zero(int K) {
   s.ndf.mean = vec2(0.0);
   s.ndf.cov = vec3(0.0);
   s.any_alias = false;
+  s.fold = 0.0;
   for (int c = 0; c < kMaxBoxCells; ++c) {
     s.cells.m[c].mean = vec2(0.0);
     s.cells.m[c].cov = vec3(0.0);
@@ -131,6 +135,7 @@ SG_FN void staa_wave_add(INOUT(StaaSums) sums, IN(StaaWavePixel) px, IN(WaveBuff
     alpha = max(alpha, clamp(dev / px.limit - 1.0, 0.0, 1.0));
   }
   real resolved = (1.0 - alpha) * w.A;
+  sums.fold = max(sums.fold, (1.0 - alpha) * w.slope * D * D);
   // A share of 0 adds nothing: the branch skips the instants' terms of the fully aliasing
   // waves.
   if (any_lane(resolved != 0.0))

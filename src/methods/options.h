@@ -67,6 +67,9 @@ struct StaaOptions {
   // its linearisation across the pixel by more than X disk radii of reflection is handed
   // to the aliasing set (0: never).
   double curvature_limit = 0;
+  // --fold-cells X: a lit pixel where a resolved wave's slope departs from its tangent by
+  // more than X disk radii across it is shaded as the mean of its four quarters (0: never).
+  double fold_cells = 0;
   // --wave-remainder sum|each: the waves that certainly alias fully in a pixel add their
   // covariance from precomputed sums in O(1) (sum), or are visited one by one (each).
   bool wave_remainder = true;

@@ -30,6 +30,7 @@ P staa_kernel_params(const StaaOptions& o) {
                 : o.footprint == FootprintMode::gaussian ? 1
                                                          : 2;
   p.curvature_limit = R(o.curvature_limit);
+  p.fold_cells = R(o.fold_cells);
   p.wave_remainder = o.wave_remainder;
   p.smooth_cells = o.smooth_over_normals ? o.smooth_cells : 0;
   p.rdf_at_light = rdf_at_light(o);

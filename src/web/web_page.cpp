@@ -86,6 +86,7 @@ json staa_params(const kf::StaaParams& p) {
           {"nyquist_max", p.nyquist_max},
           {"footprint", p.footprint},
           {"curvature_limit", p.curvature_limit},
+          {"fold_cells", p.fold_cells},
           {"wave_remainder", p.wave_remainder},
           {"smooth_cells", p.smooth_cells},
           {"rdf_at_light", p.rdf_at_light}};

@@ -71,6 +71,9 @@ struct real {
 HWY_INLINE T lane_sum(real a) {
   return hn::GetLane(hn::SumOfLanes(real::D(), a.v));
 }
+HWY_INLINE T lane_max(real a) {
+  return hn::GetLane(hn::MaxOfLanes(real::D(), a.v));
+}
 
 struct vec2 {
   real x, y;
