@@ -6,7 +6,8 @@
 // of the cameras moving (keyframes); every
 // third one's waves a generated sea of lattice cascades, with_cascades) at 24x16, one frame
 // each, every method of the GL engine on both engines:
-//   - point, supersample (2x2x2), staa-temporal, staa, specaa and microspec (their quads'
+//   - point, supersample (2x2x2), staa-temporal, staa (also with --fold-cells 1), specaa and
+//     microspec (their quads'
 //     derivatives and their corners, the GL's shared in the workgroup's memory, the CPU's in
 //     its tiles), bruneton, lean and taa (after 2 warm-up frames: its resolve against a
 //     history): the GL image against the CPU engine
@@ -185,6 +186,8 @@ Image render_one(const SceneModel& model, Method& m, int frame, uint64_t seed) {
   return out;
 }
 
+constexpr const char* kFoldCells = "staa-fold-cells";
+
 TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   const char* env_n = std::getenv("SG_AGREE_SCENES");
   const char* env_seed = std::getenv("SG_AGREE_SEED");
@@ -207,12 +210,18 @@ TEST_F(EngineAgreement, GlMatchesCpuOnRandomValidScenes) {
   ro.batches = 8;
   o.taa.warmup = 2;  // three frames a scene: the resolve and its history in play
   const char* kDeterministic[] = {"point",     "supersample", "staa-temporal", "staa", "specaa",
-                                  "microspec", "bruneton",    "lean",          "taa"};
+                                  "microspec", "bruneton",    "lean",          "taa",  kFoldCells};
   std::map<std::string, std::unique_ptr<Method>> gl, cpu, cpu_double;
   for (const char* n : kDeterministic) {
-    gl[n] = make_method_on(Engine::gl, n, testing::with_tables(o));
-    cpu[n] = make_method_on(Engine::cpu, n, testing::with_tables(of));
-    cpu_double[n] = make_method_on(Engine::cpu, n, testing::with_tables(o));
+    // `staa --fold-cells 1`: the quarters of the lit pixels that a resolved wave folds
+    // across (their GL programs compiled for them, SG_FOLD_CELLS).
+    const bool fold = std::string(n) == kFoldCells;
+    const char* method = fold ? "staa" : n;
+    MethodOptions og = o, ofl = of;
+    og.staa.fold_cells = ofl.staa.fold_cells = fold ? 1.0 : 0.0;
+    gl[n] = make_method_on(Engine::gl, method, testing::with_tables(og));
+    cpu[n] = make_method_on(Engine::cpu, method, testing::with_tables(ofl));
+    cpu_double[n] = make_method_on(Engine::cpu, method, testing::with_tables(og));
   }
   std::unique_ptr<Method> gl_ref =
       make_method_on(Engine::gl, "reference", testing::with_tables(ro));

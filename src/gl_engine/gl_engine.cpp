@@ -216,8 +216,9 @@ void GlEngine::upload(const FrameContext& ctx) {
   const int w = ctx.model.width(), h = ctx.model.height();
   if (w != width_ || h != height_) {
     weights_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);
-    if (v_.entry == KernelEntry::reference)
-      busy_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);
+    if (v_.entry == KernelEntry::reference || v_.entry == KernelEntry::stratified) {
+      pixel_state_ = gl::Texture::image_2d(not_power_of_two(w), not_power_of_two(h), GL_RGBA32F);
+    }
     width_ = w;
     height_ = h;
   }
@@ -245,14 +246,13 @@ void GlEngine::upload(const FrameContext& ctx) {
   set_uniforms(u, "frame", inputs_->frame);
   if (v_.entry == KernelEntry::stratified) {
     set_uniforms(u, "counts", v_.counts);
-    u.set("pass_range", kf::ivec2(0, 0));
+    u.set("pass_index", 0);
     pass_samples_ = pass_samples(inputs_->frame.wave_count, 0, inputs_->frame.displaced,
                                  inputs_->frame.cascade_count);
   }
   if (v_.entry == KernelEntry::reference) {
     set_uniforms(u, "ref_params", v_.reference);
-    u.set("ref_pass", 0);
-    u.set("pass_range", kf::ivec2(0, 0));
+    u.set("pass_index", 0);
     pass_samples_ = pass_samples(inputs_->frame.wave_count, segments, inputs_->frame.displaced,
                                  inputs_->frame.cascade_count);
   }
@@ -336,7 +336,11 @@ void GlEngine::bind() {
   } else {
     weights_.bind_image(0, GL_WRITE_ONLY);
   }
-  if (v_.entry == KernelEntry::reference) busy_.bind_image(5, GL_READ_WRITE);
+  if (v_.entry == KernelEntry::reference || v_.entry == KernelEntry::stratified) {
+    pixel_state_.bind_image(5, GL_READ_WRITE);
+    if (pass_unfinished_.id() == 0) pass_unfinished_ = gl::Buffer(sizeof(std::uint32_t));
+    pass_unfinished_.bind(GL_SHADER_STORAGE_BUFFER, 8);
+  }
   if (v_.entry == KernelEntry::lean) lean_map_->texels().bind(6);
   if (v_.entry == KernelEntry::taa) taa_motion_.bind_image(5, GL_WRITE_ONLY);
   waves_.bind(1);
@@ -357,23 +361,39 @@ void GlEngine::run() {
     if (v_.entry == KernelEntry::taa) run_taa_resolve();
     return;
   }
-  // The samples in passes of pass_samples_ per pixel, each adding to the weights
-  // (shaders/main.glsl); the reference's first pass runs the pilot (and clears the weights).
+  // The samples in passes of up to pass_samples_ per pixel, each adding to the weights
+  // from where the pixel's last pass stopped (shaders/main.glsl); the reference's first
+  // pass runs the pilot (and clears the weights). After the passes that would take every
+  // sample had no invocation stopped early, the count of unfinished pixels is read back,
+  // and passes go on while it is not 0 (each takes at least one sample of every unfinished
+  // pixel, so at most `total` passes in all).
   int total = 0;
+  int first = 0;
   if (v_.entry == KernelEntry::reference) {
     const kf::ReferenceParams& n = v_.reference;
     total = n.batches * std::max(n.sx * n.sy, n.quiet_sx * n.quiet_sy) * n.nt;
-    program_.set("ref_pass", 0);
+    program_.set("pass_index", 0);
+    program_.set("pass_samples", pass_samples_);
     gl::dispatch_2d(program_, width_, height_);
-    program_.set("ref_pass", 1);
+    first = 1;
   } else {
     const kf::SampleCounts& n = v_.counts;
     total = n.sx * n.sy * (n.time_at_frame ? 1 : n.nt);
   }
-  for (int begin = 0; begin < total; begin += pass_samples_) {
-    gl::barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    program_.set("pass_range", glm::ivec2(begin, std::min(total, begin + pass_samples_)));
+  const int scheduled = (total + pass_samples_ - 1) / pass_samples_;
+  program_.set("pass_samples", pass_samples_);
+  for (int pass = 0; pass < total; ++pass) {
+    const bool check = pass >= scheduled - 1;
+    if (check) pass_unfinished_.fill(0);
+    gl::barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    program_.set("pass_index", first + pass);
     gl::dispatch_2d(program_, width_, height_);
+    if (check) {
+      gl::barrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+      std::uint32_t unfinished = 0;
+      pass_unfinished_.read(0, sizeof unfinished, &unfinished);
+      if (unfinished == 0) break;
+    }
   }
 }
 

@@ -141,8 +141,11 @@ class GlEngine {
   kf::KernelFitInfo finfo_{};
   gl::TextureBuffer waves_;
   gl::Texture weights_;
-  gl::Texture busy_;      // the reference's pilot: 1 where a pixel is busy
-  int pass_samples_ = 1;  // the reference's samples per pixel per pass, this frame
+  // The sampling methods' pixels between passes: .x the reference's pilot (1 where a pixel
+  // is busy), .y the pixel's next sample (shaders/main.glsl).
+  gl::Texture pixel_state_;
+  gl::Buffer pass_unfinished_;  // one uint: the pixels a pass left unfinished
+  int pass_samples_ = 1;        // the samples per pixel per pass, this frame
   gl::GpuTimer timer_;
   int width_ = 0, height_ = 0;
   double last_ms_ = 0;

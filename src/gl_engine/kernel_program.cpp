@@ -87,6 +87,8 @@ std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o) {
   std::string h = std::string("#define ") + entry_define(entry) + "\n#define SG_MAX_SEGMENTS " +
                   std::to_string(o.segments) + "\n";
   if (entry != KernelEntry::reference) h += "#define SG_EXACT_SEGMENTS 1\n";
+  if (entry == KernelEntry::reference || entry == KernelEntry::stratified)
+    h += "#define SG_LOOP_GUARD " + std::to_string(kLoopGuardWork) + "\n";
   if (entry == KernelEntry::specaa)
     h += std::string("#define SG_SPECAA_QUAD ") + (o.specaa_quad ? "1" : "0") + "\n";
   if (entry == KernelEntry::staa) {

@@ -64,6 +64,15 @@ struct ProgramOptions {
   bool operator==(const ProgramOptions&) const = default;
 };
 
+// The sampling programs' (`supersample`, `reference`) budget of estimated loop iterations
+// an invocation and pass (SG_LOOP_GUARD; each sample's estimate from its march's steps,
+// kernel/sampling.glsl, sample_work): past it an invocation takes no further sample in that
+// pass, and the next pass goes on where it stopped (shaders/main.glsl). A pass is sized to about
+// 8000 loop iterations (gl_engine.h, pass_samples); a ray that marches far over displaced water can
+// cost hundreds of times its estimate, and llvmpipe ends every loop of an invocation past
+// 65535 iterations, so that the samples after that point were lost.
+inline constexpr int kLoopGuardWork = 4000;
+
 // The header of `entry`'s program: its #defines, before the kernel's sources (the web
 // page's programs take the same, web/web_page.cpp).
 std::string kernel_program_header(KernelEntry entry, const ProgramOptions& o);

@@ -130,7 +130,7 @@ SG_FN vec2 filtered_height_slope(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonP
 // The filtered surface's point below o + s d: the hit at s.
 SG_FN RayHit filtered_surface_hit(IN(WaveBuffer) waves, IN(Frame) f, IN(BrunetonParams) p, mat2 J,
                                   int n, vec3 o, vec3 d, real s) {
-  RayHit r;
+  RayHit r = no_hit();
   r.hit = true;
   r.s = s;
   r.point = o + s * d;

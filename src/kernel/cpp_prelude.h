@@ -42,6 +42,9 @@
 // Every kernel function: inline in C++ (the kernel is included by several translation
 // units), nothing in GLSL.
 #define SG_FN inline
+// Whether a pass of samples has spent its loop budget (a GL program's sampling passes,
+// kernel/glsl_prelude.glsl): a C++ caller has none.
+#define loop_budget_spent(work) ((void)(work), false)
 // A constant array's initialiser: `const real k[2] = SG_ARRAY(real, 2, (1.0, 2.0));` is
 // `{1.0, 2.0}` in C++ and `real[2](1.0, 2.0)` in GLSL.
 #define SG_ARRAY_ITEMS(...) __VA_ARGS__

@@ -26,6 +26,8 @@ precision highp sampler2DArray;
 #define SG_FN
 // The kernel's work counters count in its C++ counting build only (kernel/cpp_types.h).
 #define SG_COUNT(what, n)
+// The page's programs have no loop budget (glsl_prelude.glsl).
+#define loop_budget_spent(work) false
 #ifndef SG_MAX_SEGMENTS
 #define SG_MAX_SEGMENTS 8
 #endif

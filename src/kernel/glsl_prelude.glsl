@@ -9,6 +9,15 @@
 #define SG_FN
 // The kernel's work counters count in its C++ counting build only (kernel/cpp_types.h).
 #define SG_COUNT(what, n)
+// Whether a pass of samples has spent its budget of estimated loop iterations, `work`
+// (kernel/sampling.glsl): in a program compiled with SG_LOOP_GUARD (the sampling methods',
+// gl_engine/shaders/main.glsl), so that an invocation ends its pass before llvmpipe's limit
+// of 65535 loop iterations and the next pass goes on from there; never elsewhere.
+#ifdef SG_LOOP_GUARD
+#define loop_budget_spent(work) ((work) >= real(SG_LOOP_GUARD))
+#else
+#define loop_budget_spent(work) false
+#endif
 #ifndef SG_MAX_SEGMENTS
 #define SG_MAX_SEGMENTS 8
 #endif

@@ -70,6 +70,7 @@ struct RayHit {
   bool hit;
   real s;  // ray parameter along the direction given (point = origin + s dir)
   vec3 point;
+  int steps;  // the displaced march's steps and refinements that found it (0 on flat water)
 };
 
 SG_FN real graze_depth() {
@@ -129,6 +130,7 @@ SG_FN RayHit no_hit() {
   r.hit = false;
   r.s = 0.0;
   r.point = vec3(0.0);
+  r.steps = 0;
   return r;
 }
 
@@ -331,6 +333,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
   bool rechosen = false;  // the set was chosen again at s
   for (int step = 0; step < kMaxMarchSteps; ++step) {
     SG_COUNT(march_steps, 1);
+    r.steps = step + 1;
     if (tol > 0.0 && s > 1.25 * s_chosen) {
       // Further along the ray: fewer waves are visible.
       s_chosen = s;
@@ -369,6 +372,7 @@ SG_FN RayHit intersect_displaced(IN(WaveBuffer) waves, IN(Frame) f, vec3 o, vec3
       }
       RootBracket br = root_bracket(a, fa, b, fb);
       for (int it = 0; it < kMaxRefineSteps && root_bracket_open(br); ++it) {
+        r.steps += 1;
         real c = root_bracket_next(br);
         if (root_bracket_take(br, c, height_above_first(waves, f, m.n, m.nc, o, d, c, dt))) break;
       }

@@ -264,28 +264,36 @@ SG_FN int reference_batch_samples(IN(ReferenceParams) n, bool busy) {
   return c.x * c.y * n.nt;
 }
 
-// The sum of the weights of samples [begin, end) of pixel (i, j), in the order of the
+// The sum of the weights of samples [begin, next) of pixel (i, j), in the order of the
 // rendered batches' samples (batch, then cell in row-major order, then time stratum; the
-// batches first_batch onwards). The stream is advanced to the first sample's draws (two
-// uniforms per sample, three on displaced water and with windows, two outputs each), so that any
-// split of the samples into ranges gives the same samples as one range: the GL engine renders a
-// pixel in several passes of a few samples each (gl_engine/gl_engine.cpp: llvmpipe ends
-// every loop of an invocation after 65535 iterations in all, docs/reference-renderer.md).
+// batches first_batch onwards); `next` is `end` (or the pixel's count), or earlier where the
+// platform's loop budget ran out after a traced sample (loop_budget_spent, sample_work: as
+// stratified_samples, whose `next` follows each sample taken likewise; a flat sample's
+// crossing search is bounded, and the pass's size counts it).
+// The stream is advanced to the first sample's draws (two uniforms per sample, three on
+// displaced water and with windows, two outputs each), so that any split of the samples into
+// ranges gives the same samples as one range: the GL engine renders a pixel in several
+// passes of a few samples each, each from where the last one stopped
+// (gl_engine/gl_engine.cpp: llvmpipe ends every loop of an invocation after 65535
+// iterations in all, docs/reference-renderer.md).
 SG_FN vec4 reference_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferenceParams) n, bool busy,
-                             int i, int j, int begin, int end) {
+                             int i, int j, int begin, int end, OUT(int) next) {
   ivec2 strata = reference_strata(n, busy);
   int sx = strata.x;
   int sy = strata.y;
   int per_batch = sx * sy * n.nt;
   int last = min(end, n.batches * per_batch);
   vec4 sum = vec4(0.0);
+  next = begin;
   if (begin >= last) return sum;
   Pcg32 rng = pixel_rng(f.seed, f.frame, i, j);
   bool traced = f.displaced || f.camera_keys.count > 0;  // each sample at its own time
   bool windowed = !traced && f.windows > 1;              // each over its own window
   int draws = (traced || windowed ? 3 : 2) * 2;
   pcg32_advance(rng, uint(n.first_batch * per_batch + begin) * uint(draws));
+  real work = 0.0;
   for (int s = begin; s < last; ++s) {
+    if (s > begin && loop_budget_spent(work)) break;
     int q = s % n.nt;
     int cell = (s / n.nt) % (sx * sy);
     int cx = cell % sx;
@@ -294,7 +302,10 @@ SG_FN vec4 reference_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferencePara
     real py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(sy);
     if (traced) {
       real dt = (real(q) + pcg32_uniform(rng)) / real(n.nt) * f.duration - f.duration;
-      sum += sample_weights(waves, f, px, py, dt);
+      RayHit hit;
+      vec3 dir;
+      sum += sample_ray(waves, f, px, py, dt, hit, dir);
+      work += sample_work(f, hit);
     } else if (windowed) {
       int w =
           min(int((real(q) + pcg32_uniform(rng)) / real(n.nt) * real(f.windows)), f.windows - 1);
@@ -302,6 +313,7 @@ SG_FN vec4 reference_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(ReferencePara
     } else {
       sum += exact_time_sample(waves, f, px, py, 0.0);
     }
+    next = s + 1;
   }
   return sum;
 }
@@ -315,8 +327,10 @@ SG_FN ReferenceResult reference_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(Refe
   r.busy = reference_busy(waves, f, n, i, j);
   int per_batch = reference_batch_samples(n, r.busy);
   for (int b = 0; b < n.batches; ++b) {
-    r.batch[b] = reference_samples(waves, f, n, r.busy, i, j, b * per_batch, (b + 1) * per_batch) /
-                 real(per_batch);
+    int next;
+    r.batch[b] =
+        reference_samples(waves, f, n, r.busy, i, j, b * per_batch, (b + 1) * per_batch, next) /
+        real(per_batch);
     r.weights += r.batch[b];
   }
   r.weights = r.weights / real(n.batches);

@@ -73,24 +73,38 @@ SG_FN int stratified_sample_count(IN(SampleCounts) n) {
   return n.sx * n.sy * (n.time_at_frame ? 1 : n.nt);
 }
 
-// The sum of the weights of samples [begin, end) of pixel (i, j), sample c T + q being cell
-// c (row-major) at time q. The stream: the T times first, then two uniforms per cell (x, y),
-// advanced to the first cell's draws, so that any split of the samples into ranges gives
-// the same samples as one range: the GL engine renders a pixel in passes of a few samples
-// (llvmpipe ends every loop of an invocation after 65535 iterations in all,
-// docs/gpu.md).
+// A sample's loop iterations, estimated after it: the wave sums of each march step and
+// refinement and of the normal (the march's steps from `hit`), each over every wave.
+SG_FN real sample_work(IN(Frame) f, IN(RayHit) hit) {
+  return real(hit.steps + 2) * real(f.wave_count + 1);
+}
+
+// The sum of the weights of samples [begin, next) of pixel (i, j), sample c T + q being cell
+// c (row-major) at time q; `next` is `end` (or the pixel's count), or earlier where the
+// samples' estimated loop iterations (sample_work) spent the platform's budget
+// (loop_budget_spent: a GL program's, never elsewhere; at least one sample is taken).
+// `next` follows each sample taken: where llvmpipe's limit ends the loops within a sample
+// (a single ray that marches past it, docs/gpu.md), that sample is lost, not the rest of
+// the pass's. The stream: the T times first, then two
+// uniforms per cell (x, y), advanced to the first cell's draws, so that any split of the
+// samples into ranges gives the same samples as one range: the GL engine renders a pixel
+// in passes of a few samples, each from where the last one stopped (llvmpipe ends every
+// loop of an invocation after 65535 iterations in all, docs/gpu.md).
 SG_FN vec4 stratified_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts) n, int i, int j,
-                              int begin, int end) {
+                              int begin, int end, OUT(int) next) {
   Pcg32 rng = pixel_rng(f.seed, f.frame, i, j);
   SampleTimes times = draw_sample_times(rng, f, n);
   int nt = times.count;
   int last = min(end, n.sx * n.sy * nt);
   vec4 sum = vec4(0.0);
+  next = begin;
   if (begin >= last) return sum;
   pcg32_advance(rng, uint(begin / nt) * 4u);
   real px = 0.0;
   real py = 0.0;
+  real work = 0.0;
   for (int s = begin; s < last; ++s) {
+    if (s > begin && loop_budget_spent(work)) break;
     int q = s % nt;
     if (s == begin || q == 0) {
       int cell = s / nt;
@@ -99,14 +113,19 @@ SG_FN vec4 stratified_samples(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts
       px = real(i) + (real(cx) + pcg32_uniform(rng)) / real(n.sx);
       py = real(j) + (real(cy) + pcg32_uniform(rng)) / real(n.sy);
     }
-    sum += sample_weights(waves, f, px, py, times.dt[q]);
+    RayHit hit;
+    vec3 dir;
+    sum += sample_ray(waves, f, px, py, times.dt[q], hit, dir);
+    work += sample_work(f, hit);
+    next = s + 1;
   }
   return sum;
 }
 
 SG_FN vec4 stratified_pixel(IN(WaveBuffer) waves, IN(Frame) f, IN(SampleCounts) n, int i, int j) {
   int count = stratified_sample_count(n);
-  return stratified_samples(waves, f, n, i, j, 0, count) / real(count);
+  int next;
+  return stratified_samples(waves, f, n, i, j, 0, count, next) / real(count);
 }
 
 // `staa-temporal`: the temporal method of Sec. 3.3 for every pixel: the point at the pixel

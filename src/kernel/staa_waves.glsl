@@ -126,16 +126,17 @@ SG_FN void staa_wave_add(INOUT(StaaSums) sums, IN(StaaWavePixel) px, IN(WaveBuff
                              : projected_frequency(k, px.J, px.max_norm);
   real alpha = alias_fraction(freq, px.alias_start, px.alias_end);
   real D = px.invertible ? footprint_half_width(k, px.Jinv) : 0.0;
+  // Where the linearisation breaks: a resolved wave of phase half-width D has a slope
+  // A |k| cos(theta) that departs from its tangent by up to A |k| D^2 / 2 across the
+  // pixel; the reflection moves twice as far, dev.
+  real dev = w.slope * D * D;
   if (px.curvature) {
-    // Where the linearisation breaks: a resolved wave of phase half-width D has a slope
-    // A |k| cos(theta) that departs from its tangent by up to A |k| D^2 / 2 across the
-    // pixel; the reflection moves twice as far. Past `curvature_limit` disk radii the
-    // wave goes to the aliasing set, ramping over a factor of two.
-    real dev = w.slope * D * D;
+    // Past `curvature_limit` disk radii the wave goes to the aliasing set, ramping over a
+    // factor of two.
     alpha = max(alpha, clamp(dev / px.limit - 1.0, 0.0, 1.0));
   }
   real resolved = (1.0 - alpha) * w.A;
-  sums.fold = max(sums.fold, (1.0 - alpha) * w.slope * D * D);
+  sums.fold = max(sums.fold, (1.0 - alpha) * dev);
   // A share of 0 adds nothing: the branch skips the instants' terms of the fully aliasing
   // waves.
   if (any_lane(resolved != 0.0))

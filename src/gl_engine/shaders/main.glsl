@@ -6,17 +6,32 @@
 // data are uniforms of the kernel's own structs (kernel/interface.glsl), the waves a buffer
 // texture, the tables textures read with texelFetch.
 //
-// The sampling methods run in passes (gl_engine/gl_engine.cpp): each pass adds the samples
-// [pass_range.x, pass_range.y) of every pixel, divided by the pixel's sample count, to the
-// weights (the first one stores them); the reference's pass 0 (ref_pass) runs the pilot
-// into busy_image. A pass of a few samples keeps each invocation's loop iterations far
-// below llvmpipe's limit of 65535 per invocation, past which it ends every loop
-// (docs/gpu.md, docs/reference-renderer.md).
+// The sampling methods run in passes (gl_engine/gl_engine.cpp): each pass adds up to
+// pass_samples samples of every pixel, from where its last pass stopped (pixel_state.y),
+// divided by the pixel's sample count, to the weights (the first one stores them); the
+// reference's pass 0 runs the pilot into pixel_state.x. A pass of a few samples keeps each
+// invocation's loop iterations far below llvmpipe's limit of 65535 per invocation, past
+// which it ends every loop (docs/gpu.md, docs/reference-renderer.md); and where the samples
+// cost more than the pass was sized for (grazing rays marching far over displaced water), an
+// invocation stops after the sample that spends its budget of estimated loop iterations
+// (SG_LOOP_GUARD, kernel/sampling.glsl: loop_budget_spent, sample_work), counts itself in
+// pass_unfinished, and the next pass goes on from there.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #if defined(SG_METHOD_REFERENCE) || defined(SG_METHOD_STRATIFIED)
 layout(rgba32f, binding = 0) uniform image2D weights_out;
-uniform ivec2 pass_range;
+uniform int pass_index;
+uniform int pass_samples;
+layout(rgba32f, binding = 5) uniform image2D pixel_state;  // .x the pilot's busy, .y next sample
+layout(std430, binding = 8) buffer PassUnfinished {
+  uint pass_unfinished;
+};
+
+// Where the pixel's samples stand after a pass: `next` of `total`.
+void pass_record(ivec2 p, real busy, int next, int total) {
+  imageStore(pixel_state, p, vec4(busy, real(next), 0.0, 0.0));
+  if (next < total) atomicAdd(pass_unfinished, 1u);
+}
 #else
 layout(rgba32f, binding = 0) uniform writeonly image2D weights_out;
 #endif
@@ -32,8 +47,6 @@ uniform SampleCounts counts;
 #endif
 #if defined(SG_METHOD_REFERENCE)
 uniform ReferenceParams ref_params;
-uniform int ref_pass;
-layout(rgba32f, binding = 5) uniform image2D busy_image;
 #endif
 #if defined(SG_METHOD_STAA)
 uniform StaaParams params;
@@ -187,19 +200,29 @@ void main() {
 #if defined(SG_METHOD_POINT)
   w = point_pixel(waves, frame, p.x, p.y);
 #elif defined(SG_METHOD_STRATIFIED)
-  vec4 sum = stratified_samples(waves, frame, counts, p.x, p.y, pass_range.x, pass_range.y);
-  w = sum / real(stratified_sample_count(counts));
-  if (pass_range.x > 0) w += imageLoad(weights_out, p);
+  int total = stratified_sample_count(counts);
+  int begin = pass_index == 0 ? 0 : int(imageLoad(pixel_state, p).y);
+  if (begin >= total) return;
+  int next;
+  vec4 sum = stratified_samples(waves, frame, counts, p.x, p.y, begin, begin + pass_samples, next);
+  w = sum / real(total);
+  if (pass_index > 0) w += imageLoad(weights_out, p);
+  pass_record(p, 0.0, next, total);
 #elif defined(SG_METHOD_REFERENCE)
-  if (ref_pass == 0) {
+  if (pass_index == 0) {
     bool busy = reference_busy(waves, frame, ref_params, p.x, p.y);
-    imageStore(busy_image, p, vec4(busy ? 1.0 : 0.0));
+    imageStore(pixel_state, p, vec4(busy ? 1.0 : 0.0, 0.0, 0.0, 0.0));
   } else {
-    bool busy = imageLoad(busy_image, p).x != 0.0;
-    vec4 sum =
-        reference_samples(waves, frame, ref_params, busy, p.x, p.y, pass_range.x, pass_range.y);
-    int count = ref_params.batches * reference_batch_samples(ref_params, busy);
-    w = imageLoad(weights_out, p) + sum / real(count);
+    vec4 state = imageLoad(pixel_state, p);
+    bool busy = state.x != 0.0;
+    int total = ref_params.batches * reference_batch_samples(ref_params, busy);
+    int begin = int(state.y);
+    if (begin >= total) return;
+    int next;
+    vec4 sum = reference_samples(waves, frame, ref_params, busy, p.x, p.y, begin,
+                                 begin + pass_samples, next);
+    w = imageLoad(weights_out, p) + sum / real(total);
+    pass_record(p, state.x, next, total);
   }
 #elif defined(SG_METHOD_STAA_TEMPORAL)
   w = staa_temporal_pixel(waves, frame, p.x, p.y);
